@@ -28,8 +28,8 @@ import numpy as np
 from .geometry import canonical_lines, side_at
 from .level import Level
 
-DEFAULT_CANDIDATES = 5
-SPLIT_WEIGHT = 8          # one split costs as much as this much imbalance
+DEFAULT_CANDIDATES = 15
+SPLIT_WEIGHT = 128        # one split costs as much as this much imbalance
 BALANCE_WEIGHT = 1
 _PAIR_BUDGET = 1 << 21    # seg × candidate pairs evaluated per numpy batch
 
@@ -150,14 +150,22 @@ def _cost_batch(walls, segs, starts, pair_counts, cand_cell, cand_plane, first, 
     offsets = np.arange(len(owner)) - np.repeat(np.cumsum(n_pairs) - n_pairs, n_pairs)
     seg = starts[cand_cell[first:last]][owner] + offsets
     line = walls.lines[cand_plane[first:last]][owner]
-    f0, f1, _, _ = _classify(walls, segs, seg, line)
-    crossed = (f0 * f1) < 0
-    back = ~crossed & ((f0 > 0) | (f1 > 0))
-    front = ~crossed & ((f0 < 0) | (f1 < 0))
+    wall = segs.wall[seg]
+    s1, s2 = _side_values(walls, wall, line)
+    # a wall with both ends on one side puts every piece of it on that side; only
+    # walls that straddle the line need the exact test of the piece's own ends
+    side = np.sign(s1) + np.sign(s2)
+    straddle = np.nonzero((s1 ^ s2) < 0)[0]
+    piece = seg[straddle]
+    f0 = side_at(s1[straddle], s2[straddle], segs.n0[piece], segs.d0[piece])
+    f1 = side_at(s1[straddle], s2[straddle], segs.n1[piece], segs.d1[piece])
+    # class 0: front (side < 0), 1: on the line, 2: back, 3: crossed
+    klass = np.minimum(np.sign(side) + 1, 2)
+    klass[straddle] = np.where(f0 * f1 < 0, 3, np.sign(f0 + f1) + 1)
     size = last - first
-    count = lambda mask: np.bincount(owner, weights=mask, minlength=size).astype(np.int64)
-    n_cross = count(crossed)
-    return splitter_cost(n_cross, count(front) + n_cross, count(back) + n_cross)
+    counts = np.bincount(owner * 4 + klass, minlength=4 * size).reshape(size, 4)
+    n_cross = counts[:, 3]
+    return splitter_cost(n_cross, counts[:, 0] + n_cross, counts[:, 2] + n_cross)
 
 
 def _choose_splitters(walls, segs, n_cells, k, rng):

@@ -1,0 +1,295 @@
+"""The command line (SPEC §6): ``wallbsp COMMAND ...``, also ``python -m wallbsp``.
+
+Exit status: 0 success, 2 bad input or usage (one line on stderr, nothing written),
+1 anything else.
+"""
+from __future__ import annotations
+
+import argparse
+import json
+import os
+import sys
+import time
+
+from .level import LevelError
+
+EYE_HEIGHT = 41          # DOOM's view height above the floor
+
+
+class UsageError(Exception):
+    """A bad command line: printed as one line, exit status 2."""
+
+
+class _Parser(argparse.ArgumentParser):
+    def error(self, message):
+        raise UsageError(f"{self.prog}: {message}")
+
+
+# -- loading what the user named ------------------------------------------------------------
+def _is_tree_file(path) -> bool:
+    if path.endswith(".wbsp"):
+        return True
+    try:
+        with open(path, "rb") as f:
+            return f.read(4) == b"PK\x03\x04"
+    except OSError:
+        return False
+
+
+def load_source(spec: str, strict=False):
+    """A Level from a level file or ``WAD:MAP``; warnings go to stderr."""
+    from .level import load_level
+    from . import wad
+    wad_spec = wad.parse_wad_spec(spec)
+    level = (wad.load_wad_level(*wad_spec, strict=strict) if wad_spec
+             else load_level(spec, strict=strict))
+    for warning in level.warnings:
+        print(f"warning: {warning}", file=sys.stderr)
+    return level
+
+
+def load_any(spec: str, args, strict=False):
+    """A BSPTree from a compiled tree, a level file or ``WAD:MAP`` (compiled in memory)."""
+    from .build import compile_level
+    from .tree import load_tree
+    if not os.path.exists(spec) or not _is_tree_file(spec):
+        level = load_source(spec, strict=strict)
+        return compile_level(level, getattr(args, "candidates", None),
+                             getattr(args, "seed", 0), progress=_Progress())
+    return load_tree(spec)
+
+
+class _Progress:
+    """Shows the build's progress on stderr once it has taken more than a second."""
+
+    def __init__(self):
+        self.started = time.perf_counter()
+        self.shown = False
+
+    def __call__(self, depth, nodes, segs_in_flight):
+        if time.perf_counter() - self.started > 1.0:
+            self.shown = True
+            print(f"\rcompiling: depth {depth}, {nodes} nodes, {segs_in_flight} segs to place ",
+                  end="", file=sys.stderr, flush=True)
+        if segs_in_flight == 0 and self.shown:
+            print(file=sys.stderr)
+
+
+def _candidates(text: str):
+    if text == "all":
+        return "all"
+    try:
+        k = int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected a positive integer or 'all', not {text!r}")
+    if k < 1:
+        raise argparse.ArgumentTypeError(f"expected a positive integer or 'all', not {text!r}")
+    return k
+
+
+def _pair(kind, sep):
+    def parse(text):
+        parts = text.split(sep)
+        try:
+            values = [kind(p) for p in parts]
+        except ValueError:
+            values = []
+        if len(values) != 2:
+            raise argparse.ArgumentTypeError(f"expected two numbers as A{sep}B, not {text!r}")
+        return tuple(values)
+    return parse
+
+
+def _size(text):
+    w, h = _pair(int, "x")(text.lower())
+    if not (1 <= w <= 8192 and 1 <= h <= 8192):
+        raise argparse.ArgumentTypeError(f"size out of range 1..8192: {text!r}")
+    return w, h
+
+
+def _default_output(level_path: str, suffix: str) -> str:
+    base = level_path.split(":")[0] if ":" in level_path and not os.path.exists(level_path) \
+        else level_path
+    root, _ = os.path.splitext(base)
+    return root + suffix
+
+
+def _print_stats(stats: dict, as_json: bool):
+    if as_json:
+        print(json.dumps(stats, sort_keys=True))
+    else:
+        width = max(len(k) for k in stats)
+        for key, value in stats.items():
+            print(f"{key:<{width}}  {value}")
+
+
+# -- commands ------------------------------------------------------------------------------
+def cmd_compile(args):
+    from .build import compile_level
+    level = load_source(args.level, strict=args.strict)
+    tree = compile_level(level, args.candidates, args.seed, progress=_Progress())
+    out = args.output or _default_output(args.level, ".wbsp")
+    tree.save(out)
+    stats = tree.stats()
+    stats["output"] = out
+    _print_stats(stats, args.json)
+
+
+def cmd_stats(args):
+    _print_stats(load_any(args.source, args, strict=args.strict).stats(), args.json)
+
+
+def cmd_draw(args):
+    from .draw import draw_partition
+    tree = load_any(args.source, args, strict=args.strict)
+    draw_partition(tree, args.output, size=args.size)
+
+
+def camera_for(tree, args):
+    """The camera the user asked for; anything left out comes from the level's start."""
+    from .render import Camera
+    start = tree.level.start
+    x, y = args.at if args.at else (start.x, start.y)
+    angle = start.angle if args.angle is None else args.angle
+    z = args.z
+    if z is None:
+        sector = tree.locate(x, y)
+        floor = tree.level.sectors[sector].floor if sector is not None else 0
+        z = floor + EYE_HEIGHT
+    return Camera(x, y, z, angle, args.fov)
+
+
+def cmd_render(args):
+    from .render import render, save_ids, save_png
+    tree = load_any(args.source, args, strict=args.strict)
+    width, height = args.size
+    frame = render(tree, camera_for(tree, args), width, height,
+                   order="back_to_front" if args.painter else "front_to_back")
+    save_png(args.output, frame.color)
+    if args.ids:
+        save_ids(args.ids, frame)
+    if args.json:
+        print(json.dumps(frame.stats, sort_keys=True))
+
+
+def cmd_walk(args):
+    from .app import run_walkthrough
+    if args.level is None:
+        from importlib.resources import files
+        args.level = str(files("wallbsp") / "data" / "default.json")
+    tree = load_any(args.level, args, strict=args.strict)
+    summary = run_walkthrough(tree, size=args.size, frames=args.frames, turn=args.turn,
+                              screenshot=args.screenshot, max_fps=args.max_fps)
+    if summary:
+        print(summary)
+
+
+def cmd_import_wad(args):
+    from . import wad
+    level = wad.load_wad_level(args.wad, args.map, strict=args.strict)
+    for warning in level.warnings:
+        print(f"warning: {warning}", file=sys.stderr)
+    level.save(args.output)
+    print(f"{args.output}: {len(level.walls)} walls, {len(level.sectors)} sectors")
+
+
+# -- the parser ------------------------------------------------------------------------------
+def _add_build_options(p):
+    p.add_argument("--candidates", type=_candidates, default=None, metavar="K",
+                   help="random splitter candidates per node, or 'all' (default: "
+                        "wallbsp.DEFAULT_CANDIDATES)")
+    p.add_argument("--seed", type=int, default=0, help="seed of the candidate draw (default 0)")
+
+
+def _add_strict(p):
+    p.add_argument("--strict", action="store_true", help="treat level warnings as errors")
+
+
+def build_parser() -> argparse.ArgumentParser:
+    parser = _Parser(prog="wallbsp", description="DOOM-style 2-D BSP worlds: compile, render, walk.")
+    parser.add_argument("--version", action="version", version="wallbsp 0.1.0")
+    sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
+    sub.required = True
+
+    p = sub.add_parser("walk", help="the pygame walkthrough")
+    p.add_argument("level", nargs="?", help="level, tree or WAD:MAP (default: the bundled level)")
+    p.add_argument("--size", type=_size, default=(320, 200), help="internal resolution WxH")
+    p.add_argument("--frames", type=int, default=None, help="render N frames headless and report")
+    p.add_argument("--turn", type=float, default=0.0, help="degrees to turn per headless frame")
+    p.add_argument("--screenshot", help="save the last frame as PNG")
+    p.add_argument("--max-fps", type=float, default=None, help="frame cap (default: none)")
+    _add_build_options(p), _add_strict(p)
+    p.set_defaults(func=cmd_walk)
+
+    p = sub.add_parser("compile", help="compile a level into a tree file")
+    p.add_argument("level", help="level file or WAD:MAP")
+    p.add_argument("-o", "--output", help="tree file (default: the level's path with .wbsp)")
+    p.add_argument("--json", action="store_true", help="statistics as one JSON object")
+    _add_build_options(p), _add_strict(p)
+    p.set_defaults(func=cmd_compile)
+
+    p = sub.add_parser("render", help="render one frame to PNG, headless")
+    p.add_argument("source", metavar="LEVEL_OR_TREE")
+    p.add_argument("--at", type=_pair(float, ","), help="camera position X,Y (default: start)")
+    p.add_argument("--z", type=float, help="eye height (default: floor + 41)")
+    p.add_argument("--angle", type=float, help="view angle in degrees (default: start)")
+    p.add_argument("--fov", type=float, default=90.0, help="horizontal field of view (default 90)")
+    p.add_argument("--size", type=_size, default=(320, 200), help="WxH (default 320x200)")
+    p.add_argument("--painter", action="store_true", help="use the back-to-front renderer")
+    p.add_argument("-o", "--output", required=True, help="PNG to write")
+    p.add_argument("--ids", help="also save kind and index arrays to this .npz")
+    p.add_argument("--json", action="store_true", help="print the frame's stats as JSON")
+    _add_build_options(p), _add_strict(p)
+    p.set_defaults(func=cmd_render)
+
+    p = sub.add_parser("stats", help="the tree's statistics")
+    p.add_argument("source", metavar="LEVEL_OR_TREE")
+    p.add_argument("--json", action="store_true", help="one JSON object")
+    _add_build_options(p), _add_strict(p)
+    p.set_defaults(func=cmd_stats)
+
+    p = sub.add_parser("draw", help="a picture of the partition (PNG)")
+    p.add_argument("source", metavar="LEVEL_OR_TREE")
+    p.add_argument("-o", "--output", required=True, help="PNG to write")
+    p.add_argument("--size", type=int, default=1024, help="longest side in pixels (default 1024)")
+    _add_build_options(p), _add_strict(p)
+    p.set_defaults(func=cmd_draw)
+
+    p = sub.add_parser("import-wad", help="convert a DOOM-format map into a level")
+    p.add_argument("wad")
+    p.add_argument("map", help="map name, e.g. E1M1 or MAP01")
+    p.add_argument("-o", "--output", required=True, help="level JSON to write")
+    _add_strict(p)
+    p.set_defaults(func=cmd_import_wad)
+    return parser
+
+
+def _check_arguments(args):
+    if getattr(args, "frames", None) is not None and args.frames < 1:
+        raise UsageError(f"wallbsp {args.command}: --frames must be at least 1")
+    if getattr(args, "fov", None) is not None and not 1 <= args.fov <= 179:
+        raise UsageError(f"wallbsp {args.command}: --fov must be between 1 and 179 degrees")
+    if getattr(args, "size", None) is not None and isinstance(args.size, int) and args.size < 64:
+        raise UsageError(f"wallbsp {args.command}: --size must be at least 64")
+
+
+def main(argv=None) -> int:
+    try:
+        args = build_parser().parse_args(argv)
+        _check_arguments(args)
+        args.func(args)
+    except UsageError as err:
+        print(str(err), file=sys.stderr)
+        return 2
+    except LevelError as err:                        # TreeError is a LevelError too
+        print(str(err), file=sys.stderr)
+        return 2
+    except OSError as err:
+        print(f"{err.filename or 'wallbsp'}: {err.strerror or err}", file=sys.stderr)
+        return 2
+    except KeyboardInterrupt:
+        return 1
+    except Exception as err:                         # noqa: BLE001 - the last resort line
+        print(f"wallbsp: internal error: {type(err).__name__}: {err}", file=sys.stderr)
+        return 1
+    return 0
