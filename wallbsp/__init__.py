@@ -3,6 +3,11 @@ column renderer, with a pygame walkthrough and headless tools.
 
 The pipeline, one module each: geometry → level → build → tree → render → app → cli.
 """
+import os
+
+# pygame greets on import; a library's users and its CLI should not see that
+os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
+
 from .build import DEFAULT_CANDIDATES, compile_level
 from .level import Level, LevelError, load_level
 from .tree import BSPTree, TreeError, load_tree

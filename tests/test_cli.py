@@ -1,0 +1,168 @@
+"""The command line: every bad input is one line on stderr, exit status 2, nothing written."""
+import copy
+import json
+import subprocess
+import sys
+import zipfile
+
+import pytest
+
+from wallbsp.cli import main
+
+GOOD = {
+    "format": "wallbsp-level", "version": 1, "name": "box",
+    "vertices": [[0, 0], [0, 256], [256, 256], [256, 0]],
+    "sectors": [{"floor": 0, "ceiling": 128, "light": 192}],
+    "walls": [{"v1": 0, "v2": 1, "front": 0}, {"v1": 1, "v2": 2, "front": 0},
+              {"v1": 2, "v2": 3, "front": 0}, {"v1": 3, "v2": 0, "front": 0}],
+    "start": {"x": 128, "y": 128, "angle": 90},
+}
+
+
+def _bad(path, value):
+    level = copy.deepcopy(GOOD)
+    *parents, last = path
+    target = level
+    for key in parents:
+        target = target[key]
+    if value is KeyError:
+        del target[last]
+    else:
+        target[last] = value
+    return level
+
+
+BAD_LEVELS = {   # name: (level, the JSON path the message must name)
+    "format": (_bad(["format"], "doom"), "format"),
+    "version": (_bad(["version"], 2), "version"),
+    "missing_walls": (_bad(["walls"], KeyError), "walls"),
+    "vertex_index": (_bad(["walls", 2, "v2"], 99), "walls[2].v2"),
+    "sector_index": (_bad(["walls", 1, "front"], 3), "walls[1].front"),
+    "back_index": (_bad(["walls", 1, "back"], -1), "walls[1].back"),
+    "float_coordinate": (_bad(["vertices", 1], [0.5, 256]), "vertices[1]"),
+    "coordinate_range": (_bad(["vertices", 1], [0, 2 ** 20 + 1]), "vertices[1]"),
+    "mistyped_floor": (_bad(["sectors", 0, "floor"], "low"), "sectors[0].floor"),
+    "bool_is_not_int": (_bad(["walls", 0, "v1"], True), "walls[0].v1"),
+    "bad_color": (_bad(["walls", 0, "color"], "red"), "walls[0].color"),
+    "light_range": (_bad(["sectors", 0, "light"], 300), "sectors[0].light"),
+    "zero_length": (_bad(["vertices", 1], [0, 0]), "walls[0]"),
+    "walls_not_a_list": (_bad(["walls"], {"v1": 0}), "walls"),
+}
+
+
+def _run(argv, capsys):
+    code = main([str(a) for a in argv])
+    out, err = capsys.readouterr()
+    return code, out, err
+
+
+@pytest.mark.parametrize("name", sorted(BAD_LEVELS))
+@pytest.mark.parametrize("command", ["compile", "stats", "render", "draw"])
+def test_bad_level_is_one_line_exit_2_and_writes_nothing(tmp_path, capsys, name, command):
+    level, where = BAD_LEVELS[name]
+    path = tmp_path / "bad.json"
+    path.write_text(json.dumps(level))
+    out_file = tmp_path / "out.bin"
+    argv = {"compile": ["compile", path, "-o", out_file], "stats": ["stats", path],
+            "render": ["render", path, "-o", out_file], "draw": ["draw", path, "-o", out_file]}
+    code, _, err = _run(argv[command], capsys)
+    assert code == 2
+    lines = err.strip().splitlines()
+    assert len(lines) == 1, err
+    assert lines[0].startswith(f"{path}: ") and where in lines[0], lines[0]
+    assert not out_file.exists()
+    assert [p.name for p in tmp_path.iterdir()] == ["bad.json"]
+
+
+@pytest.mark.parametrize("text, where", [
+    ('{"format": "wallbsp-level", ', "line 1"),
+    ("[1, 2, 3]", "(root)"),
+    ('{"format": "wallbsp-level", "version": 1, "vertices": [[0, NaN]], "sectors": [], "walls": []}',
+     "vertices[0]"),
+    ('{"format": "wallbsp-level", "version": 1, "vertices": [[0, 0]], '
+     '"sectors": [{"floor": Infinity, "ceiling": 1}], "walls": []}', "sectors[0].floor"),
+])
+def test_malformed_json_and_non_finite_numbers(tmp_path, capsys, text, where):
+    path = tmp_path / "bad.json"
+    path.write_text(text)
+    code, _, err = _run(["compile", path, "-o", tmp_path / "t.wbsp"], capsys)
+    assert code == 2 and len(err.strip().splitlines()) == 1 and where in err
+    assert not (tmp_path / "t.wbsp").exists()
+
+
+def test_missing_file_and_bad_flags(tmp_path, capsys):
+    code, _, err = _run(["compile", tmp_path / "nope.json"], capsys)
+    assert code == 2 and "nope.json" in err and len(err.strip().splitlines()) == 1
+    for argv in (["compile", "x.json", "--candidates", "0"], ["render", "x.json"],
+                 ["render", "x.json", "-o", "a.png", "--size", "big"], ["frobnicate"],
+                 ["render", "x.json", "-o", "a.png", "--at", "1"]):
+        code, _, err = _run(argv, capsys)
+        assert code == 2 and len(err.strip().splitlines()) == 1, (argv, err)
+
+
+def _compiled(tmp_path, capsys):
+    level = tmp_path / "box.json"
+    level.write_text(json.dumps(GOOD))
+    assert _run(["compile", level, "-o", tmp_path / "box.wbsp"], capsys)[0] == 0
+    return tmp_path / "box.wbsp"
+
+
+def test_compile_writes_a_tree_and_prints_json_stats(tmp_path, capsys):
+    level = tmp_path / "box.json"
+    level.write_text(json.dumps(GOOD))
+    code, out, _ = _run(["compile", level, "--json", "--candidates", "3", "--seed", "4"], capsys)
+    assert code == 0
+    stats = json.loads(out)
+    for key in ("walls", "segs", "splits", "nodes", "max_depth", "candidates", "seed",
+                "build_seconds"):
+        assert key in stats
+    assert stats["walls"] == 4 and stats["segs"] == stats["walls"] + stats["splits"]
+    assert stats["candidates"] == 3 and stats["seed"] == 4
+    assert (tmp_path / "box.wbsp").exists()          # default: the level's path, .wbsp
+
+
+@pytest.mark.filterwarnings("ignore:Duplicate name")
+@pytest.mark.parametrize("damage", ["truncate", "flip", "foreign", "version"])
+def test_damaged_tree_files_are_one_clear_error(tmp_path, capsys, damage):
+    tree = _compiled(tmp_path, capsys)
+    data = tree.read_bytes()
+    if damage == "truncate":
+        tree.write_bytes(data[: len(data) // 2])
+    elif damage == "flip":
+        i = data.index(b"node_line.npy") + 200      # inside the array's stored bytes
+        tree.write_bytes(data[:i] + bytes([data[i] ^ 0xFF]) + data[i + 1:])
+    elif damage == "foreign":
+        with zipfile.ZipFile(tree, "w") as zf:
+            zf.writestr("hello.txt", "not a tree")
+    else:
+        with zipfile.ZipFile(tree, "a") as zf:
+            zf.writestr("header.json", json.dumps({"format": "wallbsp-tree", "version": 99}))
+    code, _, err = _run(["stats", tree], capsys)
+    assert code == 2
+    assert len(err.strip().splitlines()) == 1 and err.startswith(str(tree))
+
+
+def test_draw_writes_a_png(tmp_path, capsys):
+    tree = _compiled(tmp_path, capsys)
+    code, _, _ = _run(["draw", tree, "-o", tmp_path / "p.png"], capsys)
+    assert code == 0
+    assert (tmp_path / "p.png").read_bytes()[:8] == b"\x89PNG\r\n\x1a\n"
+
+
+def test_strict_turns_warnings_into_errors(tmp_path, capsys):
+    level = _bad(["walls"], GOOD["walls"] + [{"v1": 0, "v2": 2, "front": 0},
+                                             {"v1": 1, "v2": 3, "front": 0}])
+    path = tmp_path / "x.json"
+    path.write_text(json.dumps(level))
+    code, _, err = _run(["compile", path, "-o", tmp_path / "x.wbsp"], capsys)
+    assert code == 0 and "cross" in err
+    code, _, err = _run(["compile", path, "-o", tmp_path / "y.wbsp", "--strict"], capsys)
+    assert code == 2 and len(err.strip().splitlines()) == 1 and "cross" in err
+    assert not (tmp_path / "y.wbsp").exists()
+
+
+def test_python_dash_m_and_help_work():
+    for argv in (["--help"], ["compile", "--help"], ["render", "--help"], ["walk", "--help"]):
+        done = subprocess.run([sys.executable, "-m", "wallbsp", *argv], capture_output=True,
+                              text=True)
+        assert done.returncode == 0 and "usage" in done.stdout.lower()
