@@ -1,0 +1,586 @@
+"""DOOM-format maps imported as levels: the mapping, the colours, the errors, and Freedoom.
+
+The small WADs are written here by a tiny writer (header, lumps, directory), so every path of
+the importer is exercised with bytes whose meaning the test states."""
+from __future__ import annotations
+
+import itertools
+import os
+import struct
+import time
+from dataclasses import dataclass, field
+from pathlib import Path
+
+import pytest
+from hypothesis import HealthCheck, given, settings
+from hypothesis import strategies as st
+
+from wallbsp.level import Level, LevelError
+from wallbsp.wad import GREY, SKY_BLUE, import_wad, load_wad_level, parse_wad_spec
+
+NONE = 0xFFFF
+
+# ---------------------------------------------------------------------------------------------
+# A tiny WAD writer
+
+
+def wad_bytes(lumps: list[tuple[str, bytes]], magic: bytes = b"PWAD") -> bytes:
+    body, entries = bytearray(), []
+    for name, raw in lumps:
+        entries.append((12 + len(body), len(raw), name))
+        body += raw
+    directory = b"".join(struct.pack("<ii8s", pos, size, name.encode())
+                         for pos, size, name in entries)
+    return struct.pack("<4sii", magic, len(entries), 12 + len(body)) + bytes(body) + directory
+
+
+# Palette 0: the indices the pictures below use, everything else black.
+RED, BLUE, GREEN, DARK = 1, 2, 3, 4
+PALETTE = {RED: (200, 0, 0), BLUE: (0, 0, 100), GREEN: (0, 255, 0), DARK: (10, 20, 30)}
+
+
+def playpal() -> bytes:
+    colours = [PALETTE.get(i, (0, 0, 0)) for i in range(256)]
+    return bytes(c for rgb in colours for c in rgb) * 2     # two palettes; only the first counts
+
+
+def flat(indices: list[int]) -> bytes:
+    assert len(indices) == 4096
+    return bytes(indices)
+
+
+def patch(width: int, height: int, columns: list[list[tuple[int, list[int]]]]) -> bytes:
+    """A picture: per column, its posts as (top delta, palette indices)."""
+    body, offsets = bytearray(), []
+    for posts in columns:
+        offsets.append(8 + 4 * width + len(body))
+        for top, pixels in posts:
+            body += bytes([top, len(pixels), 0]) + bytes(pixels) + b"\0"
+        body += b"\xff"
+    return struct.pack("<HHhh", width, height, 0, 0) + struct.pack(f"<{width}I", *offsets) + body
+
+
+def pnames(names: list[str]) -> bytes:
+    return struct.pack("<i", len(names)) + b"".join(n.encode().ljust(8, b"\0") for n in names)
+
+
+def texture_lump(textures: list[tuple[str, int, int, list[tuple[int, int, int]]]]) -> bytes:
+    """TEXTURE1: (name, width, height, [(origin x, origin y, PNAMES index)])."""
+    defs = [struct.pack("<8sihhih", name.encode(), 0, w, h, 0, len(ps))
+            + b"".join(struct.pack("<hhhhh", x, y, p, 1, 0) for x, y, p in ps)
+            for name, w, h, ps in textures]
+    offsets, at = [], 4 + 4 * len(defs)
+    for d in defs:
+        offsets.append(at)
+        at += len(d)
+    return struct.pack(f"<i{len(defs)}i", len(defs), *offsets) + b"".join(defs)
+
+
+SOLID = patch(4, 4, [[(0, [RED] * 4)]] * 4)                 # 4 × 4 red
+BLUE_BAR = patch(2, 4, [[(0, [BLUE] * 4)]] * 2)             # 2 × 4 blue
+HOLES = patch(2, 4, [[(0, [GREEN]), (3, [GREEN])], []])     # two green pixels, the rest clear
+PATCHES = ["PSOLID", "PBLUE", "PHOLES"]
+TEXTURES = [
+    ("RED", 4, 4, [(0, 0, 0)]),
+    # blue over the right half: 8 red + 8 blue pixels. Weighting the patches by their own
+    # pixels would give (16 red + 8 blue) / 24 instead.
+    ("MIX", 4, 4, [(0, 0, 0), (2, 0, 1)]),
+    # only one column of the bar is inside the texture
+    ("CLIP", 4, 4, [(3, 0, 1)]),
+    # two green pixels painted over red: 14 red + 2 green
+    ("HOLE", 4, 4, [(0, 0, 0), (0, 0, 2)]),
+    # clear pixels do not count: the average of two green pixels is green
+    ("SPARSE", 4, 4, [(0, 0, 2)]),
+]
+COLOUR = {"RED": "#c80000", "MIX": "#640032", "CLIP": "#000064", "HOLE": "#af2000",
+          "SPARSE": "#00ff00", "FLOOR1": "#640032", "CEIL1": "#0a141e"}
+
+
+def resources() -> list[tuple[str, bytes]]:
+    return [("PLAYPAL", playpal()),
+            ("PNAMES", pnames(PATCHES)), ("TEXTURE1", texture_lump(TEXTURES)),
+            ("P_START", b""), ("PSOLID", SOLID), ("PBLUE", BLUE_BAR), ("PHOLES", HOLES),
+            ("P_END", b""),
+            ("F_START", b""), ("FLOOR1", flat([RED] * 2048 + [BLUE] * 2048)),
+            ("CEIL1", flat([DARK] * 4096)), ("F_SKY1", flat([BLUE] * 4096)), ("F_END", b"")]
+
+
+# ---------------------------------------------------------------------------------------------
+# A two-room map. Room 0 is x 0..128, room 1 is x 128..256; both are y 0..128. Linedefs run
+# clockwise, so that the room is on their right (the front).
+
+@dataclass
+class Map:
+    vertices: list = field(default_factory=lambda: [
+        (0, 0), (128, 0), (128, 128), (0, 128), (256, 0), (256, 128),
+        (128, 0),              # 6: a duplicate of vertex 1
+        (64, 64), (64, 64)])   # 7, 8: the ends of a zero-length linedef
+    # (floor, ceiling, floor flat, ceiling flat, light)
+    sectors: list = field(default_factory=lambda: [
+        [0, 128, "FLOOR1", "CEIL1", 160], [16, 96, "FLOOR1", "F_SKY1", 300]])
+    # (upper, lower, middle, sector)
+    sidedefs: list = field(default_factory=lambda: [
+        ["-", "-", "RED", 0], ["-", "-", "RED", 0], ["-", "-", "RED", 0],
+        ["MIX", "HOLE", "-", 0],    # 3: the portal's front, in room 0
+        ["-", "-", "-", 1],         # 4: the portal's back, in room 1
+        ["-", "-", "CLIP", 1], ["-", "-", "SPARSE", 1], ["-", "-", "RED", 1]])
+    # (v1, v2, right, left)
+    linedefs: list = field(default_factory=lambda: [
+        [0, 3, 0, NONE],        # wall 0: west wall of room 0
+        [3, 2, 1, NONE],        # wall 1: north wall of room 0
+        [2, 1, 3, 4],           # wall 2: the portal, room 0 in front
+        [6, 0, 2, NONE],        # wall 3: south wall of room 0, from the duplicate vertex
+        [2, 5, 5, NONE],        # wall 4: north wall of room 1
+        [4, 5, NONE, 6],        # wall 5: east wall of room 1, only a left side: turned round
+        [4, 1, 7, NONE],        # wall 6: south wall of room 1
+        [7, 8, 7, NONE],        # zero length: dropped
+        [0, 2, NONE, NONE]])    # no sidedefs: dropped
+    # (x, y, angle, type)
+    things: list = field(default_factory=lambda: [
+        (200, 64, 0, 3004), (64, 64, 0, 1), (32, 96, 180, 1)])
+    name: str = "MAP01"
+
+    def lumps(self) -> list[tuple[str, bytes]]:
+        return [
+            (self.name, b""),
+            ("THINGS", b"".join(struct.pack("<hhhhh", x, y, a, t, 7)
+                                for x, y, a, t in self.things)),
+            ("LINEDEFS", b"".join(struct.pack("<HHhhhHH", v1, v2, 1, 0, 0, r, lf)
+                                  for v1, v2, r, lf in self.linedefs)),
+            ("SIDEDEFS", b"".join(struct.pack("<hh8s8s8sH", 0, 0, u.encode(), lo.encode(),
+                                              m.encode(), s) for u, lo, m, s in self.sidedefs)),
+            ("VERTEXES", b"".join(struct.pack("<hh", x, y) for x, y in self.vertices)),
+            ("SEGS", b""), ("SSECTORS", b""), ("NODES", b""),
+            ("SECTORS", b"".join(struct.pack("<hh8s8shhh", f, c, ff.encode(), cf.encode(), li, 0, 0)
+                                 for f, c, ff, cf, li in self.sectors)),
+            ("REJECT", b""), ("BLOCKMAP", b"")]
+
+
+@pytest.fixture(autouse=True)
+def in_tmp_path(tmp_path, monkeypatch):
+    # WADs are written to the working directory, so that messages name them "test.wad"
+    monkeypatch.chdir(tmp_path)
+
+
+def write_wad(*maps: Map, extra: list | None = None, name="test.wad") -> Path:
+    path = Path(name)
+    lumps = [lump for m in maps for lump in m.lumps()] + resources() + (extra or [])
+    path.write_bytes(wad_bytes(lumps))
+    return path
+
+
+@pytest.fixture
+def two_rooms() -> dict:
+    return import_wad(write_wad(Map()), "map01")
+
+
+def raises_one_line(match: str):
+    class Check:
+        def __enter__(self):
+            self.ctx = pytest.raises(LevelError, match=match)
+            self.info = self.ctx.__enter__()
+            return self.info
+
+        def __exit__(self, *exc):
+            result = self.ctx.__exit__(*exc)
+            assert "\n" not in str(self.info.value)
+            return result
+    return Check()
+
+
+# ---------------------------------------------------------------------------------------------
+# Mapping linedefs, sidedefs, sectors and things
+
+def test_level_dict_has_the_level_format(two_rooms):
+    assert two_rooms["format"] == "wallbsp-level" and two_rooms["version"] == 1
+    assert two_rooms["name"] == "MAP01 (test.wad)"
+
+
+def test_right_sidedef_is_front_and_left_is_back(two_rooms):
+    portal = two_rooms["walls"][2]
+    assert (portal["front"], portal["back"]) == (0, 1)
+    assert all(w["back"] is None for i, w in enumerate(two_rooms["walls"]) if i != 2)
+
+
+def test_left_only_linedef_is_turned_round(two_rooms):
+    verts = two_rooms["vertices"]
+    east = two_rooms["walls"][5]
+    assert (verts[east["v1"]], verts[east["v2"]]) == ([256, 128], [256, 0])
+    assert (east["front"], east["back"]) == (1, None)
+
+
+def test_linedefs_without_sidedefs_or_length_are_dropped_with_a_warning():
+    notes = []
+    level = import_wad(write_wad(Map()), "MAP01", warnings=notes)
+    assert len(level["walls"]) == 7          # nine linedefs, two dropped; order kept
+    assert "test.wad: MAP01: LINEDEFS[7]: zero length (both ends at (64, 64)); dropped" in notes
+    assert "test.wad: MAP01: LINEDEFS[8]: no sidedefs; dropped" in notes
+
+
+def test_walls_keep_linedef_order(two_rooms):
+    verts = two_rooms["vertices"]
+    ends = [(tuple(verts[w["v1"]]), tuple(verts[w["v2"]])) for w in two_rooms["walls"]]
+    assert ends == [((0, 0), (0, 128)), ((0, 128), (128, 128)), ((128, 128), (128, 0)),
+                    ((128, 0), (0, 0)), ((128, 128), (256, 128)), ((256, 128), (256, 0)),
+                    ((256, 0), (128, 0))]
+
+
+def test_vertices_are_deduplicated_in_order_of_first_use(two_rooms):
+    # the duplicate (128, 0) is merged; the zero-length line's vertices are gone
+    assert two_rooms["vertices"] == [[0, 0], [0, 128], [128, 128], [128, 0], [256, 128], [256, 0]]
+
+
+def test_sectors_keep_floor_ceiling_and_clamped_light():
+    notes = []
+    level = import_wad(write_wad(Map()), "MAP01", warnings=notes)
+    assert [(s["floor"], s["ceiling"], s["light"]) for s in level["sectors"]] == \
+        [(0, 128, 160), (16, 96, 255)]
+    assert "test.wad: MAP01: SECTORS[1]: light 300 clamped to 0..255" in notes
+
+
+def test_start_is_the_last_player_one_start(two_rooms):
+    # DOOM spawns the player at the last type-1 thing; earlier ones become voodoo dolls
+    assert two_rooms["start"] == {"x": 32, "y": 96, "angle": 180}
+
+
+def test_start_without_player_start_is_the_bbox_centre():
+    level = import_wad(write_wad(Map(things=[(10, 10, 0, 3004)])), "MAP01")
+    assert level["start"] == {"x": 128, "y": 64, "angle": 90}
+
+
+def test_load_wad_level_returns_a_validated_level_with_the_import_warnings():
+    level = load_wad_level(write_wad(Map()), "MAP01")
+    assert isinstance(level, Level)
+    assert len(level.walls) == 7 and len(level.sectors) == 2
+    assert level.source.endswith("test.wad:MAP01")
+    assert any("LINEDEFS[8]: no sidedefs" in w for w in level.warnings)
+
+
+def test_strict_load_turns_the_first_warning_into_an_error():
+    with raises_one_line(r"^test\.wad: MAP01: LINEDEFS\[8\]: no sidedefs; dropped$"):
+        load_wad_level(write_wad(Map()), "MAP01", strict=True)
+
+
+def test_map_is_found_among_several():
+    second = Map(name="MAP02", things=[(100, 50, 90, 1)])
+    level = import_wad(write_wad(Map(), second), "MAP02")
+    assert level["start"] == {"x": 100, "y": 50, "angle": 90}
+
+
+# ---------------------------------------------------------------------------------------------
+# Colours
+
+def test_one_sided_wall_colour_is_its_middle_texture_average(two_rooms):
+    walls = two_rooms["walls"]
+    assert walls[0]["color"] == COLOUR["RED"]
+    assert "upper_color" not in walls[0] and "lower_color" not in walls[0]
+
+
+def test_texture_colour_is_the_composite_average_with_later_patches_on_top(two_rooms):
+    portal = two_rooms["walls"][2]
+    assert portal["upper_color"] == COLOUR["MIX"]      # 8 red, 8 blue: not patch-weighted
+    assert portal["lower_color"] == COLOUR["HOLE"]     # 14 red, 2 green
+
+
+def test_patch_outside_the_texture_is_clipped(two_rooms):
+    assert two_rooms["walls"][4]["color"] == COLOUR["CLIP"]
+
+
+def test_clear_pixels_do_not_count(two_rooms):
+    assert two_rooms["walls"][5]["color"] == COLOUR["SPARSE"]
+
+
+def test_two_sided_wall_without_middle_takes_its_upper_colour(two_rooms):
+    assert two_rooms["walls"][2]["color"] == COLOUR["MIX"]
+
+
+def test_upper_texture_comes_from_the_side_with_the_higher_ceiling():
+    m = Map()
+    m.sidedefs[3][0], m.sidedefs[4][0] = "RED", "MIX"   # front ceiling 128 > back ceiling 96
+    m.sectors[1][1] = 200                                 # now the back's ceiling is higher
+    portal = import_wad(write_wad(m), "MAP01")["walls"][2]
+    assert portal["upper_color"] == COLOUR["MIX"]
+
+
+def test_missing_upper_texture_falls_back_to_the_other_side():
+    m = Map()
+    m.sidedefs[3][0], m.sidedefs[4][0] = "-", "SPARSE"
+    portal = import_wad(write_wad(m), "MAP01")["walls"][2]
+    assert portal["upper_color"] == COLOUR["SPARSE"]
+
+
+def test_two_sided_wall_without_textures_is_grey():
+    m = Map()
+    m.sidedefs[3][:3] = ["-", "-", "-"]
+    portal = import_wad(write_wad(m), "MAP01")["walls"][2]
+    assert portal["color"] == GREY
+    assert "upper_color" not in portal and "lower_color" not in portal
+
+
+def test_flat_colour_is_its_average_and_sky_is_blue(two_rooms):
+    s0, s1 = two_rooms["sectors"]
+    assert (s0["floor_color"], s0["ceiling_color"]) == (COLOUR["FLOOR1"], COLOUR["CEIL1"])
+    assert (s1["floor_color"], s1["ceiling_color"]) == (COLOUR["FLOOR1"], SKY_BLUE)
+
+
+def test_upper_between_two_skies_is_sky_blue():
+    m = Map()
+    m.sectors[0][3] = "F_SKY1"
+    portal = import_wad(write_wad(m), "MAP01")["walls"][2]
+    assert portal["upper_color"] == SKY_BLUE
+    assert portal["color"] == COLOUR["MIX"]     # the texture is still the wall's colour
+
+
+def test_missing_texture_and_flat_are_grey_with_a_warning():
+    m = Map()
+    m.sidedefs[0][2] = "NOSUCH"
+    m.sectors[0][2] = "NOFLAT"
+    notes = []
+    level = import_wad(write_wad(m), "MAP01", warnings=notes)
+    assert level["walls"][0]["color"] == GREY and level["sectors"][0]["floor_color"] == GREY
+    assert "test.wad: MAP01: SIDEDEFS[0]: middle texture NOSUCH not found; grey used" in notes
+    assert "test.wad: MAP01: SECTORS[0]: floor flat NOFLAT not found; grey used" in notes
+
+
+def test_texture_names_are_case_insensitive():
+    m = Map()
+    m.sidedefs[0][2] = "red"
+    assert import_wad(write_wad(m), "MAP01")["walls"][0]["color"] == COLOUR["RED"]
+
+
+def test_tall_patch_posts_are_relative_to_the_previous_one():
+    # DeePsea tall patches: a top delta not below the previous post's is relative to it, so
+    # the pixels are at rows 200 and 200 + 100 = 300: both inside a 320-row texture
+    tall = patch(1, 320, [[(200, [GREEN]), (100, [BLUE])]])
+    extra_textures = TEXTURES + [("TALL", 1, 320, [(0, 0, 3)]), ("SHORT", 1, 250, [(0, 0, 3)])]
+    lumps = [lump for lump in resources() if lump[0] != "TEXTURE1"]
+    lumps[1] = ("PNAMES", pnames(PATCHES + ["PTALL"]))
+    lumps += [("TEXTURE1", texture_lump(extra_textures)), ("PTALL", tall)]
+    m = Map()
+    m.sidedefs[0][2], m.sidedefs[1][2] = "TALL", "SHORT"
+    path = Path("tall.wad")
+    path.write_bytes(wad_bytes(m.lumps() + lumps))
+    walls = import_wad(path, "MAP01")["walls"]
+    assert walls[0]["color"] == "#008032"    # (green + blue) / 2, 127.5 rounded to even
+    assert walls[1]["color"] == "#00ff00"    # the blue pixel at row 300 is clipped
+
+
+def test_wad_without_playpal_uses_default_colours_with_a_warning():
+    path = Path("bare.wad")
+    path.write_bytes(wad_bytes(Map().lumps()))
+    notes = []
+    level = import_wad(path, "MAP01", warnings=notes)
+    assert {w["color"] for w in level["walls"]} == {GREY}
+    assert any("PLAYPAL: missing" in n for n in notes)
+
+
+def test_colours_are_recomputed_when_the_wad_changes():
+    path = write_wad(Map())
+    assert import_wad(path, "MAP01")["walls"][0]["color"] == COLOUR["RED"]
+    m = Map()
+    m.sidedefs[0][2] = "SPARSE"
+    write_wad(m, extra=[("PAD", b"x")])     # a different size, whatever the mtime
+    assert import_wad(path, "MAP01")["walls"][0]["color"] == COLOUR["SPARSE"]
+
+
+# ---------------------------------------------------------------------------------------------
+# Errors: one line, with the place
+
+def test_missing_file_is_an_error():
+    with raises_one_line(r"nothere\.wad: cannot read"):
+        import_wad(Path("nothere.wad"), "MAP01")
+
+
+def test_truncated_header_is_an_error():
+    path = Path("short.wad")
+    path.write_bytes(b"PWAD\x01\x00")
+    with raises_one_line(r"short\.wad: header: truncated"):
+        import_wad(path, "MAP01")
+
+
+def test_bad_magic_is_an_error():
+    path = Path("bad.wad")
+    path.write_bytes(b"JUNK" + wad_bytes(Map().lumps())[4:])
+    with raises_one_line(r"bad\.wad: header: bad magic b'JUNK'"):
+        import_wad(path, "MAP01")
+
+
+def test_truncated_directory_is_an_error():
+    path = write_wad(Map())
+    path.write_bytes(path.read_bytes()[:-10])
+    with raises_one_line(r"test\.wad: directory: \d+ entries at offset \d+ run past the end"):
+        import_wad(path, "MAP01")
+
+
+def test_lump_outside_the_file_is_an_error():
+    path = write_wad(Map())
+    raw = bytearray(path.read_bytes())
+    _, _, offset = struct.unpack_from("<4sii", raw)
+    struct.pack_into("<i", raw, offset + 16 * 2, 10_000_000)     # entry 2: LINEDEFS
+    path.write_bytes(raw)
+    with raises_one_line(r"test\.wad: directory\[2\]: lump LINEDEFS at offset 10000000 "
+                         r"\(126 bytes\) lies outside the file"):
+        import_wad(path, "MAP01")
+
+
+def test_lump_size_not_a_whole_number_of_records_is_an_error():
+    lumps = Map().lumps()
+    lumps[2] = ("LINEDEFS", lumps[2][1] + b"\0")
+    path = Path("odd.wad")
+    path.write_bytes(wad_bytes(lumps + resources()))
+    with raises_one_line(r"odd\.wad: MAP01: LINEDEFS: 127 bytes is not a whole number of "
+                         r"14-byte records"):
+        import_wad(path, "MAP01")
+
+
+def test_missing_map_lists_the_maps():
+    path = write_wad(Map(), Map(name="MAP02"))
+    with raises_one_line(r"test\.wad: MAP07: no such map \(2 maps: MAP01, MAP02\)"):
+        import_wad(path, "MAP07")
+
+
+def test_missing_map_lump_is_an_error():
+    path = Path("nosectors.wad")
+    path.write_bytes(wad_bytes([lump for lump in Map().lumps() if lump[0] != "SECTORS"]))
+    with raises_one_line(r"nosectors\.wad: MAP01: SECTORS: missing"):
+        import_wad(path, "MAP01")
+
+
+def test_bad_vertex_index_is_an_error():
+    m = Map()
+    m.linedefs[1][1] = 99
+    with raises_one_line(r"test\.wad: MAP01: LINEDEFS\[1\]: v2: vertex 99 does not exist "
+                         r"\(9 vertices\)"):
+        import_wad(write_wad(m), "MAP01")
+
+
+def test_bad_sidedef_index_is_an_error():
+    m = Map()
+    m.linedefs[4][3] = 50
+    with raises_one_line(r"test\.wad: MAP01: LINEDEFS\[4\]: left sidedef 50 does not exist "
+                         r"\(8 sidedefs\)"):
+        import_wad(write_wad(m), "MAP01")
+
+
+def test_bad_sector_index_is_an_error():
+    m = Map()
+    m.sidedefs[6][3] = 7
+    with raises_one_line(r"test\.wad: MAP01: SIDEDEFS\[6\]: sector 7 does not exist "
+                         r"\(2 sectors\)"):
+        import_wad(write_wad(m), "MAP01")
+
+
+def test_udmf_and_hexen_maps_are_refused():
+    udmf = Path("udmf.wad")
+    udmf.write_bytes(wad_bytes([("MAP01", b""), ("TEXTMAP", b"namespace=\"zdoom\";"),
+                                ("ENDMAP", b"")]))
+    with raises_one_line(r"udmf\.wad: MAP01: UDMF maps \(TEXTMAP\) are not supported"):
+        import_wad(udmf, "MAP01")
+    hexen = Path("hexen.wad")
+    hexen.write_bytes(wad_bytes(Map().lumps() + [("BEHAVIOR", b"ACS\0")]))
+    with raises_one_line(r"hexen\.wad: MAP01: Hexen-format maps"):
+        import_wad(hexen, "MAP01")
+
+
+def test_malformed_texture1_gives_grey_walls_and_a_warning():
+    lumps = [(n, raw[:30]) if n == "TEXTURE1" else (n, raw) for n, raw in resources()]
+    path = Path("oddtex.wad")
+    path.write_bytes(wad_bytes(Map().lumps() + lumps))
+    notes = []
+    level = import_wad(path, "MAP01", warnings=notes)
+    assert any(n.startswith("oddtex.wad: TEXTURE1: malformed") for n in notes)
+    assert level["walls"][0]["color"] == GREY
+    assert level["sectors"][0]["floor_color"] == COLOUR["FLOOR1"]     # flats are unaffected
+
+
+_FUZZED = itertools.count()
+
+
+@settings(max_examples=150, deadline=None,
+          suppress_health_check=[HealthCheck.function_scoped_fixture])
+@given(data=st.data())
+def test_damaged_wad_imports_or_fails_with_one_line(data):
+    raw = bytearray(wad_bytes(Map().lumps() + resources()))
+    if data.draw(st.booleans(), label="truncate"):
+        raw = raw[:data.draw(st.integers(0, len(raw) - 1), label="length")]
+    else:
+        for _ in range(data.draw(st.integers(1, 8), label="flips")):
+            raw[data.draw(st.integers(0, len(raw) - 1))] = data.draw(st.integers(0, 255))
+    path = Path(f"fuzz{next(_FUZZED)}.wad")     # a new file each time: no stale cache entry
+    path.write_bytes(raw)
+    try:
+        level = import_wad(path, "MAP01")
+    except LevelError as e:
+        assert "\n" not in str(e) and str(e).startswith(str(path))
+    else:     # damage that leaves the map readable: whatever is left is consistent
+        n_vertices, n_sectors = len(level["vertices"]), len(level["sectors"])
+        for w in level["walls"]:
+            assert 0 <= w["v1"] < n_vertices and 0 <= w["v2"] < n_vertices
+            assert 0 <= w["front"] < n_sectors and (w["back"] is None or w["back"] < n_sectors)
+
+
+# ---------------------------------------------------------------------------------------------
+# The WAD:MAP form
+
+def test_wad_spec_is_split_at_the_last_colon():
+    assert parse_wad_spec("freedoom2.wad:MAP01") == ("freedoom2.wad", "MAP01")
+    assert parse_wad_spec("dir/doom.wad:e1m1") == ("dir/doom.wad", "E1M1")
+
+
+def test_plain_paths_are_not_wad_specs():
+    assert parse_wad_spec("level.json") is None
+    assert parse_wad_spec("dir/a:b.json") is None       # not a lump name after the colon
+    assert parse_wad_spec(":MAP01") is None
+    assert parse_wad_spec("doom.wad:") is None
+
+
+def test_existing_file_with_a_colon_is_a_level_path():
+    odd = Path("rooms:MAP01")
+    odd.write_text("{}")
+    assert parse_wad_spec(str(odd)) is None
+
+
+# ---------------------------------------------------------------------------------------------
+# Freedoom: every map imports
+
+FREEDOOM = Path(os.environ.get("FREEDOOM_DIR", "/usr/share/games/doom"))
+FREEDOOM_MAPS = ([("freedoom1.wad", f"E{e}M{m}") for e in range(1, 5) for m in range(1, 10)]
+                 + [("freedoom2.wad", f"MAP{m:02d}") for m in range(1, 33)])
+
+
+def freedoom(wad: str) -> Path:
+    path = FREEDOOM / wad
+    if not path.exists():
+        pytest.skip(f"{path} is absent (Debian package 'freedoom', or set FREEDOOM_DIR)")
+    return path
+
+
+@pytest.mark.parametrize("wad,map_name", FREEDOOM_MAPS)
+def test_every_freedoom_map_imports(wad, map_name):
+    level = import_wad(freedoom(wad), map_name)
+    walls, sectors, verts = level["walls"], level["sectors"], level["vertices"]
+    assert len(walls) > 100 and len(sectors) > 10
+    assert all(0 <= w["front"] < len(sectors) for w in walls)
+    assert all(w["back"] is None or 0 <= w["back"] < len(sectors) for w in walls)
+    assert all(w["v1"] != w["v2"] for w in walls)
+    xs, ys = [v[0] for v in verts], [v[1] for v in verts]
+    start = level["start"]
+    assert min(xs) <= start["x"] <= max(xs) and min(ys) <= start["y"] <= max(ys)
+
+
+@pytest.mark.parametrize("wad,map_name", [("freedoom1.wad", "E1M1"), ("freedoom2.wad", "MAP12")])
+def test_freedoom_map_loads_as_a_level(wad, map_name):
+    level = load_wad_level(freedoom(wad), map_name)
+    assert level.walls and level.sectors
+
+
+def test_freedoom_map12_imports_quickly():
+    path = freedoom("freedoom2.wad")
+    import_wad(path, "MAP12")       # the first import also averages the textures it uses
+    best = float("inf")
+    for _ in range(3):
+        began = time.perf_counter()
+        level = import_wad(path, "MAP12")
+        best = min(best, time.perf_counter() - began)
+    assert len(level["walls"]) > 10_000
+    assert best < 0.3, f"MAP12 took {best:.3f} s"
