@@ -177,6 +177,12 @@ def _map_names(tables: _Tables) -> list[str]:
     return [names[i] for i in range(len(names) - 1) if names[i + 1] in ("THINGS", "TEXTMAP")]
 
 
+def list_maps(wad_path) -> list[str]:
+    """The names of the maps in a WAD, in directory order."""
+    with _open_wad(wad_path) as wad:
+        return _map_names(wad.tables)
+
+
 def _describe_maps(maps: list[str]) -> str:
     if not maps:
         return "the WAD has no maps"
