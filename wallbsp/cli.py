@@ -173,14 +173,17 @@ def cmd_render(args):
 
 
 def cmd_walk(args):
-    from .app import run_walkthrough
+    from .app import NoDisplayError, run_walkthrough
     if args.level is None:
         from importlib.resources import files
         args.level = str(files("wallbsp") / "data" / "default.json")
     tree = load_any(args.level, args, strict=args.strict)
-    summary = run_walkthrough(tree, size=args.size, frames=args.frames, turn=args.turn,
-                              screenshot=args.screenshot, max_fps=args.max_fps)
-    if summary:
+    try:
+        summary = run_walkthrough(tree, size=args.size, frames=args.frames, turn=args.turn,
+                                  screenshot=args.screenshot, max_fps=args.max_fps)
+    except NoDisplayError as err:
+        raise UsageError(str(err)) from None
+    if args.frames is not None:
         print(summary)
 
 

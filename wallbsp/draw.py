@@ -18,7 +18,7 @@ PARTITION = (48, 84, 120)
 TEXT = (230, 230, 230)
 
 
-def _depths(tree) -> list:
+def node_depths(tree) -> list:
     depth = [0] * tree.node_count
     for node, (front, back) in enumerate(tree.node_child.tolist()):
         for kid in (front, back):
@@ -122,7 +122,7 @@ def draw_partition(tree, path, size=1024):
     for wall in range(len(tree.level.walls)):
         p, q = tree.wall_ends(wall)
         pygame.draw.line(surface, WALL, view(p), view(q), 3)
-    depth = _depths(tree)
+    depth = node_depths(tree)
     max_depth = max(depth, default=0) + 1
     for node, (start, stop) in enumerate(tree.node_segs.tolist()):
         color = depth_color(depth[node], max_depth)

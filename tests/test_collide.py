@@ -1,0 +1,254 @@
+"""Movement and sight through the tree (wallbsp.collide): DOOM's player rules, checked
+against brute force over every wall."""
+import math
+from pathlib import Path
+
+import numpy as np
+import pytest
+from hypothesis import given, settings, strategies as st
+
+from wallbsp import collide, compile_level
+from wallbsp.level import Level, Sector, Start, Wall
+
+RADIUS, STEP, HEADROOM = collide.PLAYER_RADIUS, collide.MAX_STEP, collide.PLAYER_HEIGHT
+LEVELS = sorted(p.stem for p in (Path(__file__).resolve().parent.parent / "levels").glob("*.json"))
+
+
+# -- a two-room test map ------------------------------------------------------------------------
+
+def two_rooms(floor_b=0, ceiling_b=128, east_open=True):
+    """Room A [0,256]² (floor 0, ceiling 128) and room B [256,512]×[0,256] east of it.
+    With ``east_open`` the wall between them is two-sided, else A is closed."""
+    vertices = [(0, 0), (0, 256), (256, 256), (256, 0), (512, 256), (512, 0)]
+    sectors = [Sector(0, 128), Sector(floor_b, ceiling_b)]
+    walls = [Wall(0, 1, 0), Wall(1, 2, 0), Wall(2, 3, 0, 1 if east_open else None),
+             Wall(3, 0, 0), Wall(2, 4, 1), Wall(4, 5, 1), Wall(5, 3, 1)]
+    return compile_level(Level("two rooms", vertices, sectors, walls, Start(128, 128, 0)))
+
+
+def walk(tree, x, y, dx, dy, moves):
+    """Repeat one move, standing on DOOM's floorz each time, as the walkthrough does."""
+    for _ in range(moves):
+        x, y = collide.move(tree, x, y, dx, dy, collide.floor_z(tree, x, y))
+    return x, y
+
+
+def crosses_into_b(floor_b=0, ceiling_b=128):
+    tree = two_rooms(floor_b, ceiling_b)
+    x, _ = walk(tree, 128.0, 128.0, 10.0, 0.0, 40)
+    return x > 256
+
+
+# -- DOOM's rules -------------------------------------------------------------------------------
+
+def test_walking_straight_into_a_wall_stops_radius_away():
+    tree = two_rooms(east_open=False)
+    x, y = walk(tree, 128.0, 128.0, 10.0, 0.0, 30)
+    assert x == pytest.approx(256 - RADIUS, abs=1e-3)
+    assert y == 128.0
+
+
+def test_sliding_along_a_wall_at_45_degrees_keeps_moving_along_it():
+    tree = two_rooms(east_open=False)
+    x, y = walk(tree, 236.0, 64.0, 7.0, 7.0, 1)           # reaches the east wall
+    for _ in range(10):
+        nx, ny = collide.move(tree, x, y, 7.0, 7.0, 0)
+        assert nx == pytest.approx(256 - RADIUS, abs=1e-3)
+        assert ny - y == pytest.approx(7.0, abs=1e-6)       # the wall's component only is lost
+        x, y = nx, ny
+
+
+def test_a_corner_stops_the_player_without_overlap():
+    tree = two_rooms(east_open=False)
+    x, y = walk(tree, 128.0, 128.0, 9.0, 13.0, 60)
+    assert (x, y) == pytest.approx((256 - RADIUS, 256 - RADIUS), abs=1e-3)
+
+
+@pytest.mark.parametrize("height, climbed", [(24, True), (25, False)])
+def test_a_24_unit_step_is_climbed_and_a_25_unit_one_is_not(height, climbed):
+    assert crosses_into_b(floor_b=height, ceiling_b=height + 128) == climbed
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.integers(-200, 60))
+def test_any_step_up_to_24_is_climbed_and_any_drop_is_taken(height):
+    # B's ceiling stays at 128 or above, so only the step decides
+    assert crosses_into_b(floor_b=height, ceiling_b=max(height, 0) + 128) == (height <= STEP)
+
+
+@pytest.mark.parametrize("gap, entered", [(56, True), (55, False)])
+def test_a_56_high_gap_is_entered_and_a_55_high_one_is_not(gap, entered):
+    assert crosses_into_b(ceiling_b=gap) == entered
+
+
+@settings(max_examples=25, deadline=None)
+@given(st.integers(-10, 120), st.integers(0, 24))
+def test_the_gap_is_the_lower_ceiling_over_the_higher_floor(ceiling, floor):
+    assert crosses_into_b(floor, ceiling) == (min(ceiling, 128) - floor >= HEADROOM)
+
+
+def test_a_closed_door_blocks_movement_and_sight():
+    tree = two_rooms(floor_b=0, ceiling_b=0)
+    assert not crosses_into_b(0, 0)
+    assert not collide.line_of_sight(tree, (128, 128), (384, 128))
+    assert collide.line_of_sight(two_rooms(0, 128), (128, 128), (384, 128))
+
+
+def test_a_move_far_longer_than_the_radius_does_not_tunnel():
+    tree = two_rooms(east_open=False)
+    x, y = collide.move(tree, 128.0, 128.0, 5000.0, 900.0, 0)
+    assert tree.locate(x, y) == 0
+    assert x == pytest.approx(256 - RADIUS, abs=1e-3)
+
+
+def test_standing_half_over_a_ledge_stands_on_the_ledge():
+    tree = two_rooms(floor_b=20, ceiling_b=200)
+    assert collide.floor_z(tree, 250.0, 128.0) == 20      # centre in A, circle over B's floor
+    assert collide.floor_z(tree, 200.0, 128.0) == 0
+    assert collide.floor_z(tree, -50.0, 128.0) is None
+
+
+def test_nearby_segs_come_from_the_tree_not_from_every_wall(compiled_levels):
+    tree = compiled_levels["large"]
+    geo = collide._geometry(tree)
+    start = tree.level.start
+    near = collide._segs_near(geo, start.x, start.y, 3 * RADIUS)
+    assert len(near) < tree.seg_count / 50
+
+
+# -- random walks, checked by brute force over ALL walls ---------------------------------------
+
+def wall_table(level):
+    """Every wall's ends and opening (bottom, top), one row per wall."""
+    ends = level.segments().astype(float)
+    opening = np.array([collide._opening(level, w) for w in level.walls], dtype=float)
+    return ends, opening
+
+
+def distances(ends, x, y):
+    ex, ey = ends[:, 2] - ends[:, 0], ends[:, 3] - ends[:, 1]
+    t = np.clip(((x - ends[:, 0]) * ex + (y - ends[:, 1]) * ey) / (ex * ex + ey * ey), 0, 1)
+    return np.hypot(x - ends[:, 0] - t * ex, y - ends[:, 1] - t * ey)
+
+
+def blocking(opening, z):
+    return (opening[:, 1] - opening[:, 0] < HEADROOM) | (opening[:, 0] - z > STEP)
+
+
+def random_moves(rng, count):
+    """Runs in one direction (so walls are slid along) at speeds up to 3 radii per move."""
+    angle = rng.uniform(0, 2 * math.pi)
+    for _ in range(count):
+        if rng.random() < 0.15:
+            angle = rng.uniform(0, 2 * math.pi)
+        speed = rng.uniform(0, 3 * RADIUS)
+        yield speed * math.cos(angle), speed * math.sin(angle)
+
+
+@pytest.mark.parametrize("name", LEVELS)
+def test_random_moves_never_end_in_a_wall_outside_the_map_or_above_a_high_step(
+        compiled_levels, name):
+    tree = compiled_levels[name]
+    ends, opening = wall_table(tree.level)
+    floors = [s.floor for s in tree.level.sectors]
+    rng = np.random.default_rng(7)
+    x, y = float(tree.level.start.x), float(tree.level.start.y)
+    for dx, dy in random_moves(rng, 3000):
+        z = collide.floor_z(tree, x, y)
+        x, y = collide.move(tree, x, y, dx, dy, z)
+        sector = tree.locate(x, y)
+        assert sector is not None, (x, y)
+        assert floors[sector] - z <= STEP
+        assert distances(ends[blocking(opening, z)], x, y).min() >= RADIUS - 1e-6
+
+
+@pytest.mark.parametrize("name", LEVELS)
+def test_standing_on_the_floor_under_the_centre_never_enters_solid_walls(compiled_levels, name):
+    """A caller may pass the floor of ``tree.locate``: walls that block at any height are
+    still never overlapped, and the player never gets deeper into a step it overhangs."""
+    tree = compiled_levels[name]
+    ends, opening = wall_table(tree.level)
+    solid = opening[:, 1] - opening[:, 0] < HEADROOM
+    floors = [s.floor for s in tree.level.sectors]
+    rng = np.random.default_rng(11)
+    x, y = float(tree.level.start.x), float(tree.level.start.y)
+    for dx, dy in random_moves(rng, 2000):
+        x, y = collide.move(tree, x, y, dx, dy, floors[tree.locate(x, y)])
+        assert tree.locate(x, y) is not None
+        assert distances(ends[solid], x, y).min() >= RADIUS - 1e-6
+
+
+# -- sight, checked by brute force over ALL walls -----------------------------------------------
+
+def brute_force_sight(level, a, b, za=None, zb=None, table=None):
+    """The sight segment against every wall, with exact integer orientation tests."""
+    ends, opening = table or wall_table(level)
+    c, d = ends[:, :2].astype(np.int64), ends[:, 2:].astype(np.int64)
+    a, b = np.array(a), np.array(b)
+
+    def orient(p, q, r):
+        return (q[..., 0] - p[..., 0]) * (r[..., 1] - p[..., 1]) - \
+            (q[..., 1] - p[..., 1]) * (r[..., 0] - p[..., 0])
+
+    o1, o2, o3, o4 = orient(a, b, c), orient(a, b, d), orient(c, d, a), orient(c, d, b)
+    meets = ~(((o1 > 0) & (o2 > 0)) | ((o1 < 0) & (o2 < 0)) |
+              ((o3 > 0) & (o4 > 0)) | ((o3 < 0) & (o4 < 0)))
+    collinear = (o3 == 0) & (o4 == 0)
+    if (a == b).all():
+        collinear[:] = False                      # a point: met iff on the wall, tested below
+    ab = b - a
+    length2 = max(int(ab @ ab), 1)
+    tc, td = ((c - a) @ ab) / length2, ((d - a) @ ab) / length2
+    meets &= ~collinear | (np.maximum(tc, td) >= 0) & (np.minimum(tc, td) <= 1)
+    for i in np.nonzero(meets)[0]:
+        bottom, top = opening[i]
+        if bottom >= top:
+            return False
+        if za is None:
+            continue
+        if collinear[i]:
+            ts = (max(0.0, min(tc[i], td[i])), min(1.0, max(tc[i], td[i])))
+        else:
+            ts = (o3[i] / (o3[i] - o4[i]) if o3[i] != o4[i] else 0.0,)
+        if not all(bottom < za + t * (zb - za) < top for t in ts):
+            return False
+    return True
+
+
+def sight_pairs(level, rng, count, span=None):
+    vertices = np.array(level.vertices)
+    lo, hi = vertices.min(axis=0), vertices.max(axis=0) + 1
+    for _ in range(count):
+        a = rng.integers(lo, hi)
+        if rng.random() < 0.3:                      # through corners and along walls too
+            a = vertices[rng.integers(len(vertices))]
+        b = rng.integers(lo, hi) if span is None else \
+            np.clip(a + rng.integers(-span, span + 1, 2), lo, hi - 1)
+        yield tuple(int(v) for v in a), tuple(int(v) for v in b)
+
+
+@pytest.mark.parametrize("name", LEVELS)
+def test_line_of_sight_agrees_with_brute_force(compiled_levels, name):
+    tree = compiled_levels[name]
+    big = len(tree.level.walls) > 1000           # big maps: fewer, shorter sight lines
+    count, span = (500, 2500) if big else (1500, None)
+    rng = np.random.default_rng(3)
+    table = wall_table(tree.level)
+    seen = 0
+    for a, b in sight_pairs(tree.level, rng, count, span):
+        expected = brute_force_sight(tree.level, a, b, table=table)
+        assert collide.line_of_sight(tree, a, b) == expected, (a, b)
+        seen += expected
+        za, zb = (float(z) for z in rng.uniform(-20, 240, 2))
+        assert collide.line_of_sight(tree, a, b, za, zb) == \
+            brute_force_sight(tree.level, a, b, za, zb, table=table), (a, b, za, zb)
+    assert 0 < seen < count
+
+
+def test_eye_heights_see_over_a_step_but_not_through_a_window_sill():
+    tree = two_rooms(floor_b=40, ceiling_b=128)   # opening between the rooms: 40 .. 128
+    assert collide.line_of_sight(tree, (128, 128), (384, 128))
+    assert collide.line_of_sight(tree, (128, 128), (384, 128), 41, 81)
+    assert not collide.line_of_sight(tree, (128, 128), (384, 128), 20, 20)
+    with pytest.raises(ValueError):
+        collide.line_of_sight(tree, (0, 0), (1, 1), 41)
