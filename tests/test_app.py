@@ -14,7 +14,7 @@ import pytest        # noqa: E402
 from wallbsp import app, compile_level            # noqa: E402
 from wallbsp.image import load_png                # noqa: E402
 from wallbsp.level import Level, Sector, Start, Wall   # noqa: E402
-from wallbsp.render import Camera, render         # noqa: E402
+from wallbsp.rendering import Camera, render         # noqa: E402
 
 DT = 1 / 30
 

@@ -14,7 +14,7 @@ from hypothesis import strategies as st
 
 from wallbsp.image import load_png, png_bytes, save_png
 from wallbsp.level import Level, Sector, Start, Wall
-from wallbsp.render import Camera, ClosedColumns, render
+from wallbsp.rendering import Camera, ClosedColumns, render
 
 ROOT = Path(__file__).resolve().parent.parent
 GOLDEN = ROOT / "tests" / "golden"
@@ -224,7 +224,7 @@ def test_painter_equals_front_to_back_on_random_views(compiled_levels):
 
 
 def test_painter_gives_the_same_frame_in_small_chunks(compiled_levels, monkeypatch):
-    import wallbsp.render as render_module
+    import wallbsp.rendering as render_module
     tree = compiled_levels["multi"]
     camera = Camera(256, 112, 41, 60)
     whole = render(tree, camera, 96, 60, order="back_to_front")

@@ -32,7 +32,7 @@ sys.path.insert(0, str(ROOT))
 
 from wallbsp import compile_level, load_level  # noqa: E402
 from wallbsp.level import Level, Sector, Start, Wall  # noqa: E402
-from wallbsp.render import Camera, render  # noqa: E402
+from wallbsp.rendering import Camera, render  # noqa: E402
 
 EYE = 41
 SIZES = [(320, 200), (640, 400), (1600, 1000)]

@@ -1,7 +1,7 @@
 """wallbsp: DOOM-style 2-D BSP worlds — an exact wall BSP compiler and a front-to-back
 column renderer, with a pygame walkthrough and headless tools.
 
-The pipeline, one module each: geometry → level → build → tree → render → app → cli.
+The pipeline, one module each: geometry → level → build → tree → rendering → app → cli.
 """
 import os
 
@@ -10,16 +10,9 @@ os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
 
 from .build import DEFAULT_CANDIDATES, compile_level
 from .level import Level, LevelError, load_level
+from .rendering import Camera, Frame, render
 from .tree import BSPTree, TreeError, load_tree
 
 __all__ = ["BSPTree", "Camera", "DEFAULT_CANDIDATES", "Frame", "Level", "LevelError",
            "TreeError", "compile_level", "load_level", "load_tree", "render"]
 __version__ = "0.1.0"
-
-
-def __getattr__(name):
-    # the renderer is imported on first use, so compiling never pays for it
-    if name in ("Camera", "Frame", "render"):
-        from . import render as _render
-        return getattr(_render, name) if name != "render" else _render.render
-    raise AttributeError(name)

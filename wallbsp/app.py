@@ -38,7 +38,7 @@ import pygame
 
 from . import collide
 from .draw import node_depths, depth_color, partition_pieces
-from .render import Camera, render, save_png
+from .rendering import Camera, render, save_png
 
 RESOLUTIONS = ((160, 100), (320, 200), (640, 400), (800, 500), (1280, 800), (1600, 1000))
 WALK_SPEED = 250.0        # map units per second (DOOM walks at about this)

@@ -147,7 +147,7 @@ def cmd_draw(args):
 
 def camera_for(tree, args):
     """The camera the user asked for; anything left out comes from the level's start."""
-    from .render import Camera
+    from .rendering import Camera
     start = tree.level.start
     x, y = args.at if args.at else (start.x, start.y)
     angle = start.angle if args.angle is None else args.angle
@@ -160,7 +160,7 @@ def camera_for(tree, args):
 
 
 def cmd_render(args):
-    from .render import render, save_ids, save_png
+    from .rendering import render, save_ids, save_png
     tree = load_any(args.source, args, strict=args.strict)
     width, height = args.size
     frame = render(tree, camera_for(tree, args), width, height,

@@ -1,0 +1,72 @@
+"""The benchmark scripts run: each one's --quick mode prints one JSON object with its keys.
+
+They run with --no-docs, so a test never rewrites docs/benchmarks.md or its plots. Nothing
+here is timed; the timeout only stops a hung script.
+"""
+import json
+import subprocess
+import sys
+from pathlib import Path
+
+import pytest
+
+ROOT = Path(__file__).resolve().parent.parent
+FREEDOOM_INSTALLED = Path("/usr/share/games/doom/freedoom2.wad").exists()
+
+
+def run_quick(script: str) -> dict:
+    done = subprocess.run([sys.executable, str(ROOT / "tools" / script), "--quick", "--no-docs"],
+                          capture_output=True, text=True, timeout=300, cwd=ROOT)
+    assert done.returncode == 0, done.stderr
+    return json.loads(done.stdout)
+
+
+@pytest.fixture(scope="module")
+def table1():
+    return run_quick("bench_table1.py")
+
+
+@pytest.fixture(scope="module")
+def builders():
+    return run_quick("bench_builders.py")
+
+
+def test_table1_quick_prints_sizes_for_every_k(table1):
+    assert {"command", "machine", "ks", "levels", "summary", "fuchs"} <= table1.keys()
+    assert table1["ks"] == ["1", "3", "5", "15", "all"]
+    assert {"small", "multi"} <= table1["levels"].keys()
+    for row in table1["levels"].values():
+        assert row["walls"] > 0 and set(row["k"]) == set(table1["ks"])
+        assert all(cell["segs"] >= row["walls"] for cell in row["k"].values())
+
+
+def test_table1_summary_tests_the_papers_findings(table1):
+    summary = table1["summary"]
+    assert {"median_segs_per_wall", "k5_over_all", "max_segs_per_wall",
+            "under_twice_from_k"} <= summary.keys()
+    assert summary["k5_over_all"]["median"] > 0
+
+
+def test_table1_quick_includes_two_freedoom_maps_when_installed(table1):
+    freedoom = [r for r in table1["levels"].values() if r["kind"] == "freedoom"]
+    assert len(freedoom) == (2 if FREEDOOM_INSTALLED else 0)
+
+
+def test_no_docs_writes_no_plot(table1, builders):
+    assert table1["plot"] is None and builders["plot"] is None
+
+
+def test_builders_quick_has_the_same_columns_for_every_builder(builders):
+    assert {"machine", "tools", "options", "maps", "summary"} <= builders.keys()
+    assert len(builders["maps"]) == (3 if FREEDOOM_INSTALLED else 0)
+    for row in builders["maps"]:
+        assert {"map", "linedefs", "sides", "builders"} <= row.keys()
+        for name, stats in row["builders"].items():
+            if stats is not None and "error" not in stats:
+                assert {"segs", "split_ratio", "nodes", "depth", "seconds"} <= stats.keys(), name
+
+
+def test_builders_summary_has_the_targets(builders):
+    summary = builders["summary"]
+    assert {"builders", "worse_than_zdbsp", "measured", "targets", "met"} <= summary.keys()
+    assert set(summary["measured"]) == set(summary["targets"])
