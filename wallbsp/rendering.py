@@ -32,8 +32,11 @@ Conventions (fixed here, used by both renderers):
   floor), N's floor.  Boundaries are clamped so the parts never overlap: the ceiling wins
   over the floor, the upper wall over the lower wall (a sector drawn closed, like DOOM).
 * ``NEAR``: seg ends nearer than ``NEAR`` map units (forward depth) are clipped to it.
-* Shading (DOOM's light diminishing, in 32 levels): ``level = floor(light/8 + bias -
-  depth/64)`` clamped to ``[floor(light/32), 31]``, colour ``= rgb * (level + 1) / 32``.
+* Shading (DOOM's light diminishing, in 32 levels): far away a surface sinks to the level
+  its sector's light gives, ``far = 31 - 4*(15 - light//16)`` (DOOM's ``startmap``), and it
+  brightens in inverse proportion to depth: ``level = floor(far + bias + 1280/depth)``
+  clamped to ``[0, 31]`` (1280 = DOOM's 160-pixel projection × 16 scale steps / 2 per
+  colormap, so it is independent of the resolution); colour ``= rgb * (level + 1) / 32``.
   Walls use the depth of their column and ``bias`` +1 for north–south walls, -1 for
   east–west ones (DOOM's fake contrast); floors and ceilings use the depth of each row,
   ``d = f*(h - z) / (H/2 - 0.5 - row)``.
@@ -56,11 +59,11 @@ import numpy as np
 from .image import save_png  # noqa: F401  (part of this module's API: the CLI imports it here)
 
 __all__ = ["Camera", "ClosedColumns", "Frame", "render", "save_png", "save_ids",
-           "NEAR", "LIGHT_LEVELS", "DEPTH_PER_LEVEL"]
+           "NEAR", "LIGHT_LEVELS", "LIGHT_DISTANCE"]
 
 NEAR = 1e-3                    # map units: the near plane for seg ends
 LIGHT_LEVELS = 32
-DEPTH_PER_LEVEL = 64.0         # map units of depth per light level lost
+LIGHT_DISTANCE = 1280.0        # levels gained = LIGHT_DISTANCE / depth (DOOM's scalelight)
 _W_MIN = 1e-12                 # inverse depth floor, so rounding never flips a boundary
 _PAINTER_CHUNK = 1 << 22       # pixels expanded at once by the painter
 _FAR = 1 << 62                 # the closed-column list's sentinels
@@ -253,8 +256,7 @@ class _RenderData:
         ends = np.array(level.segments(), dtype=np.int64).reshape(-1, 4)
         north_south, east_west = ends[:, 0] == ends[:, 2], ends[:, 1] == ends[:, 3]
         bias = np.where(north_south, 1.0, np.where(east_west, -1.0, 0.0))
-        self.key_light = light[near] / 8.0 + bias[wall]
-        self.key_dim_floor = np.floor(light[near] / 32.0)
+        self.key_light = _far_level(light[near]) + bias[wall]
         # surfaces: wall w -> 3w (color), 3w+1 (upper), 3w+2 (lower); sector planes after
         self.key_upper_surface = 3 * wall + np.where(one_sided, 0, 1)
         self.key_lower_surface = 3 * wall + np.where(one_sided, 0, 2)
@@ -553,8 +555,7 @@ class _Entries:
         u = np.minimum(np.maximum(ceil_b, p1), fl)
         lo = np.minimum(np.maximum(floor_b, u), fl)
         self.p1, self.u, self.l, self.fl = (x.astype(np.int64) for x in (p1, u, lo, fl))
-        level = _light_levels(np.repeat(data.key_light[keys], counts), 1.0 / w,
-                              np.repeat(data.key_dim_floor[keys], counts))
+        level = _light_levels(np.repeat(data.key_light[keys], counts), w)
         self.upper_code = np.repeat(data.key_upper_surface[keys] * LIGHT_LEVELS, counts) + level
         self.lower_code = np.repeat(data.key_lower_surface[keys] * LIGHT_LEVELS, counts) + level
         near = data.key_near[keys]
@@ -564,9 +565,14 @@ class _Entries:
         self.ceiling_key = self.floor_key + 1
 
 
-def _light_levels(light, depth, dim_floor):
-    return np.minimum(np.maximum(np.floor(light - depth / DEPTH_PER_LEVEL), dim_floor),
-                      LIGHT_LEVELS - 1).astype(np.int64)
+def _far_level(light):
+    """The level a sector's light leaves a surface at at infinite depth (DOOM's startmap)."""
+    return LIGHT_LEVELS - 1 - 4.0 * (15 - np.floor(light / 16.0))
+
+
+def _light_levels(far_level, inverse_depth):
+    level = np.floor(far_level + LIGHT_DISTANCE * inverse_depth)
+    return np.clip(level, 0, LIGHT_LEVELS - 1).astype(np.int64)
 
 
 def _stripes(data: _RenderData, view: _View, keys):
@@ -585,9 +591,8 @@ def _stripes(data: _RenderData, view: _View, keys):
         h = np.where(plane & 1, data.sector_ceiling[sector], data.sector_floor[sector])
         fz = np.abs(view.f * (h - view.z))
         den = np.abs(view.y0 - np.arange(height, dtype=np.float64))
-        depth = fz[:, None] / np.maximum(den, 1e-9)[None, :]
-        light = data.sector_light[sector]
-        level = _light_levels((light / 8.0)[:, None], depth, np.floor(light / 32.0)[:, None])
+        inverse_depth = den[None, :] / np.maximum(fz, 1e-9)[:, None]
+        level = _light_levels(_far_level(data.sector_light[sector])[:, None], inverse_depth)
         codes = (data.plane_base_surface + plane)[:, None] * LIGHT_LEVELS + level
         stripes[planes] = data.rgb32[codes]
     return stripes, inverse.reshape(-1)
