@@ -90,9 +90,9 @@ def test_frame_arrays_have_the_spec_shapes_and_types():
 
 
 def test_walls_darken_with_depth():
-    # looking at the room's corner: the north wall recedes to the right, and darkens
+    # looking north-east along the north wall: it recedes to the right, and darkens
     frame = render(convex_room_tree([(-2000, -200), (-2000, 512), (3000, 512), (3000, -200)]),
-                   Camera(0, 0, 48, 90), 64, 40)
+                   Camera(0, 0, 48, 60), 64, 40)
     row = frame.color[19].astype(int).sum(axis=1)
     assert (frame.index[19] == 1).all()
     assert (np.diff(row[32:]) <= 0).all() and row[32] > row[-1]
