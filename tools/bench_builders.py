@@ -320,11 +320,12 @@ METHOD = f"""How it is measured:
 - **wallbsp**: `compile_level(level)` at the default k, and `--candidates all` as "wallbsp
   all" (best mode). Our segs are counted as DOOM builders count theirs: a seg of a two-sided
   wall counts twice (`stats()["seg_sides"]`). Seconds: the compile alone, in-process.
-- **zdbsp** `{' '.join(ZDBSP_OPTIONS) or '(no options)'} -m MAP -o OUT IN`: its defaults write
+- **zdbsp** `{' '.join(['zdbsp', *ZDBSP_OPTIONS])} -m MAP -o OUT IN`: its defaults write
   vanilla NODES/SEGS/SSECTORS (no `-g`/`-x` GL nodes, no `-X`/`-z` extended ones) with its
   default splitter costs (`-p 64 -s 8 -d 16`), i.e. the nodes a zdbsp user ships for a vanilla
-  map. `-G` (normal nodes matching GL ones) changes segs by under 1 % and was not used.
-- **glbsp** `{' '.join(GLBSP_OPTIONS)} IN -o OUT`: without `-normal` glbsp keeps the WAD's own
+  map. `-G` (normal nodes matching GL ones) changed segs by under 1 % on MAP01 and MAP12 and
+  was not used.
+- **glbsp** `{' '.join(['glbsp', *GLBSP_OPTIONS])} IN -o OUT`: without `-normal` glbsp keeps the WAD's own
   NODES and only adds GL_* lumps, so we would measure the stock nodes twice. Its normal nodes
   are its GL tree without the minisegs: the real segs of GL_SEGS (linedef ≠ 0xFFFF) equal its
   SEGS count (checked on MAP01 and MAP12), so vanilla NODES/SEGS are read for both tools.
@@ -332,7 +333,7 @@ METHOD = f"""How it is measured:
 - segs = SEGS bytes / 12, nodes = NODES bytes / 28; depth = nodes on the longest path from the
   root (the last node) to a subsector (child bit 15), as our `max_depth` counts. zdbsp's and
   glbsp's seconds are the whole process by wall clock (start-up, WAD I/O, BLOCKMAP), so an
-  upper bound on their node building; they are single-threaded C/C++.
+  upper bound on their node building.
 - nodes and depth are not like for like. Our tree puts every wall line on a node (Fuchs et
   al.'s tree: each polygon is a node), so even a convex room gets a node per wall line; DOOM
   builders stop at convex subsectors, which hold several segs. Our trees have more nodes and

@@ -20,7 +20,7 @@ from pathlib import Path
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
-from benchkit import (DOC, ROOT, freedoom_maps, machine, machine_line, markdown_table,  # noqa: E402
+from benchkit import (ROOT, freedoom_maps, machine, machine_line, markdown_table,  # noqa: E402
                       median_seconds, pyplot, save_plot, smallest_maps, update_section)
 
 from wallbsp import compile_level, load_level  # noqa: E402
