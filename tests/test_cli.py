@@ -95,7 +95,10 @@ def test_missing_file_and_bad_flags(tmp_path, capsys):
     assert code == 2 and "nope.json" in err and len(err.strip().splitlines()) == 1
     for argv in (["compile", "x.json", "--candidates", "0"], ["render", "x.json"],
                  ["render", "x.json", "-o", "a.png", "--size", "big"], ["frobnicate"],
-                 ["render", "x.json", "-o", "a.png", "--at", "1"]):
+                 ["render", "x.json", "-o", "a.png", "--at", "1"],
+                 ["render", "x.json", "-o", "a.png", "--z", "nan"],
+                 ["render", "x.json", "-o", "a.png", "--fov", "180"],
+                 ["walk", "x.json", "--frames", "0"]):
         code, _, err = _run(argv, capsys)
         assert code == 2 and len(err.strip().splitlines()) == 1, (argv, err)
 

@@ -325,10 +325,11 @@ METHOD = f"""How it is measured:
   default splitter costs (`-p 64 -s 8 -d 16`), i.e. the nodes a zdbsp user ships for a vanilla
   map. `-G` (normal nodes matching GL ones) changed segs by under 1 % on MAP01 and MAP12 and
   was not used.
-- **glbsp** `{' '.join(['glbsp', *GLBSP_OPTIONS])} IN -o OUT`: without `-normal` glbsp keeps the WAD's own
-  NODES and only adds GL_* lumps, so we would measure the stock nodes twice. Its normal nodes
-  are its GL tree without the minisegs: the real segs of GL_SEGS (linedef ≠ 0xFFFF) equal its
-  SEGS count (checked on MAP01 and MAP12), so vanilla NODES/SEGS are read for both tools.
+- **glbsp** `{' '.join(['glbsp', *GLBSP_OPTIONS])} IN -o OUT`: without `-normal` glbsp
+  keeps the WAD's own NODES and only adds GL_* lumps, so we would measure the stock nodes
+  twice. Its normal nodes are its GL tree without the minisegs: the real segs of GL_SEGS
+  (linedef ≠ 0xFFFF) equal its SEGS count (checked on MAP01 and MAP12), so vanilla
+  NODES/SEGS are read for both tools.
 - **stock**: the SEGS and NODES lumps shipped in the Freedoom WADs.
 - segs = SEGS bytes / 12, nodes = NODES bytes / 28; depth = nodes on the longest path from the
   root (the last node) to a subsector (child bit 15), as our `max_depth` counts. zdbsp's and

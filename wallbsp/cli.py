@@ -7,6 +7,7 @@ from __future__ import annotations
 
 import argparse
 import json
+import math
 import os
 import sys
 import time
@@ -87,12 +88,22 @@ def _candidates(text: str):
     return k
 
 
+def _finite(text):
+    try:
+        value = float(text)
+    except ValueError:
+        value = float("nan")
+    if not math.isfinite(value):
+        raise argparse.ArgumentTypeError(f"expected a finite number, not {text!r}")
+    return value
+
+
 def _pair(kind, sep):
     def parse(text):
         parts = text.split(sep)
         try:
             values = [kind(p) for p in parts]
-        except ValueError:
+        except (ValueError, argparse.ArgumentTypeError):
             values = []
         if len(values) != 2:
             raise argparse.ArgumentTypeError(f"expected two numbers as A{sep}B, not {text!r}")
@@ -218,9 +229,9 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("level", nargs="?", help="level, tree or WAD:MAP (default: the bundled level)")
     p.add_argument("--size", type=_size, default=(320, 200), help="internal resolution WxH")
     p.add_argument("--frames", type=int, default=None, help="render N frames headless and report")
-    p.add_argument("--turn", type=float, default=0.0, help="degrees to turn per headless frame")
+    p.add_argument("--turn", type=_finite, default=0.0, help="degrees to turn per headless frame")
     p.add_argument("--screenshot", help="save the last frame as PNG")
-    p.add_argument("--max-fps", type=float, default=None, help="frame cap (default: none)")
+    p.add_argument("--max-fps", type=_finite, default=None, help="frame cap (default: none)")
     _add_build_options(p), _add_strict(p)
     p.set_defaults(func=cmd_walk)
 
@@ -233,10 +244,10 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("render", help="render one frame to PNG, headless")
     p.add_argument("source", metavar="LEVEL_OR_TREE")
-    p.add_argument("--at", type=_pair(float, ","), help="camera position X,Y (default: start)")
-    p.add_argument("--z", type=float, help="eye height (default: floor + 41)")
-    p.add_argument("--angle", type=float, help="view angle in degrees (default: start)")
-    p.add_argument("--fov", type=float, default=90.0, help="horizontal field of view (default 90)")
+    p.add_argument("--at", type=_pair(_finite, ","), help="camera position X,Y (default: start)")
+    p.add_argument("--z", type=_finite, help="eye height (default: floor + 41)")
+    p.add_argument("--angle", type=_finite, help="view angle in degrees (default: start)")
+    p.add_argument("--fov", type=_finite, default=90.0, help="horizontal field of view (default 90)")
     p.add_argument("--size", type=_size, default=(320, 200), help="WxH (default 320x200)")
     p.add_argument("--painter", action="store_true", help="use the back-to-front renderer")
     p.add_argument("-o", "--output", required=True, help="PNG to write")

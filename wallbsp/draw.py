@@ -7,10 +7,10 @@ on an off-screen surface; no window is opened.
 from __future__ import annotations
 
 import colorsys
-import os
-import tempfile
 
 import numpy as np
+
+from .image import save_png
 
 BACKGROUND = (16, 16, 20)
 WALL = (70, 70, 78)
@@ -150,14 +150,6 @@ def _legend(surface, tree, max_depth):
 
 
 def save_surface(surface, path):
-    """pygame.image.save into a temporary file, then rename: nothing half-written."""
+    """The surface as a PNG, written atomically."""
     import pygame
-    folder = os.path.dirname(os.path.abspath(path))
-    fd, tmp = tempfile.mkstemp(prefix=".wallbsp-", suffix=".png", dir=folder)
-    os.close(fd)
-    try:
-        pygame.image.save(surface, tmp)
-        os.replace(tmp, path)
-    except BaseException:
-        os.unlink(tmp)
-        raise
+    save_png(path, pygame.surfarray.array3d(surface).transpose(1, 0, 2))

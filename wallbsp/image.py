@@ -8,12 +8,12 @@ five row filters), which is all the project's tests and tools need; anything els
 """
 from __future__ import annotations
 
-import os
 import struct
-import tempfile
 import zlib
 
 import numpy as np
+
+from .files import write_atomically
 
 _SIGNATURE = b"\x89PNG\r\n\x1a\n"
 _CHANNELS = {0: 1, 2: 3, 6: 4}          # PNG colour type -> samples per pixel
@@ -38,18 +38,8 @@ def png_bytes(rgb) -> bytes:
 
 
 def save_png(path, rgb) -> None:
-    """Write ``rgb`` (height × width × 3 uint8) to ``path`` atomically (temp file + rename)."""
-    data = png_bytes(rgb)
-    path = os.fspath(path)
-    folder = os.path.dirname(os.path.abspath(path))
-    fd, tmp = tempfile.mkstemp(prefix=".wallbsp-", suffix=".png.tmp", dir=folder)
-    try:
-        with os.fdopen(fd, "wb") as out:
-            out.write(data)
-        os.replace(tmp, path)
-    except BaseException:
-        os.unlink(tmp)
-        raise
+    """Write ``rgb`` (height × width × 3 uint8) to ``path`` atomically."""
+    write_atomically(path, png_bytes(rgb))
 
 
 def load_png(path) -> np.ndarray:

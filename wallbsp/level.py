@@ -58,9 +58,7 @@ import difflib
 import hashlib
 import json
 import math
-import os
 import re
-import tempfile
 from dataclasses import dataclass, field
 from fractions import Fraction
 from pathlib import Path
@@ -68,6 +66,7 @@ from typing import Any, NamedTuple, NoReturn
 
 import numpy as np
 
+from .files import write_atomically
 from .geometry import COORD_LIMIT
 
 FORMAT = "wallbsp-level"
@@ -163,7 +162,7 @@ class Level:
         The level is validated first (``LevelError`` names ``path``), so a saved file always
         loads.  A failure to write raises ``OSError`` naming ``path``."""
         level_from_dict(self.to_dict(), source=str(path))
-        _write_atomically(Path(path), dumps_level(self).encode("utf-8"))
+        write_atomically(path, dumps_level(self).encode("utf-8"))
 
 
 # ---------------------------------------------------------------------------------------
@@ -729,44 +728,6 @@ def _plain(value):
     if isinstance(value, float) and value.is_integer():
         return int(value)
     return value
-
-
-def _write_atomically(path: Path, data: bytes) -> None:
-    directory = path.parent
-    try:
-        fd, tmp = tempfile.mkstemp(prefix=f".{path.name}.", suffix=".tmp", dir=directory)
-    except OSError as err:
-        raise OSError(err.errno, err.strerror, str(path)) from None
-    try:
-        with os.fdopen(fd, "wb") as f:
-            f.write(data)
-            f.flush()
-            os.fsync(f.fileno())
-        os.chmod(tmp, _new_file_mode(path))
-        os.replace(tmp, path)
-    except OSError as err:
-        _remove_quietly(tmp)
-        raise OSError(err.errno, err.strerror, str(path)) from None
-    except BaseException:
-        _remove_quietly(tmp)
-        raise
-
-
-def _new_file_mode(path: Path) -> int:
-    """The replaced file's permissions, or what a plain open() would have given."""
-    try:
-        return path.stat().st_mode & 0o7777
-    except OSError:
-        umask = os.umask(0)
-        os.umask(umask)
-        return 0o666 & ~umask
-
-
-def _remove_quietly(path: str) -> None:
-    try:
-        os.unlink(path)
-    except OSError:
-        pass
 
 
 # ---------------------------------------------------------------------------------------

@@ -47,15 +47,15 @@ Conventions (fixed here, used by both renderers):
 """
 from __future__ import annotations
 
+import io
 import math
-import os
-import tempfile
 import weakref
 from bisect import bisect_left, bisect_right
 from dataclasses import dataclass
 
 import numpy as np
 
+from .files import write_atomically
 from .image import save_png  # noqa: F401  (part of this module's API: the CLI imports it here)
 
 __all__ = ["Camera", "ClosedColumns", "Frame", "render", "save_png", "save_ids",
@@ -124,17 +124,9 @@ class Frame:
 
 def save_ids(path, frame: Frame) -> None:
     """Save ``kind`` and ``index`` as a ``.npz`` (arrays ``kind``, ``index``), atomically."""
-    path = os.fspath(path)
-    folder = os.path.dirname(os.path.abspath(path))
-    fd, tmp = tempfile.mkstemp(prefix=".wallbsp-", suffix=".npz.tmp", dir=folder)
-    try:
-        with os.fdopen(fd, "wb") as out:
-            np.savez(out, kind=np.ascontiguousarray(frame.kind),
-                     index=np.ascontiguousarray(frame.index))
-        os.replace(tmp, path)
-    except BaseException:
-        os.unlink(tmp)
-        raise
+    buf = io.BytesIO()
+    np.savez(buf, kind=np.ascontiguousarray(frame.kind), index=np.ascontiguousarray(frame.index))
+    write_atomically(path, buf.getvalue())
 
 
 # --------------------------------------------------------------------------------------------

@@ -25,12 +25,12 @@ from __future__ import annotations
 import io
 import json
 import os
-import tempfile
 import zipfile
 from fractions import Fraction
 
 import numpy as np
 
+from .files import write_atomically
 from .geometry import side_at
 from .level import Level, LevelError
 
@@ -280,22 +280,17 @@ class BSPTree:
             np.lib.format.write_array(buf, np.asarray(getattr(self, name)),
                                       allow_pickle=False)
             members[name + ".npy"] = buf.getvalue()
-        _write_zip_atomically(os.fspath(path), members)
+        write_atomically(path, _zip_bytes(members))
 
 
-def _write_zip_atomically(path, members):
-    folder = os.path.dirname(os.path.abspath(path))
-    fd, tmp = tempfile.mkstemp(prefix=".wallbsp-", suffix=".tmp", dir=folder)
-    try:
-        with os.fdopen(fd, "wb") as raw, zipfile.ZipFile(raw, "w", zipfile.ZIP_STORED) as zf:
-            for name, data in members.items():
-                info = zipfile.ZipInfo(name, date_time=_ZIP_TIME)
-                info.external_attr = 0o644 << 16
-                zf.writestr(info, data)
-        os.replace(tmp, path)
-    except BaseException:
-        os.unlink(tmp)
-        raise
+def _zip_bytes(members) -> bytes:
+    buf = io.BytesIO()
+    with zipfile.ZipFile(buf, "w", zipfile.ZIP_STORED) as zf:
+        for name, data in members.items():
+            info = zipfile.ZipInfo(name, date_time=_ZIP_TIME)
+            info.external_attr = 0o644 << 16
+            zf.writestr(info, data)
+    return buf.getvalue()
 
 
 def load_tree(path) -> BSPTree:
