@@ -9,11 +9,11 @@ from __future__ import annotations
 
 import datetime
 import fcntl
+import io
 import os
 import platform
 import statistics
 import sys
-import tempfile
 import time
 from contextlib import contextmanager
 from pathlib import Path
@@ -22,6 +22,7 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from wallbsp import wad as _wad  # noqa: E402
+from wallbsp.files import write_atomically  # noqa: E402
 from wallbsp.wad import _find_map_lumps, _open_wad, list_maps  # noqa: E402
 
 DOC = ROOT / "docs" / "benchmarks.md"
@@ -133,12 +134,13 @@ def machine_line(info: dict) -> str:
 
 def update_section(name: str, body: str, doc: Path = DOC) -> None:
     """Replaces section ``name`` of ``doc`` with ``body`` (appends it when new; creates the file
-    with the intro when missing). The new file replaces the old in one rename, under a lock on
-    the directory, so two scripts finishing together cannot lose each other's section."""
+    with the intro when missing). The new file replaces the old in one rename (wallbsp.files),
+    under a lock on the directory, so two scripts finishing together cannot lose each other's
+    section."""
     doc.parent.mkdir(parents=True, exist_ok=True)
     with _locked(doc.parent):
         text = doc.read_text() if doc.exists() else INTRO
-        _write_atomically(doc, replace_section(text, name, body))
+        write_atomically(doc, replace_section(text, name, body).encode())
 
 
 def replace_section(text: str, name: str, body: str) -> str:
@@ -160,29 +162,11 @@ def _locked(directory: Path):
         os.close(fd)     # closing releases the lock
 
 
-def _write_atomically(path: Path, text: str) -> None:
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".tmp")
-    try:
-        with os.fdopen(fd, "w") as f:
-            f.write(text)
-        os.chmod(tmp, 0o644)
-        os.replace(tmp, path)
-    except BaseException:
-        os.unlink(tmp)
-        raise
-
-
 def save_plot(figure, path: Path) -> None:
-    """Writes a matplotlib figure as PNG through a temporary file, as the doc is written."""
-    fd, tmp = tempfile.mkstemp(dir=path.parent, prefix=f".{path.name}.", suffix=".png")
-    os.close(fd)
-    try:
-        figure.savefig(tmp, dpi=110)
-        os.chmod(tmp, 0o644)
-        os.replace(tmp, path)
-    except BaseException:
-        os.unlink(tmp)
-        raise
+    """Writes a matplotlib figure as PNG, atomically like the doc."""
+    png = io.BytesIO()
+    figure.savefig(png, format="png", dpi=110)
+    write_atomically(path, png.getvalue())
 
 
 def pyplot():
