@@ -5,11 +5,11 @@
   several runs) and peak traced memory;
 - a 20,000-wall chain of parallel walls (no RecursionError, and how long it takes);
 - Fuchs, Abram & Grant's Table 1 in our terms: segs and seconds for k = 1, 3, 5, 15, 50
-  and exhaustive on every level in levels/;
-- with --freedoom, the split ratio per Freedoom map (segs per wall side, as the DOOM node
-  builders count it) for k = 5, 15 and the default, when the WADs are installed.
+  and exhaustive on every level in levels/ (measured by tools/bench_table1.py, which also
+  covers the Freedoom maps; tools/bench_builders.py compares split ratios with zdbsp and
+  glbsp).
 
-    python tools/bench_compile.py [--quick] [--freedoom] [--repeat N]
+    python tools/bench_compile.py [--quick] [--repeat N]
 """
 import argparse
 import json
@@ -22,10 +22,11 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
+sys.path.insert(0, str(ROOT / "tools"))
+
+from bench_table1 import measure_level  # noqa: E402
 from wallbsp import DEFAULT_CANDIDATES, compile_level, load_level  # noqa: E402
 from wallbsp.level import Level, Sector, Start, Wall  # noqa: E402
-
-FREEDOOM = [Path("/usr/share/games/doom/freedoom1.wad"), Path("/usr/share/games/doom/freedoom2.wad")]
 
 
 def timed_build(level, k, seed=0, repeat=1):
@@ -53,46 +54,9 @@ def chain(n):
     return Level("chain", vertices, [Sector(0, 128)], walls, Start(32, -32))
 
 
-def table1(levels, ks):
-    rows = {}
-    for path in levels:
-        level = load_level(path)
-        row = {"walls": len(level.walls)}
-        for k in ks:
-            tree, seconds = timed_build(level, k)
-            row[str(k)] = {"segs": tree.seg_count, "seconds": round(seconds, 3)}
-        rows[path.stem] = row
-    return rows
-
-
-def freedoom_ratios(ks):
-    from wallbsp.wad import list_maps, load_wad_level
-    out = {}
-    for wad in FREEDOOM:
-        if not wad.exists():
-            continue
-        for name in list_maps(wad):
-            level = load_wad_level(wad, name)
-            row = {"walls": len(level.walls)}
-            for k in ks:
-                tree, seconds = timed_build(level, k)
-                row[str(k)] = {"side_split_ratio": tree.stats()["side_split_ratio"],
-                               "seconds": round(seconds, 3)}
-            out[f"{wad.stem}:{name}"] = row
-    summary = {}
-    for k in ks:
-        ratios = [row[str(k)]["side_split_ratio"] for row in out.values()]
-        if ratios:
-            summary[str(k)] = {"median_side_split_ratio": round(statistics.median(ratios), 4),
-                               "max": max(ratios),
-                               "total_seconds": round(sum(r[str(k)]["seconds"] for r in out.values()), 2)}
-    return {"maps": out, "summary": summary}
-
-
 def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="a smoke run in seconds")
-    parser.add_argument("--freedoom", action="store_true", help="also the Freedoom maps")
     parser.add_argument("--repeat", type=int, default=5)
     args = parser.parse_args()
     large = load_level(ROOT / "levels" / "large.json")
@@ -110,13 +74,10 @@ def main():
     tree, seconds = timed_build(chain_level, None)
     result["chain"] = {"walls": len(chain_level.walls), "max_depth": tree.max_depth,
                        "seconds": round(seconds, 3)}
-    ks = [1, 5, 15] if args.quick else [1, 3, 5, 15, 50, "all"]
     levels = sorted((ROOT / "levels").glob("*.json"))
     if args.quick:
         levels = [p for p in levels if p.stem != "large"]
-    result["table1"] = table1(levels, ks)
-    if args.freedoom:
-        result["freedoom"] = freedoom_ratios([5, 15, None] if not args.quick else [None])
+    result["table1"] = {p.stem: measure_level(load_level(p), "ours", 0, repeat) for p in levels}
     print(json.dumps(result, sort_keys=True))
 
 
