@@ -584,3 +584,39 @@ def test_freedoom_map12_imports_quickly():
         best = min(best, time.perf_counter() - began)
     assert len(level["walls"]) > 10_000
     assert best < 0.3, f"MAP12 took {best:.3f} s"
+
+
+# ---------------------------------------------------------------------------------------------
+# The command line: import-wad, and WAD:MAP wherever a level is read
+
+def test_import_wad_writes_a_level_that_compiles(capsys):
+    from wallbsp import load_level
+    from wallbsp.cli import main
+    wad = write_wad(Map())
+    assert main(["import-wad", str(wad), "MAP01", "-o", "map01.json"]) == 0
+    level = load_level("map01.json")
+    assert len(level.walls) == 7 and len(level.sectors) == 2
+    assert main(["compile", "map01.json", "-o", "map01.wbsp"]) == 0
+    assert Path("map01.wbsp").exists()
+
+
+@pytest.mark.parametrize("command", [["compile"], ["stats"], ["render", "-o", "f.png"],
+                                     ["draw", "-o", "d.png"]])
+def test_wad_colon_map_stands_for_a_level(capsys, command):
+    from wallbsp.cli import main
+    wad = write_wad(Map())
+    assert main([command[0], f"{wad}:map01", *command[1:]]) == 0
+    if command == ["compile"]:
+        assert Path("test-MAP01.wbsp").exists()      # default output: WADNAME-MAP, here
+
+
+@pytest.mark.parametrize("argv", [["import-wad", "test.wad", "MAP07", "-o", "x.json"],
+                                  ["render", "test.wad:MAP07", "-o", "x.png"],
+                                  ["import-wad", "missing.wad", "MAP01", "-o", "x.json"]])
+def test_bad_wad_input_is_one_line_and_exit_2(capsys, argv):
+    from wallbsp.cli import main
+    write_wad(Map())
+    assert main(argv) == 2
+    err = capsys.readouterr().err.strip()
+    assert len(err.splitlines()) == 1 and ("MAP07" in err or "missing.wad" in err)
+    assert not Path("x.json").exists() and not Path("x.png").exists()

@@ -119,10 +119,14 @@ def _size(text):
 
 
 def _default_output(level_path: str, suffix: str) -> str:
-    base = level_path.split(":")[0] if ":" in level_path and not os.path.exists(level_path) \
-        else level_path
-    root, _ = os.path.splitext(base)
-    return root + suffix
+    """Beside the level; for ``WAD:MAP``, ``WADNAME-MAP`` in the current folder (a WAD
+    often lives in a system folder)."""
+    from .wad import parse_wad_spec
+    spec = parse_wad_spec(level_path)
+    if spec:
+        wad, name = spec
+        return os.path.splitext(os.path.basename(wad))[0] + f"-{name}{suffix}"
+    return os.path.splitext(level_path)[0] + suffix
 
 
 def _print_stats(stats: dict, as_json: bool):
