@@ -33,7 +33,7 @@ def builders():
 
 def test_table1_quick_prints_sizes_for_every_k(table1):
     assert {"command", "machine", "ks", "levels", "summary", "fuchs"} <= table1.keys()
-    assert table1["ks"] == ["1", "3", "5", "15", "all"]
+    assert table1["ks"] == ["1", "3", "5", "15", "50", "all"]
     assert {"small", "multi"} <= table1["levels"].keys()
     for row in table1["levels"].values():
         assert row["walls"] > 0 and set(row["k"]) == set(table1["ks"])

@@ -104,9 +104,19 @@ def bench_levels(step):
 # --------------------------------------------------------------------------------------------
 # Gordon & Chen in 2-D
 
+GC_SCALE = 64   # map units per universe unit: 10,000 parallel walls need distinct lines
+
+
+def gc_camera(x, y, z, angle):
+    """A camera at universe coordinates (see GC_SCALE)."""
+    return Camera(x * GC_SCALE, y * GC_SCALE, z * GC_SCALE, angle)
+
+
 def random_walls_level(n, length, seed, parallel=False, universe=1000):
     """n walls of length ~``length`` inside the universe, each as two opposite one-sided
-    walls of sector 0 (so both faces are solid and visible)."""
+    walls of sector 0 (so both faces are solid and visible).  Coordinates are universe
+    units times GC_SCALE, so that walls are distinct lines, not snapped to a 1000-unit
+    grid; the sector is fully lit (light 255), so the scale does not change the picture."""
     rng = np.random.default_rng(seed)
     vertices, walls = [], []
     for _ in range(n):
@@ -114,16 +124,16 @@ def random_walls_level(n, length, seed, parallel=False, universe=1000):
             cx, cy = rng.uniform(0, universe, 2)
             angle = 0.0 if parallel else rng.uniform(0, math.pi)
             dx, dy = length / 2 * math.cos(angle), length / 2 * math.sin(angle)
-            p = (int(round(cx - dx)), int(round(cy - dy)))
-            q = (int(round(cx + dx)), int(round(cy + dy)))
+            p = (int(round((cx - dx) * GC_SCALE)), int(round((cy - dy) * GC_SCALE)))
+            q = (int(round((cx + dx) * GC_SCALE)), int(round((cy + dy) * GC_SCALE)))
             if p != q:
                 break
         k = len(vertices)
         vertices += [p, q]
         walls += [Wall(k, k + 1, 0, None, color="#b08060"),
                   Wall(k + 1, k, 0, None, color="#6080b0")]
-    return Level(f"gc-{n}-{length}", vertices, [Sector(0, 100, 200)], walls,
-                 Start(universe / 2, universe / 2, 90))
+    return Level(f"gc-{n}-{length}", vertices, [Sector(0, 100 * GC_SCALE, 255)], walls,
+                 Start(universe / 2 * GC_SCALE, universe / 2 * GC_SCALE, 90))
 
 
 def gordon_chen(cases, views, size, seed=1):
@@ -134,7 +144,8 @@ def gordon_chen(cases, views, size, seed=1):
         tree = compile_level(level)
         build = time.perf_counter() - t0
         rng = np.random.default_rng(seed + 1)
-        cameras = [Camera(*rng.uniform(0, 1000, 2), 50, rng.uniform(0, 360)) for _ in range(views)]
+        cameras = [gc_camera(*rng.uniform(0, 1000, 2), 50, rng.uniform(0, 360))
+                   for _ in range(views)]
         render(tree, cameras[0], *size)                       # build the render cache
         front = back = 0.0
         nodes = []

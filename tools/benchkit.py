@@ -42,8 +42,12 @@ Regenerate:
 
     python tools/bench_table1.py      # Fuchs, Abram & Grant's Table 1: tree size against k
     python tools/bench_builders.py    # wallbsp beside zdbsp, glbsp and the WADs' own nodes
+    python tools/bench_gordon_chen.py # Gordon & Chen's experiment in 2-D: front-to-back / painter's
+    python tools/bench_maps.py        # every Freedoom map: import, compile, validate, render; fps
+    python tools/bench_compile.py     # the compiler's targets (prints JSON only)
+    python tools/bench_render.py      # the renderer's targets (prints JSON only)
 
-`--quick` on either is a smoke run of a few seconds; `--no-docs` prints the JSON and writes
+`--quick` on any of them is a smoke run of a few seconds; `--no-docs` prints the JSON and writes
 nothing. Plots need matplotlib (`pip install -e ".[bench]"`).
 """
 
