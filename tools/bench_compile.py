@@ -9,7 +9,9 @@
   covers the Freedoom maps; tools/bench_builders.py compares split ratios with zdbsp and
   glbsp).
 
-    python tools/bench_compile.py [--quick] [--repeat N]
+    python tools/bench_compile.py [--quick] [--no-docs] [--repeat N]
+
+It rewrites the "compile" section of docs/benchmarks.md (not with --quick or --no-docs).
 """
 import argparse
 import json
@@ -25,6 +27,7 @@ sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "tools"))
 
 from bench_table1 import measure_level  # noqa: E402
+from benchkit import machine, machine_line, markdown_table, update_section  # noqa: E402
 from wallbsp import DEFAULT_CANDIDATES, compile_level, load_level  # noqa: E402
 from wallbsp.level import Level, Sector, Start, Wall  # noqa: E402
 
@@ -58,12 +61,13 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="a smoke run in seconds")
     parser.add_argument("--repeat", type=int, default=5)
+    parser.add_argument("--no-docs", action="store_true", help="print the JSON only")
     args = parser.parse_args()
     large = load_level(ROOT / "levels" / "large.json")
     repeat = 1 if args.quick else args.repeat
     tree, seconds = timed_build(large, None, repeat=repeat)
     result = {
-        "machine_cores": __import__("os").cpu_count(),
+        "machine": machine(),
         "default_candidates": DEFAULT_CANDIDATES,
         "large": {"walls": len(large.walls), "segs": tree.seg_count,
                   "split_ratio": tree.stats()["split_ratio"],
@@ -79,6 +83,29 @@ def main():
         levels = [p for p in levels if p.stem != "large"]
     result["table1"] = {p.stem: measure_level(load_level(p), "ours", 0, repeat) for p in levels}
     print(json.dumps(result, sort_keys=True))
+    if not (args.quick or args.no_docs):
+        update_section("compile", section(result))
+
+
+def section(result) -> str:
+    large, chain_row = result["large"], result["chain"]
+    ks = list(next(iter(result["table1"].values()))["k"])
+    rows = [[name, row["walls"]] + [f'{row["k"][k]["segs"]} ({row["k"][k]["seconds"]} s)'
+                                    for k in ks] for name, row in result["table1"].items()]
+    return "\n\n".join([
+        "## The compiler's targets",
+        f"Regenerate: `python tools/bench_compile.py` (build times: median of the runs). "
+        f"{machine_line(result['machine'])}",
+        markdown_table(["level", "walls", "segs", "segs/wall", "max depth", "build s (median)",
+                        "peak traced MB", "default k"],
+                       [["large.json", large["walls"], large["segs"], large["split_ratio"],
+                         large["max_depth"], large["build_seconds_median"],
+                         large["peak_traced_mb"], result["default_candidates"]]]),
+        f"Targets: ≤ 0.5 s and ≤ 200 MB at the default settings. A chain of "
+        f"{chain_row['walls']} parallel walls builds in {chain_row['seconds']} s, depth "
+        f"{chain_row['max_depth']}, with no recursion.",
+        "Fuchs, Abram & Grant's Table 1 on our levels — segs (build seconds) for k candidates:",
+        markdown_table(["level", "walls"] + [f"k = {k}" for k in ks], rows)])
 
 
 if __name__ == "__main__":

@@ -4,6 +4,8 @@
     python tools/bench_render.py            # the full run (a few minutes)
     python tools/bench_render.py --quick    # a smoke run, well under a minute
 
+The full run also rewrites the "render" section of docs/benchmarks.md (not with --no-docs).
+
 1. Frame rate: a full turn, 1 degree a frame (--quick: 10 degrees), at three positions (the
    level's start and two seeded random spots, eye 41 above the floor) on levels/multi.json
    and levels/large.json, at 320x200, 640x400 and 1600x1000, front to back; fps = 1 / the
@@ -30,6 +32,9 @@ import numpy as np
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
+sys.path.insert(0, str(ROOT / "tools"))
+
+from benchkit import machine, machine_line, markdown_table, update_section  # noqa: E402
 from wallbsp import compile_level, load_level  # noqa: E402
 from wallbsp.level import Level, Sector, Start, Wall  # noqa: E402
 from wallbsp.rendering import Camera, render  # noqa: E402
@@ -171,6 +176,7 @@ def gordon_chen(cases, views, size, seed=1):
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help="a smoke run, under a minute")
+    parser.add_argument("--no-docs", action="store_true", help="print the JSON only")
     args = parser.parse_args(argv)
     step = 10 if args.quick else 1
     if args.quick:
@@ -189,7 +195,35 @@ def main(argv=None) -> int:
                              "cases": gordon_chen(cases, views, (640, 400)),
                              "target_ratio": 0.10}
     print(json.dumps(report, indent=1))
+    if not (args.quick or args.no_docs):
+        update_section("render", section(report))
     return 0
+
+
+def section(report) -> str:
+    rows = []
+    for name, level in report["levels"].items():
+        for size, fps in level["fps"].items():
+            rows.append([name, level["nodes"], size, fps["fps_median"], fps["fps_min_position"],
+                         fps["target"], "yes" if fps["meets_target"] else "NO"])
+    large = report["levels"]["large"]
+    gc_rows = [[c["case"], c["segs"], c["front_ms"], c["painter_ms"], c["ratio"],
+                c["nodes_visited_median"]] for c in report["gordon_chen"]["cases"]]
+    return "\n\n".join([
+        "## The renderer's targets",
+        f"Regenerate: `python tools/bench_render.py`. {machine_line(machine())} fps = 1 / the "
+        f"median frame time over a full turn, 1° a frame, front to back with shaded floors "
+        f"and ceilings; per size the median over three positions (and the slowest position).",
+        markdown_table(["level", "nodes", "size", "fps (median)", "fps (slowest position)",
+                        "target", "met"], rows),
+        f"Nodes visited per frame on large.json (640×400): median "
+        f"{100 * large['nodes_visited_median_fraction']:.2f} % of all nodes, at most "
+        f"{100 * large['nodes_visited_max_fraction']:.2f} % (target: median ≤ 25 %).",
+        f"Gordon & Chen in 2-D at {report['gordon_chen']['size']}, mean over random views "
+        f"(target ratio ≤ {report['gordon_chen']['target_ratio']}; see also the Gordon & Chen "
+        f"section below):",
+        markdown_table(["case", "segs", "front-to-back ms", "painter's ms", "ratio",
+                        "nodes visited (median)"], gc_rows)])
 
 
 if __name__ == "__main__":
