@@ -70,3 +70,22 @@ def test_builders_summary_has_the_targets(builders):
     summary = builders["summary"]
     assert {"builders", "worse_than_zdbsp", "measured", "targets", "met"} <= summary.keys()
     assert set(summary["measured"]) == set(summary["targets"])
+
+
+def test_compile_benchmark_quick_reports_the_large_level_chain_and_table1():
+    result = run_quick("bench_compile.py")
+    assert result["large"]["walls"] >= 10000
+    assert result["large"]["segs"] >= result["large"]["walls"]
+    assert result["chain"]["walls"] == 2000 and result["chain"]["max_depth"] < 64
+    assert {"small", "multi"} <= set(result["table1"])
+
+
+def test_render_benchmark_quick_reports_fps_nodes_and_gordon_chen():
+    result = run_quick("bench_render.py")
+    for level in ("multi", "large"):
+        fps = result["levels"][level]["fps"]
+        assert set(fps) == {"320x200", "640x400", "1600x1000"}
+        assert all(row["fps_median"] > 0 for row in fps.values())
+    assert 0 < result["levels"]["large"]["nodes_visited_median_fraction"] <= 1
+    for case in result["gordon_chen"]["cases"]:
+        assert case["front_ms"] > 0 and case["painter_ms"] > 0 and case["segs"] > 0
