@@ -6,7 +6,10 @@ from hypothesis import HealthCheck, given, settings, strategies as st
 
 from wallbsp import compile_level, load_level, load_tree
 from wallbsp.build import DEFAULT_CANDIDATES
+from conftest import ROOT
 from treecheck import level_of_walls, ray_order_violations
+
+LEVELS_DIR = ROOT / "levels"
 
 LIMIT = 2 ** 20
 small = st.integers(-64, 64)
@@ -126,7 +129,7 @@ def test_a_20000_wall_chain_builds_without_recursion():
 
 
 def test_same_level_candidates_and_seed_give_the_same_bytes(tmp_path):
-    level = load_level("levels/multi.json")
+    level = load_level(LEVELS_DIR / "multi.json")
     paths = []
     for i, seed in enumerate([7, 7, 8]):
         path = tmp_path / f"t{i}.wbsp"
