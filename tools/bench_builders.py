@@ -13,7 +13,6 @@ Prints one JSON object, plots the split ratios to docs/builders.png and rewrites
 from __future__ import annotations
 
 import argparse
-import json
 import shutil
 import statistics
 import struct
@@ -29,7 +28,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from benchkit import (ROOT, forget_wads, freedoom_maps, linedef_count, machine,  # noqa: E402
                       machine_line, map_lumps, markdown_table, median_seconds, pyplot,
-                      save_plot, smallest_maps, update_section)
+                      save_plot, smallest_maps, report)
 
 from wallbsp import compile_level  # noqa: E402
 from wallbsp.wad import load_wad_level  # noqa: E402
@@ -57,11 +56,7 @@ SUBSECTOR_BIT = 0x8000
 
 def main() -> None:
     args = parse_args()
-    result = run(args)
-    result["plot"] = None if args.no_docs else plot(result)
-    print(json.dumps(result, sort_keys=True))
-    if not args.no_docs:
-        update_section("builders", section(result))
+    report(run(args), args.no_docs, "builders", plot, section)
 
 
 def parse_args():

@@ -17,7 +17,6 @@ opposite one-sided walls so both faces are solid; "parallel" walls all run east-
 from __future__ import annotations
 
 import argparse
-import json
 import statistics
 import sys
 import time
@@ -30,7 +29,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 from bench_maps import first_difference, positive_int  # noqa: E402
 from bench_render import gc_camera, random_walls_level  # noqa: E402
 from benchkit import (ROOT, machine, machine_line, markdown_table, pyplot,  # noqa: E402
-                      save_plot, update_section)
+                      save_plot, report)
 
 from wallbsp import Camera, compile_level, render  # noqa: E402
 
@@ -64,11 +63,7 @@ SHADE_FAR_LEVEL, SHADE_LIGHT_DISTANCE, SHADE_LEVELS = 15.0, 1280.0, 32
 
 def main() -> None:
     args = parse_args()
-    result = run(args)
-    result["plot"] = None if args.no_docs else plot(result)
-    print(json.dumps(result, sort_keys=True))
-    if not args.no_docs:
-        update_section("gordon_chen", section(result))
+    report(run(args), args.no_docs, "gordon_chen", plot, section)
 
 
 def parse_args(argv=None):

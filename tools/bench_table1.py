@@ -13,7 +13,6 @@ the WADs are absent), in a few seconds.
 from __future__ import annotations
 
 import argparse
-import json
 import statistics
 import sys
 from pathlib import Path
@@ -21,7 +20,7 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from benchkit import (ROOT, freedoom_maps, machine, machine_line, markdown_table,  # noqa: E402
-                      median_seconds, pyplot, save_plot, smallest_maps, update_section)
+                      median_seconds, pyplot, save_plot, smallest_maps, report)
 
 from wallbsp import compile_level, load_level  # noqa: E402
 from wallbsp.wad import load_wad_level  # noqa: E402
@@ -47,11 +46,7 @@ FUCHS_KS = (1, 3, 5, 15)
 
 def main() -> None:
     args = parse_args()
-    result = run(args)
-    result["plot"] = None if args.no_docs else plot(result)
-    print(json.dumps(result, sort_keys=True))
-    if not args.no_docs:
-        update_section("table1", section(result))
+    report(run(args), args.no_docs, "table1", plot, section)
 
 
 def parse_args():
@@ -205,7 +200,6 @@ def plot(result: dict) -> str | None:
 
 
 def section(result: dict) -> str:
-    summary = result["summary"]
     parts = [
         "## Fuchs, Abram & Grant's Table 1, in our terms",
         f"Regenerate: `{result['command']}` (seed {result['seed']}; times are the median of "

@@ -10,6 +10,7 @@ from __future__ import annotations
 import datetime
 import fcntl
 import io
+import json
 import os
 import platform
 import statistics
@@ -134,6 +135,14 @@ def markdown_table(header: list[str], rows: list[list]) -> str:
 def machine_line(info: dict) -> str:
     return (f"Machine: {info['nproc']} CPUs (`nproc`), {info['cpu']}; Python {info['python']}, "
             f"numpy {info['numpy']}. Date: {info['date']}.")
+
+
+def report(result: dict, no_docs: bool, name: str, plot, section) -> None:
+    """The end of every evidence script: plot, print the JSON, rewrite the doc section."""
+    result["plot"] = None if no_docs else plot(result)
+    print(json.dumps(result, sort_keys=True))
+    if not no_docs:
+        update_section(name, section(result))
 
 
 def update_section(name: str, body: str, doc: Path = DOC) -> None:
