@@ -96,3 +96,58 @@ def test_walls_moved_anywhere_still_compile_and_render(moves, sectors):
         assert "\n" not in str(err)
         return
     _one_sane_frame(level)
+
+
+@settings(max_examples=300, deadline=None)
+@given(st.data())
+def test_a_damaged_tree_file_is_one_tree_error(tmp_path_factory, data):
+    from wallbsp import load_tree
+    from wallbsp.tree import TreeError
+    path = tmp_path_factory.mktemp("trees") / "t.wbsp"
+    if not _TREE_BYTES:
+        compile_level(level_from_dict(SMALL, source="small.json")).save(path)
+        _TREE_BYTES.append(path.read_bytes())
+    raw = bytearray(_TREE_BYTES[0])
+    n = len(raw)
+    # the zip's own structures sit at the start and in the last kilobyte: aim there often
+    where = st.integers(0, 255) | st.integers(max(0, n - 1200), n - 1) | st.integers(0, n - 1)
+    for _ in range(data.draw(st.integers(1, 4))):
+        raw[data.draw(where)] = data.draw(st.integers(0, 255))
+    if data.draw(st.booleans()):
+        raw = raw[: data.draw(st.integers(0, len(raw)))]
+    path.write_bytes(bytes(raw))
+    try:
+        tree = load_tree(path)
+    except TreeError as err:
+        assert str(err).startswith(str(path)) and "\n" not in str(err)
+        return
+    tree.validate()                  # what loads must be a sound tree
+
+
+_TREE_BYTES: list = []
+
+
+def test_a_crafted_array_header_cannot_allocate_gigabytes(tmp_path):
+    """A well-formed zip (valid CRCs) whose node_line header claims 2**40 rows."""
+    import io
+    import zipfile
+
+    from wallbsp import load_tree
+    from wallbsp.tree import TreeError
+    good, bad = tmp_path / "good.wbsp", tmp_path / "bad.wbsp"
+    compile_level(level_from_dict(SMALL, source="small.json")).save(good)
+    header = io.BytesIO()
+    np.lib.format.write_array_header_1_0(
+        header, {"descr": "<i8", "fortran_order": False, "shape": (2 ** 40, 3)})
+    with zipfile.ZipFile(good) as src, zipfile.ZipFile(bad, "w") as dst:
+        for name in src.namelist():
+            data = src.read(name)
+            if name == "node_line.npy":
+                data = header.getvalue() + data[len(header.getvalue()):]
+            dst.writestr(name, data)
+    try:
+        load_tree(bad)
+    except TreeError as err:
+        assert "node_line" in str(err)
+    else:
+        raise AssertionError("a tree with a lying header loaded")

@@ -25,7 +25,9 @@ from __future__ import annotations
 import io
 import json
 import os
+import struct
 import zipfile
+import zlib
 from fractions import Fraction
 
 import numpy as np
@@ -44,6 +46,13 @@ _ARRAYS = {   # name: (dtype, trailing shape)
     "seg_t": ("int64", (4,)), "seg_xy": ("float64", (4,)),
     "root": ("int64", None), "max_depth": ("int64", None),
 }
+
+
+# what zipfile raises for a damaged archive: a corrupted header can claim encryption or an
+# unknown compression (NotImplementedError, RuntimeError), or break its own parsing
+_DAMAGED_ZIP = (zipfile.BadZipFile, zipfile.LargeZipFile, OSError, EOFError, ValueError,
+                NotImplementedError, RuntimeError, zlib.error, struct.error, KeyError,
+                IndexError, OverflowError)
 
 
 class TreeError(LevelError):
@@ -302,8 +311,9 @@ def load_tree(path) -> BSPTree:
             members = {name: zf.read(name) for name in zf.namelist()}
     except FileNotFoundError:
         raise TreeError(f"{path}: no such file") from None
-    except (zipfile.BadZipFile, OSError, EOFError, ValueError) as err:
-        raise TreeError(f"{path}: not a wallbsp tree, or a damaged one ({err})") from None
+    except _DAMAGED_ZIP as err:
+        raise TreeError(f"{path}: not a wallbsp tree, or a damaged one "
+                        f"({type(err).__name__}: {err})") from None
     header = _read_header(path, members)
     try:
         level = level_from_dict(json.loads(members["level.json"]), source=f"{path}:level.json")
@@ -330,20 +340,40 @@ def _read_header(path, members):
 
 
 def _read_array(path, members, name):
+    """One member as an array, after checking its header against what the tree needs and
+    its size against the bytes present (a crafted header must not allocate gigabytes)."""
     dtype, trailing = _ARRAYS[name]
+    if name + ".npy" not in members:
+        raise TreeError(f"{path}: {name}: missing")
+    raw = members[name + ".npy"]
     try:
-        array = np.lib.format.read_array(io.BytesIO(members[name + ".npy"]),
-                                         allow_pickle=False)
-    except KeyError:
-        raise TreeError(f"{path}: {name}: missing") from None
-    except (ValueError, OSError, EOFError) as err:
+        shape, fortran, found = _npy_header(raw)
+    except (ValueError, SyntaxError, OSError, EOFError, TypeError) as err:
         raise TreeError(f"{path}: {name}: unreadable ({err})") from None
-    shape_ok = array.ndim == 0 if trailing is None else (
-        array.ndim == 1 + len(trailing) and array.shape[1:] == trailing)
-    if array.dtype != np.dtype(dtype) or not shape_ok:
+    shape_ok = shape == () if trailing is None else (
+        len(shape) == 1 + len(trailing) and tuple(shape[1:]) == trailing)
+    if found != np.dtype(dtype) or fortran or not shape_ok:
         raise TreeError(f"{path}: {name}: expected {dtype} with trailing shape {trailing}, "
-                        f"found {array.dtype} {array.shape}")
-    return array
+                        f"found {found} {shape}")
+    offset = len(raw) - int(np.prod(shape, dtype=np.int64)) * found.itemsize
+    if offset < 0 or offset > 4096:
+        raise TreeError(f"{path}: {name}: its header says {shape}, but the data is "
+                        f"{len(raw)} bytes")
+    return np.frombuffer(raw, dtype=found, offset=offset).reshape(shape).copy()
+
+
+def _npy_header(raw: bytes):
+    """``(shape, fortran_order, dtype)`` from a .npy header, without reading the data."""
+    fp = io.BytesIO(raw)
+    version = np.lib.format.read_magic(fp)
+    read = {(1, 0): np.lib.format.read_array_header_1_0,
+            (2, 0): np.lib.format.read_array_header_2_0}.get(version)
+    if read is None:
+        raise ValueError(f"npy version {version} is not supported")
+    shape, fortran, dtype = read(fp)
+    if fp.tell() > len(raw):
+        raise EOFError("truncated header")
+    return tuple(shape), fortran, dtype
 
 
 def _check_ranges(path, arrays, n_walls, n_sectors):
