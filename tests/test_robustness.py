@@ -151,3 +151,28 @@ def test_a_crafted_array_header_cannot_allocate_gigabytes(tmp_path):
         assert "node_line" in str(err)
     else:
         raise AssertionError("a tree with a lying header loaded")
+
+
+def test_a_tree_file_with_a_cycle_is_refused(tmp_path):
+    """Arrays in range, CRCs valid, but node 1 points back at the root: no endless walk."""
+    import io
+    import zipfile
+
+    from wallbsp import load_tree
+    from wallbsp.tree import TreeError
+    good, bad = tmp_path / "good.wbsp", tmp_path / "bad.wbsp"
+    tree = compile_level(level_from_dict(SMALL, source="small.json"))
+    tree.save(good)
+    child = tree.node_child.copy()
+    child[1, 0] = 0
+    buf = io.BytesIO()
+    np.lib.format.write_array(buf, child)
+    with zipfile.ZipFile(good) as src, zipfile.ZipFile(bad, "w") as dst:
+        for name in src.namelist():
+            dst.writestr(name, buf.getvalue() if name == "node_child.npy" else src.read(name))
+    try:
+        load_tree(bad)
+    except TreeError as err:
+        assert "twice" in str(err) or "reach" in str(err)
+    else:
+        raise AssertionError("a tree with a cycle loaded")

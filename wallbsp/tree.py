@@ -323,7 +323,12 @@ def load_tree(path) -> BSPTree:
         raise TreeError(f"{path}: the embedded level does not match the tree's level hash")
     arrays = {name: _read_array(path, members, name) for name in _ARRAYS}
     _check_ranges(path, arrays, len(level.walls), len(level.sectors))
-    return BSPTree(level, arrays, header.get("candidates"), header.get("seed"))
+    tree = BSPTree(level, arrays, header.get("candidates"), header.get("seed"))
+    try:
+        tree._check_structure()      # a cycle would make every walk of the tree endless
+    except ValueError as err:
+        raise TreeError(f"{path}: {err}") from None
+    return tree
 
 
 def _read_header(path, members):
