@@ -766,3 +766,16 @@ def test_save_keeps_the_permissions_of_the_file_it_replaces(tmp_path):
     level_from_dict(square_room()).save(path)
     assert path.stat().st_mode & 0o777 == 0o640
     assert load_level(path) == level_from_dict(square_room())
+
+
+def test_sky_is_an_optional_sector_flag_written_only_when_true():
+    data = square_room()
+    data["sectors"][0]["sky"] = True
+    level = level_from_dict(data, source=SOURCE)
+    assert level.sectors[0].sky is True and level.warnings == []
+    assert '"sky": true' in dumps_level(level)
+    assert level_from_dict(json.loads(dumps_level(level)), source=SOURCE) == level
+    data["sectors"][0]["sky"] = 1
+    with pytest.raises(LevelError, match=r"sectors\[0\]\.sky: expected true or false"):
+        level_from_dict(data, source=SOURCE)
+    assert '"sky"' not in dumps_level(level_from_dict(square_room(), source=SOURCE))

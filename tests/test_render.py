@@ -422,3 +422,22 @@ def test_golden_images(compiled_levels):
         assert path.exists(), f"{path} missing: run python tools/make_golden.py"
         assert np.array_equal(load_png(path), frame.color), \
             f"{name} differs from {path} (after a deliberate change: python tools/make_golden.py)"
+
+
+def test_a_sky_ceiling_is_never_dimmed():
+    """An F_SKY1-style sector: its ceiling is the same full-bright colour at every depth,
+    where an ordinary ceiling darkens with distance."""
+    from wallbsp import compile_level
+    points = [(-2000, -2000), (-2000, 2000), (2000, 2000), (2000, -2000)]
+    walls = [Wall(i, (i + 1) % 4, 0, None) for i in range(4)]
+    frames = {}
+    for sky in (False, True):
+        sector = Sector(0, 128, 128, ceiling_color="#87ceeb", sky=sky)
+        level = Level("sky", points, [sector], walls, Start(0, 0, 90))
+        frame = render(compile_level(level), Camera(0, 0, 41, 90), 64, 40)
+        column = frame.color[:20, 32].astype(int).sum(axis=1)
+        assert (frame.kind[:5, 32] == 3).all()
+        frames[sky] = column[frame.kind[:20, 32] == 3]
+    assert len(set(frames[True].tolist())) == 1
+    assert frames[True][0] == sum((0x87, 0xce, 0xeb))
+    assert frames[False].min() < frames[False].max()

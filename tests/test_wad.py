@@ -321,6 +321,7 @@ def test_flat_colour_is_its_average_and_sky_is_blue(two_rooms):
     s0, s1 = two_rooms["sectors"]
     assert (s0["floor_color"], s0["ceiling_color"]) == (COLOUR["FLOOR1"], COLOUR["CEIL1"])
     assert (s1["floor_color"], s1["ceiling_color"]) == (COLOUR["FLOOR1"], SKY_BLUE)
+    assert s1.get("sky") is True and "sky" not in s0      # F_SKY1: open sky, full bright
 
 
 def test_upper_between_two_skies_is_sky_blue():

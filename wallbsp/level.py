@@ -25,6 +25,9 @@ Defaults of optional fields
     sector ``light``       160
     ``floor_color``        ``"#5a4a3a"``
     ``ceiling_color``      ``"#303038"``
+    sector ``sky``         ``false``; ``true``: the ceiling is open sky, drawn in
+                           ``ceiling_color`` at full brightness, never dimmed (DOOM's
+                           F_SKY1).  An extension of SPEC §2, written only when true.
     wall ``back``          ``null`` (a one-sided, solid wall)
     wall ``color``         ``"#8c8c8c"``
     ``upper_color``, ``lower_color``   ``null``: the wall's ``color``
@@ -75,7 +78,7 @@ MAX_REPORTED = 20            # per kind of wall conflict; a messy map stays read
 MAX_LIGHT = 255
 
 _ROOT_KEYS = ("format", "version", "name", "vertices", "sectors", "walls", "start")
-_SECTOR_KEYS = ("floor", "ceiling", "light", "floor_color", "ceiling_color")
+_SECTOR_KEYS = ("floor", "ceiling", "light", "floor_color", "ceiling_color", "sky")
 _WALL_KEYS = ("v1", "v2", "front", "back", "color", "upper_color", "lower_color")
 _START_KEYS = ("x", "y", "angle")
 _WALL_KEY_SET = frozenset(_WALL_KEYS)
@@ -95,6 +98,7 @@ class Sector:
     light: int = 160
     floor_color: str = "#5a4a3a"
     ceiling_color: str = "#303038"
+    sky: bool = False
 
 
 @dataclass(frozen=True)
@@ -373,6 +377,10 @@ def _read_sector(check: _Checker, item: Any, path: str) -> Sector:
     for key in ("floor_color", "ceiling_color"):
         if key in obj:
             optional[key] = check.color(obj[key], f"{path}.{key}")
+    if "sky" in obj:
+        if not isinstance(obj["sky"], bool):
+            check.fail(path + ".sky", f"expected true or false, got {_describe(obj['sky'])}")
+        optional["sky"] = obj["sky"]
     return Sector(floor, ceiling, **optional)
 
 
@@ -707,8 +715,11 @@ def _dump_row(value: Any) -> str:
 
 
 def _sector_dict(s: Sector) -> dict[str, Any]:
-    return {"floor": _plain(s.floor), "ceiling": _plain(s.ceiling), "light": s.light,
-            "floor_color": s.floor_color, "ceiling_color": s.ceiling_color}
+    out = {"floor": _plain(s.floor), "ceiling": _plain(s.ceiling), "light": s.light,
+           "floor_color": s.floor_color, "ceiling_color": s.ceiling_color}
+    if s.sky:
+        out["sky"] = True
+    return out
 
 
 def _wall_dict(w: Wall) -> dict[str, Any]:

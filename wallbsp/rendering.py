@@ -38,7 +38,8 @@ Conventions (fixed here, used by both renderers):
   clamped to ``[0, 31]`` (1280 = DOOM's 160-pixel projection × 16 scale steps / 2 per
   colormap, so it is independent of the resolution); colour ``= rgb * (level + 1) / 32``.
   Walls use the depth of their column and ``bias`` +1 for north–south walls, -1 for
-  east–west ones (DOOM's fake contrast); floors and ceilings use the depth of each row,
+  east–west ones (DOOM's fake contrast); a sky ceiling (sector ``sky``), and the upper part
+  between two sky sectors, is always full bright; floors and ceilings use the depth of each row,
   ``d = f*(h - z) / (H/2 - 0.5 - row)``.
 * ``stats``: ``nodes_visited`` counts nodes entered (bounding box in view and not hidden),
   ``segs_drawn`` the segs with at least one drawn column, ``pixels_written`` the pixels
@@ -232,6 +233,7 @@ class _RenderData:
         ceil = np.array([s.ceiling for s in sectors], dtype=np.float64)
         light = np.array([s.light for s in sectors], dtype=np.float64)
         self.sector_floor, self.sector_ceiling, self.sector_light = floor, ceil, light
+        self.sector_sky = np.array([s.sky for s in sectors], dtype=bool)
         wall = np.repeat(seg_wall, 2)
         back = np.tile(np.array([0, 1], dtype=np.int64), len(seg_wall))
         near = np.where(back == 0, front_of[wall], back_of[wall])
@@ -249,6 +251,9 @@ class _RenderData:
         north_south, east_west = ends[:, 0] == ends[:, 2], ends[:, 1] == ends[:, 3]
         bias = np.where(north_south, 1.0, np.where(east_west, -1.0, 0.0))
         self.key_light = _far_level(light[near]) + bias[wall]
+        # DOOM leaves the upper part between two skies open: it shows sky, never dimmed
+        self.key_upper_sky = (~one_sided & self.sector_sky[near]
+                              & self.sector_sky[np.maximum(far, 0)])
         # surfaces: wall w -> 3w (color), 3w+1 (upper), 3w+2 (lower); sector planes after
         self.key_upper_surface = 3 * wall + np.where(one_sided, 0, 1)
         self.key_lower_surface = 3 * wall + np.where(one_sided, 0, 2)
@@ -548,7 +553,10 @@ class _Entries:
         lo = np.minimum(np.maximum(floor_b, u), fl)
         self.p1, self.u, self.l, self.fl = (x.astype(np.int64) for x in (p1, u, lo, fl))
         level = _light_levels(np.repeat(data.key_light[keys], counts), w)
-        self.upper_code = np.repeat(data.key_upper_surface[keys] * LIGHT_LEVELS, counts) + level
+        upper_level = np.where(np.repeat(data.key_upper_sky[keys], counts), LIGHT_LEVELS - 1,
+                               level)
+        self.upper_code = (np.repeat(data.key_upper_surface[keys] * LIGHT_LEVELS, counts)
+                           + upper_level)
         self.lower_code = np.repeat(data.key_lower_surface[keys] * LIGHT_LEVELS, counts) + level
         near = data.key_near[keys]
         self.near = np.repeat(near, counts)
@@ -585,6 +593,7 @@ def _stripes(data: _RenderData, view: _View, keys):
         den = np.abs(view.y0 - np.arange(height, dtype=np.float64))
         inverse_depth = den[None, :] / np.maximum(fz, 1e-9)[:, None]
         level = _light_levels(_far_level(data.sector_light[sector])[:, None], inverse_depth)
+        level[(plane & 1).astype(bool) & data.sector_sky[sector]] = LIGHT_LEVELS - 1
         codes = (data.plane_base_surface + plane)[:, None] * LIGHT_LEVELS + level
         stripes[planes] = data.rgb32[codes]
     return stripes, inverse.reshape(-1)

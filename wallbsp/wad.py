@@ -29,9 +29,9 @@ How a map becomes a level:
   ``color`` is its middle texture; a two-sided wall without one takes its upper, else lower,
   texture, else grey. ``upper_color`` is the upper texture of the side with the higher ceiling
   (falling back to the other side), ``lower_color`` the lower texture of the side with the lower
-  floor, as those are the sides DOOM draws them on. Sky ceilings (F_SKY1) are sky blue, and so is
-  the upper part between two sky sectors, which DOOM leaves open to the sky. Missing textures are
-  grey, with a warning. Colours are cached per WAD (path, size and mtime).
+  floor, as those are the sides DOOM draws them on. Sky ceilings (F_SKY1) are sky blue and the
+  sector is marked ``sky`` (drawn full bright), and so is the upper part between two sky
+  sectors, which DOOM leaves open to the sky. Missing textures are grey, with a warning. Colours are cached per WAD (path, size and mtime).
 - Errors (a truncated or malformed WAD, a missing map, a bad index) are one ``LevelError`` line:
   ``freedoom2.wad: directory: ...`` or ``freedoom2.wad: MAP01: LINEDEFS[12]: ...``.
 Hexen-format and UDMF maps are recognised and refused.
@@ -521,9 +521,12 @@ def _sector_dicts(wad: _Wad, where: str, tex: _Textures, sectors: np.ndarray,
                              f"flat {name} not found; grey used")
         notes.extend(missing)
         floor, ceiling = colours[:n], colours[n:]
-    return [{"floor": f, "ceiling": c, "light": li, "floor_color": fc, "ceiling_color": cc}
-            for f, c, li, fc, cc in zip(sectors["floor"].tolist(), sectors["ceiling"].tolist(),
-                                         light.tolist(), floor.tolist(), ceiling.tolist())]
+    sky = [_name(n) == SKY_FLAT for n in sectors["ceiling_flat"].tolist()]
+    return [dict({"floor": f, "ceiling": c, "light": li, "floor_color": fc, "ceiling_color": cc},
+                 **({"sky": True} if open_sky else {}))
+            for f, c, li, fc, cc, open_sky in zip(sectors["floor"].tolist(),
+                                                  sectors["ceiling"].tolist(), light.tolist(),
+                                                  floor.tolist(), ceiling.tolist(), sky)]
 
 
 def _either(first: np.ndarray, second) -> np.ndarray:
