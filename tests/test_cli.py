@@ -170,3 +170,16 @@ def test_python_dash_m_and_help_work():
         done = subprocess.run([sys.executable, "-m", "wallbsp", *argv], capture_output=True,
                               text=True)
         assert done.returncode == 0 and "usage" in done.stdout.lower()
+
+
+def test_builds_longer_than_a_second_show_progress_on_stderr(capsys):
+    from wallbsp.cli import _Progress
+    quick = _Progress()
+    quick(1, 10, 500)
+    assert capsys.readouterr().err == ""                  # under a second: silent
+    slow = _Progress()
+    slow.started -= 2.0
+    slow(3, 40, 1200)
+    slow(4, 90, 0)
+    err = capsys.readouterr().err
+    assert "depth 3, 40 nodes, 1200 segs to place" in err and err.endswith("\n")
