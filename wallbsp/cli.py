@@ -12,6 +12,7 @@ import os
 import sys
 import time
 
+from .build import DEFAULT_CANDIDATES
 from .level import LevelError
 
 EYE_HEIGHT = 41          # DOOM's view height above the floor
@@ -214,9 +215,9 @@ def cmd_import_wad(args):
 # -- the parser ------------------------------------------------------------------------------
 def _add_build_options(p):
     p.add_argument("--candidates", type=_candidates, default=None, metavar="K",
-                   help="random splitter candidates per node, or 'all' (default: "
-                        "wallbsp.DEFAULT_CANDIDATES)")
-    p.add_argument("--seed", type=int, default=0, help="seed of the candidate draw (default 0)")
+                   help=f"random splitter candidates per node, or 'all' (exhaustive); "
+                        f"default {DEFAULT_CANDIDATES}")
+    p.add_argument("--seed", type=int, default=0, metavar="N", help="seed of the candidate draw (default 0)")
 
 
 def _add_strict(p):
@@ -231,7 +232,8 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("walk", help="the pygame walkthrough")
     p.add_argument("level", nargs="?", help="level, tree or WAD:MAP (default: the bundled level)")
-    p.add_argument("--size", type=_size, default=(320, 200), help="internal resolution WxH")
+    p.add_argument("--size", type=_size, default=(320, 200), metavar="WxH",
+                   help="internal resolution (default 320x200)")
     p.add_argument("--frames", type=int, default=None, help="render N frames headless and report")
     p.add_argument("--turn", type=_finite, default=0.0, help="degrees to turn per headless frame")
     p.add_argument("--screenshot", help="save the last frame as PNG")
@@ -241,21 +243,22 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("compile", help="compile a level into a tree file")
     p.add_argument("level", help="level file or WAD:MAP")
-    p.add_argument("-o", "--output", help="tree file (default: the level's path with .wbsp)")
+    p.add_argument("-o", "--output", metavar="TREE", help="tree file (default: the level's path with .wbsp)")
     p.add_argument("--json", action="store_true", help="statistics as one JSON object")
     _add_build_options(p), _add_strict(p)
     p.set_defaults(func=cmd_compile)
 
     p = sub.add_parser("render", help="render one frame to PNG, headless")
     p.add_argument("source", metavar="LEVEL_OR_TREE")
-    p.add_argument("--at", type=_pair(_finite, ","), help="camera position X,Y (default: start)")
-    p.add_argument("--z", type=_finite, help="eye height (default: floor + 41)")
-    p.add_argument("--angle", type=_finite, help="view angle in degrees (default: start)")
-    p.add_argument("--fov", type=_finite, default=90.0, help="horizontal field of view (default 90)")
-    p.add_argument("--size", type=_size, default=(320, 200), help="WxH (default 320x200)")
+    p.add_argument("--at", type=_pair(_finite, ","), metavar="X,Y", help="camera position X,Y (default: start)")
+    p.add_argument("--z", type=_finite, metavar="Z", help="eye height (default: floor + 41)")
+    p.add_argument("--angle", type=_finite, metavar="A", help="view angle in degrees (default: start)")
+    p.add_argument("--fov", type=_finite, default=90.0, metavar="F", help="horizontal field of view (default 90)")
+    p.add_argument("--size", type=_size, default=(320, 200), metavar="WxH",
+                   help="frame size (default 320x200)")
     p.add_argument("--painter", action="store_true", help="use the back-to-front renderer")
-    p.add_argument("-o", "--output", required=True, help="PNG to write")
-    p.add_argument("--ids", help="also save kind and index arrays to this .npz")
+    p.add_argument("-o", "--output", required=True, metavar="PNG", help="PNG to write")
+    p.add_argument("--ids", metavar="NPZ", help="also save kind and index arrays to this .npz")
     p.add_argument("--json", action="store_true", help="print the frame's stats as JSON")
     _add_build_options(p), _add_strict(p)
     p.set_defaults(func=cmd_render)
@@ -268,7 +271,7 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("draw", help="a picture of the partition (PNG)")
     p.add_argument("source", metavar="LEVEL_OR_TREE")
-    p.add_argument("-o", "--output", required=True, help="PNG to write")
+    p.add_argument("-o", "--output", required=True, metavar="PNG", help="PNG to write")
     p.add_argument("--size", type=int, default=1024, help="longest side in pixels (default 1024)")
     _add_build_options(p), _add_strict(p)
     p.set_defaults(func=cmd_draw)
@@ -276,7 +279,7 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("import-wad", help="convert a DOOM-format map into a level")
     p.add_argument("wad")
     p.add_argument("map", help="map name, e.g. E1M1 or MAP01")
-    p.add_argument("-o", "--output", required=True, help="level JSON to write")
+    p.add_argument("-o", "--output", required=True, metavar="LEVEL", help="level JSON to write")
     _add_strict(p)
     p.set_defaults(func=cmd_import_wad)
     return parser
