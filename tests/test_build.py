@@ -191,3 +191,39 @@ def test_locate_agrees_with_point_in_polygon(compiled_levels):
 def test_default_candidates_is_documented_and_used():
     tree = compile_level(level_of_walls([((0, 0), (1, 1))]))
     assert tree.stats()["candidates"] == DEFAULT_CANDIDATES
+
+
+def test_validate_names_a_box_too_small_for_its_segs(compiled_levels):
+    tree = compiled_levels["multi"]
+    saved = tree.node_bbox.copy()
+    try:
+        tree.node_bbox[tree.root, 2] -= 10          # shrink the root's box: walls fall out
+        with pytest.raises(ValueError, match="box"):
+            tree.validate()
+    finally:
+        tree.node_bbox[:] = saved
+    tree.validate()
+
+
+@pytest.mark.parametrize("damage, message", [
+    ("swap_children", "wrong side"),
+    ("gap", "starts at"),
+    ("flip", "flip"),
+])
+def test_validate_names_the_first_broken_invariant(compiled_levels, damage, message):
+    tree = compiled_levels["small"]
+    saved = {name: getattr(tree, name).copy() for name in ("node_child", "seg_t", "seg_flip")}
+    try:
+        if damage == "swap_children":
+            tree.node_child[tree.root] = tree.node_child[tree.root][::-1].copy()
+        elif damage == "gap":
+            i = int(np.nonzero(tree.seg_t[:, 0] == 0)[0][0])   # a seg starting its wall
+            tree.seg_t[i, 0], tree.seg_t[i, 1] = 1, 1000
+        else:
+            tree.seg_flip[0] = not tree.seg_flip[0]
+        with pytest.raises(ValueError, match=message):
+            tree.validate()
+    finally:
+        for name, value in saved.items():
+            getattr(tree, name)[:] = value
+    tree.validate()

@@ -183,6 +183,7 @@ class BSPTree:
         self._check_segs_on_their_lines(ends)
         self._check_walls_covered()
         self._check_sides_of_ancestors(parent, slot, ends)
+        self._check_boxes()
 
     def _wall_ends_array(self):
         v = np.array(self.level.vertices, dtype=np.int64).reshape(-1, 2)
@@ -274,6 +275,25 @@ class BSPTree:
                 i = bad[0]
                 raise ValueError(f"seg {seg[i]} (wall {self.seg_wall[seg[i]]}) is on the wrong "
                                  f"side of ancestor node {node[i]}")
+
+    def _check_boxes(self):
+        """Each node's box holds its own segs and its children's boxes (view culling
+        skips whole subtrees by these boxes, so one too small would hide walls)."""
+        lo, hi = self.node_bbox[:, :2], self.node_bbox[:, 2:]
+        node = np.repeat(np.arange(self.node_count), self.node_segs[:, 1] - self.node_segs[:, 0])
+        xy = self.seg_xy
+        for ends in (xy[:, :2], xy[:, 2:]):
+            bad = np.nonzero(((ends < lo[node]) | (ends > hi[node])).any(axis=1))[0]
+            if len(bad):
+                raise ValueError(f"seg {bad[0]} lies outside the box of node {node[bad[0]]}")
+        for slot in (0, 1):
+            kid = self.node_child[:, slot]
+            inner = np.nonzero(kid >= 0)[0]
+            k = kid[inner]
+            bad = np.nonzero(((lo[k] < lo[inner]) | (hi[k] > hi[inner])).any(axis=1))[0]
+            if len(bad):
+                raise ValueError(f"the box of node {k[bad[0]]} sticks out of its parent "
+                                 f"{inner[bad[0]]}'s")
 
     # -- files ------------------------------------------------------------------------------
     def save(self, path) -> None:
