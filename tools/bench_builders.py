@@ -12,7 +12,6 @@ Prints one JSON object, plots the split ratios to docs/builders.png and rewrites
 """
 from __future__ import annotations
 
-import argparse
 import shutil
 import statistics
 import struct
@@ -27,8 +26,8 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from benchkit import (ROOT, forget_wads, freedoom_maps, linedef_count, machine,  # noqa: E402
-                      machine_line, map_lumps, markdown_table, median_seconds, pyplot,
-                      save_plot, smallest_maps, report)
+                      machine_line, map_lumps, markdown_table, median_seconds,
+                      pyplot, report, save_plot, script_parser, smallest_maps)
 
 from wallbsp import compile_level  # noqa: E402
 from wallbsp.wad import load_wad_level  # noqa: E402
@@ -60,10 +59,7 @@ def main() -> None:
 
 
 def parse_args():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--quick", action="store_true", help="three small maps, one run each")
-    parser.add_argument("--no-docs", action="store_true",
-                        help="print the JSON only; write neither docs/benchmarks.md nor the plot")
+    parser = script_parser(__doc__, "three small maps, one run each")
     parser.add_argument("--repeat", type=int, default=3,
                         help="runs of every timing; the median is kept (default 3)")
     return parser.parse_args()

@@ -13,7 +13,6 @@
 
 It rewrites the "compile" section of docs/benchmarks.md (not with --quick or --no-docs).
 """
-import argparse
 import json
 import statistics
 import sys
@@ -27,7 +26,8 @@ sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "tools"))
 
 from bench_table1 import measure_level  # noqa: E402
-from benchkit import machine, machine_line, markdown_table, update_section  # noqa: E402
+from benchkit import (machine, machine_line, markdown_table, script_parser,  # noqa: E402
+                      update_section)
 from wallbsp import DEFAULT_CANDIDATES, compile_level, load_level  # noqa: E402
 from wallbsp.level import Level, Sector, Start, Wall  # noqa: E402
 
@@ -58,10 +58,8 @@ def chain(n):
 
 
 def main():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--quick", action="store_true", help="a smoke run in seconds")
-    parser.add_argument("--repeat", type=int, default=5)
-    parser.add_argument("--no-docs", action="store_true", help="print the JSON only")
+    parser = script_parser(__doc__, "a smoke run in seconds")
+    parser.add_argument("--repeat", type=int, default=5, help="builds per timing (default 5)")
     args = parser.parse_args()
     large = load_level(ROOT / "levels" / "large.json")
     repeat = 1 if args.quick else args.repeat

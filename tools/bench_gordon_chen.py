@@ -16,7 +16,6 @@ opposite one-sided walls so both faces are solid; "parallel" walls all run east-
 """
 from __future__ import annotations
 
-import argparse
 import statistics
 import sys
 import time
@@ -28,8 +27,8 @@ sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from bench_maps import first_difference, positive_int  # noqa: E402
 from bench_render import gc_camera, random_walls_level  # noqa: E402
-from benchkit import (ROOT, machine, machine_line, markdown_table, pyplot,  # noqa: E402
-                      save_plot, report)
+from benchkit import (ROOT, machine, machine_line, markdown_table, pyplot, report,  # noqa: E402
+                      save_plot, script_parser)
 
 from wallbsp import Camera, compile_level, render  # noqa: E402
 
@@ -67,11 +66,7 @@ def main() -> None:
 
 
 def parse_args(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--quick", action="store_true",
-                        help="N <= 500, S = 500 and parallel, 3 views, one run each")
-    parser.add_argument("--no-docs", action="store_true",
-                        help="print the JSON only; write neither docs/benchmarks.md nor the plot")
+    parser = script_parser(__doc__, "N <= 500, S = 500 and parallel, 3 views, one run each")
     parser.add_argument("--views", type=positive_int, default=None,
                         help="random viewpoints per case (default 7; --quick 3)")
     parser.add_argument("--repeat", type=positive_int, default=None,

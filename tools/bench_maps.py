@@ -13,7 +13,6 @@ summary line saying so and exits 0.
 """
 from __future__ import annotations
 
-import argparse
 import json
 import math
 import statistics
@@ -26,7 +25,7 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from benchkit import (FREEDOOM, forget_wads, freedoom_maps, machine, machine_line,  # noqa: E402
-                      markdown_table, update_section)
+                      markdown_table, script_parser, update_section)
 
 from wallbsp import Camera, compile_level, render  # noqa: E402
 from wallbsp.wad import load_wad_level  # noqa: E402
@@ -64,11 +63,7 @@ def main() -> None:
 
 
 def parse_args(argv=None):
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--quick", action="store_true",
-                        help="E1M1 and MAP01 only, one pass, a 60-frame walk")
-    parser.add_argument("--no-docs", action="store_true",
-                        help="print the JSON only; do not write docs/benchmarks.md")
+    parser = script_parser(__doc__, "E1M1 and MAP01 only, one pass, a 60-frame walk")
     parser.add_argument("--repeat", type=positive_int, default=None,
                         help="passes of every timing, the median kept (default 5; --quick 1)")
     return parser.parse_args(argv)

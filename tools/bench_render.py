@@ -18,7 +18,6 @@ The full run also rewrites the "render" section of docs/benchmarks.md (not with 
 """
 from __future__ import annotations
 
-import argparse
 import json
 import math
 import platform
@@ -34,7 +33,8 @@ sys.path.insert(0, str(ROOT))
 
 sys.path.insert(0, str(ROOT / "tools"))
 
-from benchkit import machine, machine_line, markdown_table, update_section  # noqa: E402
+from benchkit import (machine, machine_line, markdown_table, script_parser,  # noqa: E402
+                      update_section)
 from wallbsp import compile_level, load_level  # noqa: E402
 from wallbsp.level import Level, Sector, Start, Wall  # noqa: E402
 from wallbsp.rendering import Camera, render  # noqa: E402
@@ -174,9 +174,7 @@ def gordon_chen(cases, views, size, seed=1):
 
 
 def main(argv=None) -> int:
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--quick", action="store_true", help="a smoke run, under a minute")
-    parser.add_argument("--no-docs", action="store_true", help="print the JSON only")
+    parser = script_parser(__doc__, "a smoke run, under a minute")
     args = parser.parse_args(argv)
     step = 10 if args.quick else 1
     if args.quick:

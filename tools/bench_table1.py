@@ -12,7 +12,6 @@ the WADs are absent), in a few seconds.
 """
 from __future__ import annotations
 
-import argparse
 import statistics
 import sys
 from pathlib import Path
@@ -20,7 +19,8 @@ from pathlib import Path
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from benchkit import (ROOT, freedoom_maps, machine, machine_line, markdown_table,  # noqa: E402
-                      median_seconds, pyplot, save_plot, smallest_maps, report)
+                      median_seconds, pyplot, report, save_plot, script_parser,
+                      smallest_maps)
 
 from wallbsp import compile_level, load_level  # noqa: E402
 from wallbsp.wad import load_wad_level  # noqa: E402
@@ -50,10 +50,7 @@ def main() -> None:
 
 
 def parse_args():
-    parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
-    parser.add_argument("--quick", action="store_true", help="a smoke run in a few seconds")
-    parser.add_argument("--no-docs", action="store_true",
-                        help="print the JSON only; write neither docs/benchmarks.md nor the plot")
+    parser = script_parser(__doc__, "a smoke run in a few seconds")
     parser.add_argument("--repeat", type=int, default=3,
                         help="builds per level and k; the median time is kept (default 3)")
     parser.add_argument("--seed", type=int, default=0, help="the candidates' seed (default 0)")

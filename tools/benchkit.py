@@ -7,6 +7,7 @@ other scripts' sections, anything written by hand outside the markers) is kept a
 """
 from __future__ import annotations
 
+import argparse
 import datetime
 import fcntl
 import io
@@ -135,6 +136,15 @@ def markdown_table(header: list[str], rows: list[list]) -> str:
 def machine_line(info: dict) -> str:
     return (f"Machine: {info['nproc']} CPUs (`nproc`), {info['cpu']}; Python {info['python']}, "
             f"numpy {info['numpy']}. Date: {info['date']}.")
+
+
+def script_parser(doc: str, quick_help: str) -> argparse.ArgumentParser:
+    """The options every benchmark script shares: --quick and --no-docs."""
+    parser = argparse.ArgumentParser(description=doc.splitlines()[0])
+    parser.add_argument("--quick", action="store_true", help=quick_help)
+    parser.add_argument("--no-docs", action="store_true",
+                        help="print the JSON only; write neither docs/benchmarks.md nor a plot")
+    return parser
 
 
 def report(result: dict, no_docs: bool, name: str, plot, section) -> None:
