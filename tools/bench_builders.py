@@ -280,9 +280,7 @@ def plot(result: dict) -> str | None:
     ax.set_title(f"Node builders on {len(rows)} Freedoom maps")
     ax.legend(fontsize=8)
     fig.tight_layout()
-    save_plot(fig, PLOT)
-    plt.close(fig)
-    return str(PLOT.relative_to(ROOT))
+    return save_plot(fig, PLOT)
 
 
 def section(result: dict) -> str:

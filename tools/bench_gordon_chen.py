@@ -307,9 +307,7 @@ def plot(result: dict):
     axes[0][0].set_ylabel(f"ms per {result['grid_frame']} frame (median of views)")
     axes[0][0].legend(fontsize=7)
     figure.tight_layout()
-    save_plot(figure, PLOT)
-    plt.close(figure)
-    return str(PLOT.relative_to(ROOT))
+    return save_plot(figure, PLOT)
 
 
 def findings(grid_rows, target_rows) -> list[str]:

@@ -191,9 +191,7 @@ def plot(result: dict) -> str | None:
     ax.set_title("Tree size against k (least-crossed among k random candidates)")
     ax.legend()
     fig.tight_layout()
-    save_plot(fig, PLOT)
-    plt.close(fig)
-    return str(PLOT.relative_to(ROOT))
+    return save_plot(fig, PLOT)
 
 
 def section(result: dict) -> str:

@@ -185,11 +185,15 @@ def _locked(directory: Path):
         os.close(fd)     # closing releases the lock
 
 
-def save_plot(figure, path: Path) -> None:
-    """Writes a matplotlib figure as PNG, atomically like the doc."""
+def save_plot(figure, path: Path) -> str:
+    """Writes a matplotlib figure as PNG, atomically like the doc, and closes it; returns
+    the path relative to the repository, as the JSON reports it."""
     png = io.BytesIO()
     figure.savefig(png, format="png", dpi=110)
     write_atomically(path, png.getvalue())
+    import matplotlib.pyplot as plt
+    plt.close(figure)
+    return str(path.relative_to(ROOT))
 
 
 def pyplot():
