@@ -55,7 +55,7 @@ SUBSECTOR_BIT = 0x8000
 
 def main() -> None:
     args = parse_args()
-    report(run(args), args.no_docs, "builders", plot, section)
+    report(run(args), args, "builders", plot, section)
 
 
 def parse_args():

@@ -27,7 +27,7 @@ sys.path.insert(0, str(ROOT / "tools"))
 
 from bench_table1 import measure_level  # noqa: E402
 from benchkit import (machine, machine_line, markdown_table, script_parser,  # noqa: E402
-                      update_section)
+                      update_section, writes_docs)
 from wallbsp import DEFAULT_CANDIDATES, compile_level, load_level  # noqa: E402
 from wallbsp.level import Level, Sector, Start, Wall  # noqa: E402
 
@@ -81,7 +81,7 @@ def main():
         levels = [p for p in levels if p.stem != "large"]
     result["table1"] = {p.stem: measure_level(load_level(p), "ours", 0, repeat) for p in levels}
     print(json.dumps(result, sort_keys=True))
-    if not (args.quick or args.no_docs):
+    if writes_docs(args):
         update_section("compile", section(result))
 
 

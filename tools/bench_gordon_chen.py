@@ -62,7 +62,7 @@ SHADE_FAR_LEVEL, SHADE_LIGHT_DISTANCE, SHADE_LEVELS = 15.0, 1280.0, 32
 
 def main() -> None:
     args = parse_args()
-    report(run(args), args.no_docs, "gordon_chen", plot, section)
+    report(run(args), args, "gordon_chen", plot, section)
 
 
 def parse_args(argv=None):

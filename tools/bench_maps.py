@@ -25,7 +25,8 @@ import numpy as np
 sys.path.insert(0, str(Path(__file__).resolve().parent))
 
 from benchkit import (FREEDOOM, forget_wads, freedoom_maps, machine, machine_line,  # noqa: E402
-                      markdown_table, script_parser, update_section)
+                      markdown_table, script_parser, update_section,
+                      writes_docs)
 
 from wallbsp import Camera, compile_level, render  # noqa: E402
 from wallbsp.wad import load_wad_level  # noqa: E402
@@ -57,7 +58,7 @@ def main() -> None:
     for line in lines:
         print(json.dumps(line, sort_keys=True))
     summary = lines[-1]
-    if not args.no_docs and "skipped" not in summary:
+    if writes_docs(args) and "skipped" not in summary:
         update_section("maps", maps_section(lines))
         update_section("frames", frames_section(lines))
 

@@ -34,7 +34,7 @@ sys.path.insert(0, str(ROOT))
 sys.path.insert(0, str(ROOT / "tools"))
 
 from benchkit import (machine, machine_line, markdown_table, script_parser,  # noqa: E402
-                      update_section)
+                      update_section, writes_docs)
 from wallbsp import compile_level, load_level  # noqa: E402
 from wallbsp.level import Level, Sector, Start, Wall  # noqa: E402
 from wallbsp.rendering import Camera, render  # noqa: E402
@@ -193,7 +193,7 @@ def main(argv=None) -> int:
                              "cases": gordon_chen(cases, views, (640, 400)),
                              "target_ratio": 0.10}
     print(json.dumps(report, indent=1))
-    if not (args.quick or args.no_docs):
+    if writes_docs(args):
         update_section("render", section(report))
     return 0
 

@@ -46,7 +46,7 @@ FUCHS_KS = (1, 3, 5, 15)
 
 def main() -> None:
     args = parse_args()
-    report(run(args), args.no_docs, "table1", plot, section)
+    report(run(args), args, "table1", plot, section)
 
 
 def parse_args():

@@ -143,15 +143,21 @@ def script_parser(doc: str, quick_help: str) -> argparse.ArgumentParser:
     parser = argparse.ArgumentParser(description=doc.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help=quick_help)
     parser.add_argument("--no-docs", action="store_true",
-                        help="print the JSON only; write neither docs/benchmarks.md nor a plot")
+                        help="print the JSON only; write neither docs/benchmarks.md nor a plot "
+                             "(--quick never writes them either)")
     return parser
 
 
-def report(result: dict, no_docs: bool, name: str, plot, section) -> None:
+def writes_docs(args) -> bool:
+    """Only full runs write docs/benchmarks.md and plots: a --quick number is no evidence."""
+    return not (args.quick or args.no_docs)
+
+
+def report(result: dict, args, name: str, plot, section) -> None:
     """The end of every evidence script: plot, print the JSON, rewrite the doc section."""
-    result["plot"] = None if no_docs else plot(result)
+    result["plot"] = plot(result) if writes_docs(args) else None
     print(json.dumps(result, sort_keys=True))
-    if not no_docs:
+    if writes_docs(args):
         update_section(name, section(result))
 
 
