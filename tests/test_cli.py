@@ -1,5 +1,4 @@
 """The command line: every bad input is one line on stderr, exit status 2, nothing written."""
-import copy
 import json
 import subprocess
 import sys
@@ -8,6 +7,7 @@ import zipfile
 
 import pytest
 
+from conftest import DELETE, edited
 from wallbsp.cli import main
 
 GOOD = {
@@ -21,22 +21,13 @@ GOOD = {
 
 
 def _bad(path, value):
-    level = copy.deepcopy(GOOD)
-    *parents, last = path
-    target = level
-    for key in parents:
-        target = target[key]
-    if value is KeyError:
-        del target[last]
-    else:
-        target[last] = value
-    return level
+    return edited(GOOD, tuple(path), value)
 
 
 BAD_LEVELS = {   # name: (level, the JSON path the message must name)
     "format": (_bad(["format"], "doom"), "format"),
     "version": (_bad(["version"], 2), "version"),
-    "missing_walls": (_bad(["walls"], KeyError), "walls"),
+    "missing_walls": (_bad(["walls"], DELETE), "walls"),
     "vertex_index": (_bad(["walls", 2, "v2"], 99), "walls[2].v2"),
     "sector_index": (_bad(["walls", 1, "front"], 3), "walls[1].front"),
     "back_index": (_bad(["walls", 1, "back"], -1), "walls[1].back"),

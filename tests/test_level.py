@@ -12,6 +12,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
+from conftest import DELETE, edited
 from wallbsp.level import (
     MAX_REPORTED, Level, LevelError, Sector, Start, Wall, dumps_level, find_wall_conflicts,
     level_from_dict, load_level, loads_level,
@@ -48,22 +49,6 @@ def level_with_walls(ends, sectors=None):
                        sectors=sectors or [{"floor": 0, "ceiling": 128}])
 
 
-DELETE = object()
-
-
-def edited(data, path, value):
-    """A deep copy of data with the member at ``path`` (a tuple of keys) set to value;
-    ``DELETE`` removes it."""
-    data = copy.deepcopy(data)
-    *parents, last = path
-    target = data
-    for key in parents:
-        target = target[key]
-    if value is DELETE:
-        del target[last]
-    else:
-        target[last] = value
-    return data
 
 
 def error_of(data, source=SOURCE) -> str:
