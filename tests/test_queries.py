@@ -1,5 +1,5 @@
-"""Movement and sight through the tree (wallbsp.collide): DOOM's player rules, checked
-against brute force over every wall."""
+"""Movement and sight over the current world (wallbsp.queries): DOOM's player rules, checked
+against brute force over every wall; heights that change; input that is not a number."""
 import math
 from pathlib import Path
 
@@ -7,10 +7,11 @@ import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from wallbsp import collide, compile_level
+from wallbsp import compile_level, queries
+from wallbsp.world import WorldState
 from wallbsp.level import Level, Sector, Start, Wall
 
-RADIUS, STEP, HEADROOM = collide.PLAYER_RADIUS, collide.MAX_STEP, collide.PLAYER_HEIGHT
+RADIUS, STEP, HEADROOM = queries.PLAYER_RADIUS, queries.MAX_STEP, queries.PLAYER_HEIGHT
 LEVELS = sorted(p.stem for p in (Path(__file__).resolve().parent.parent / "levels").glob("*.json"))
 
 
@@ -29,7 +30,7 @@ def two_rooms(floor_b=0, ceiling_b=128, east_open=True):
 def walk(tree, x, y, dx, dy, moves):
     """Repeat one move, standing on DOOM's floorz each time, as the walkthrough does."""
     for _ in range(moves):
-        x, y = collide.move(tree, x, y, dx, dy, collide.floor_z(tree, x, y))
+        x, y = queries.move(tree, x, y, dx, dy, queries.floor_z(tree, x, y))
     return x, y
 
 
@@ -52,7 +53,7 @@ def test_sliding_along_a_wall_at_45_degrees_keeps_moving_along_it():
     tree = two_rooms(east_open=False)
     x, y = walk(tree, 236.0, 64.0, 7.0, 7.0, 1)           # reaches the east wall
     for _ in range(10):
-        nx, ny = collide.move(tree, x, y, 7.0, 7.0, 0)
+        nx, ny = queries.move(tree, x, y, 7.0, 7.0, 0)
         assert nx == pytest.approx(256 - RADIUS, abs=1e-3)
         assert ny - y == pytest.approx(7.0, abs=1e-6)       # the wall's component only is lost
         x, y = nx, ny
@@ -90,38 +91,51 @@ def test_the_gap_is_the_lower_ceiling_over_the_higher_floor(ceiling, floor):
 def test_a_closed_door_blocks_movement_and_sight():
     tree = two_rooms(floor_b=0, ceiling_b=0)
     assert not crosses_into_b(0, 0)
-    assert not collide.line_of_sight(tree, (128, 128), (384, 128))
-    assert collide.line_of_sight(two_rooms(0, 128), (128, 128), (384, 128))
+    assert not queries.line_of_sight(tree, (128, 128), (384, 128))
+    assert queries.line_of_sight(two_rooms(0, 128), (128, 128), (384, 128))
 
 
 def test_a_move_far_longer_than_the_radius_does_not_tunnel():
     tree = two_rooms(east_open=False)
-    x, y = collide.move(tree, 128.0, 128.0, 5000.0, 900.0, 0)
+    x, y = queries.move(tree, 128.0, 128.0, 5000.0, 900.0, 0)
     assert tree.locate(x, y) == 0
     assert x == pytest.approx(256 - RADIUS, abs=1e-3)
 
 
 def test_standing_half_over_a_ledge_stands_on_the_ledge():
     tree = two_rooms(floor_b=20, ceiling_b=200)
-    assert collide.floor_z(tree, 250.0, 128.0) == 20      # centre in A, circle over B's floor
-    assert collide.floor_z(tree, 200.0, 128.0) == 0
-    assert collide.floor_z(tree, -50.0, 128.0) is None
+    assert queries.floor_z(tree, 250.0, 128.0) == 20      # centre in A, circle over B's floor
+    assert queries.floor_z(tree, 200.0, 128.0) == 0
+    assert queries.floor_z(tree, -50.0, 128.0) is None
 
 
-def test_nearby_segs_come_from_the_tree_not_from_every_wall(compiled_levels):
+def test_nearby_segs_come_from_the_tree_not_from_every_wall(compiled_levels, monkeypatch):
     tree = compiled_levels["large"]
-    geo = collide._geometry(tree)
-    start = tree.level.start
-    near = collide._segs_near(geo, start.x, start.y, 3 * RADIUS)
-    assert len(near) < tree.seg_count / 50
+    (x1, y1), (x2, y2) = tree.wall_ends(0)
+    length = math.hypot(x2 - x1, y2 - y1)
+    # 4 units in front of wall 0's middle (the front is on the right of v1 -> v2)
+    x, y = (x1 + x2) / 2 + 4 * (y2 - y1) / length, (y1 + y2) / 2 - 4 * (x2 - x1) / length
+    searched = []                      # white box: what the tree search hands the query
+    search = queries._segs_near
+    monkeypatch.setattr(queries, "_segs_near", lambda *a: searched.append(search(*a)) or searched[-1])
+    queries.floor_z(tree, x, y, 3 * RADIUS)
+    assert searched and 0 < len(searched[0]) < tree.seg_count / 50
 
 
 # -- random walks, checked by brute force over ALL walls ---------------------------------------
 
+def opening_of(level, wall):
+    """``(bottom, top)`` of a wall's opening; a one-sided wall has none (+inf, -inf)."""
+    if wall.back is None:
+        return math.inf, -math.inf
+    front, back = level.sectors[wall.front], level.sectors[wall.back]
+    return max(front.floor, back.floor), min(front.ceiling, back.ceiling)
+
+
 def wall_table(level):
     """Every wall's ends and opening (bottom, top), one row per wall."""
     ends = level.segments().astype(float)
-    opening = np.array([collide._opening(level, w) for w in level.walls], dtype=float)
+    opening = np.array([opening_of(level, w) for w in level.walls], dtype=float)
     return ends, opening
 
 
@@ -154,8 +168,8 @@ def test_random_moves_never_end_in_a_wall_outside_the_map_or_above_a_high_step(
     rng = np.random.default_rng(7)
     x, y = float(tree.level.start.x), float(tree.level.start.y)
     for dx, dy in random_moves(rng, 3000):
-        z = collide.floor_z(tree, x, y)
-        x, y = collide.move(tree, x, y, dx, dy, z)
+        z = queries.floor_z(tree, x, y)
+        x, y = queries.move(tree, x, y, dx, dy, z)
         sector = tree.locate(x, y)
         assert sector is not None, (x, y)
         assert floors[sector] - z <= STEP
@@ -173,7 +187,7 @@ def test_standing_on_the_floor_under_the_centre_never_enters_solid_walls(compile
     rng = np.random.default_rng(11)
     x, y = float(tree.level.start.x), float(tree.level.start.y)
     for dx, dy in random_moves(rng, 2000):
-        x, y = collide.move(tree, x, y, dx, dy, floors[tree.locate(x, y)])
+        x, y = queries.move(tree, x, y, dx, dy, floors[tree.locate(x, y)])
         assert tree.locate(x, y) is not None
         assert distances(ends[solid], x, y).min() >= RADIUS - 1e-6
 
@@ -237,18 +251,99 @@ def test_line_of_sight_agrees_with_brute_force(compiled_levels, name):
     seen = 0
     for a, b in sight_pairs(tree.level, rng, count, span):
         expected = brute_force_sight(tree.level, a, b, table=table)
-        assert collide.line_of_sight(tree, a, b) == expected, (a, b)
+        assert queries.line_of_sight(tree, a, b) == expected, (a, b)
         seen += expected
         za, zb = (float(z) for z in rng.uniform(-20, 240, 2))
-        assert collide.line_of_sight(tree, a, b, za, zb) == \
+        assert queries.line_of_sight(tree, a, b, za, zb) == \
             brute_force_sight(tree.level, a, b, za, zb, table=table), (a, b, za, zb)
     assert 0 < seen < count
 
 
 def test_eye_heights_see_over_a_step_but_not_through_a_window_sill():
     tree = two_rooms(floor_b=40, ceiling_b=128)   # opening between the rooms: 40 .. 128
-    assert collide.line_of_sight(tree, (128, 128), (384, 128))
-    assert collide.line_of_sight(tree, (128, 128), (384, 128), 41, 81)
-    assert not collide.line_of_sight(tree, (128, 128), (384, 128), 20, 20)
+    assert queries.line_of_sight(tree, (128, 128), (384, 128))
+    assert queries.line_of_sight(tree, (128, 128), (384, 128), 41, 81)
+    assert not queries.line_of_sight(tree, (128, 128), (384, 128), 20, 20)
     with pytest.raises(ValueError):
-        collide.line_of_sight(tree, (0, 0), (1, 1), 41)
+        queries.line_of_sight(tree, (0, 0), (1, 1), 41)
+
+
+# -- the world as it is now ---------------------------------------------------------------------
+
+def test_a_door_that_closes_and_opens_is_read_from_the_world_state():
+    tree = two_rooms(0, 128)
+    state = WorldState(tree)
+    assert walk(state, 128.0, 128.0, 10.0, 0.0, 40)[0] > 256
+    state.set_sector(1, ceiling=0)                    # the door shuts
+    assert walk(state, 128.0, 128.0, 10.0, 0.0, 40)[0] == pytest.approx(256 - RADIUS, abs=1e-3)
+    assert not queries.line_of_sight(state, (128, 128), (384, 128))
+    assert queries.line_of_sight(tree, (128, 128), (384, 128))    # the level's own heights
+    state.set_sector(1, ceiling=128)                  # and opens again
+    assert queries.line_of_sight(state, (128, 128), (384, 128))
+    assert walk(state, 128.0, 128.0, 10.0, 0.0, 40)[0] > 256
+
+
+def test_floor_and_ceiling_follow_a_lift():
+    state = WorldState(two_rooms(0, 128))
+    assert queries.standing_heights(state, 250.0, 128.0) == (0, 128)
+    state.set_sector(1, floor=-40, ceiling=100)
+    assert queries.floor_z(state, 250.0, 128.0) == 0       # the higher floor: A's
+    assert queries.ceiling_z(state, 250.0, 128.0) == 100   # the lower ceiling: B's
+    assert queries.floor_z(state, 400.0, 128.0) == -40
+
+
+class _World:
+    """A stand-in for the game's world: anything with a ``.state``."""
+
+    def __init__(self, state):
+        self.state = state
+
+
+def test_anything_with_a_state_is_a_source():
+    state = WorldState(two_rooms(0, 128))
+    state.set_sector(1, floor=20)
+    assert queries.floor_z(_World(state), 400.0, 128.0) == 20
+
+
+# -- input that is not a number, moves of any length ---------------------------------------------
+
+@pytest.mark.parametrize("bad", [math.inf, -math.inf, math.nan, "3", None, 10 ** 400])
+def test_a_non_finite_move_is_a_value_error(bad):
+    tree = two_rooms()
+    for args in ((bad, 128.0, 1.0, 0.0, 0), (128.0, 128.0, bad, 0.0, 0),
+                 (128.0, 128.0, 0.0, bad, 0), (128.0, 128.0, 1.0, 0.0, bad)):
+        with pytest.raises(ValueError, match="finite"):
+            queries.move(tree, *args)
+    with pytest.raises(ValueError, match="finite"):
+        queries.floor_z(tree, bad, 128.0)
+    with pytest.raises(ValueError, match="finite"):
+        queries.line_of_sight(tree, (128, 128), (bad, 128))
+    with pytest.raises(ValueError, match="finite|both"):
+        queries.line_of_sight(tree, (128, 128), (200, 128), 41, bad)
+
+
+def test_points_far_outside_any_map_are_a_value_error():
+    with pytest.raises(ValueError, match="out of range"):
+        queries.move(two_rooms(), 1e300, 0.0, 1.0, 0.0, 0)
+
+
+@pytest.mark.parametrize("length", [1e4, 1e9, 1e300])
+def test_a_move_of_any_length_costs_at_most_the_map_in_sub_steps(length, monkeypatch):
+    tree = two_rooms(east_open=False)
+    steps = []                           # white box: count the sub-steps
+    one_step = queries._try_move
+    monkeypatch.setattr(queries, "_try_move", lambda *a: steps.append(1) or one_step(*a))
+    x, y = queries.move(tree, 128.0, 128.0, length, 0.3 * length, 0)
+    assert (x, y) == pytest.approx((256 - RADIUS, 256 - RADIUS), abs=1e-3)
+    extent = math.hypot(512, 256)
+    assert len(steps) <= math.ceil((extent + 2 * RADIUS) / RADIUS)
+
+
+def test_a_blocking_two_sided_wall_stops_the_player_but_not_sight():
+    vertices = [(0, 0), (0, 256), (256, 256), (256, 0), (512, 256), (512, 0)]
+    walls = [Wall(0, 1, 0), Wall(1, 2, 0), Wall(2, 3, 0, 1, blocks=True), Wall(3, 0, 0),
+             Wall(2, 4, 1), Wall(4, 5, 1), Wall(5, 3, 1)]
+    tree = compile_level(Level("fence", vertices, [Sector(0, 128), Sector(0, 128)], walls,
+                               Start(128, 128, 0)))
+    assert walk(tree, 128.0, 128.0, 10.0, 0.0, 40)[0] == pytest.approx(256 - RADIUS, abs=1e-3)
+    assert queries.line_of_sight(tree, (128, 128), (384, 128))

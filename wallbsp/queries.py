@@ -1,0 +1,453 @@
+"""Movement and sight over the world as it is now: DOOM's P_TryMove, P_SlideMove and
+P_CheckSight.
+
+Every function takes a *source*: a ``BSPTree`` (the level's own heights), a
+``WorldState`` or anything with one as ``.state`` (the game's world), resolved by
+``world.state_of``.  The tree's geometry is cached per tree; sector heights are read from
+the state and cached per ``state.version``, so a door that opens is walked and seen through
+at once.  No pygame, no state of our own.
+
+**The player** is a circle of ``radius`` (DOOM: 16) whose feet are at ``z_floor``.  A seg
+blocks it when
+
+- its wall is one-sided, or has the ``blocks`` flag (DOOM's ML_BLOCKING), or
+- the wall's opening is lower than ``headroom`` (DOOM: 56): ``min(ceilings) - max(floors)``
+  of the two sectors now; a closed door (floor >= ceiling) is the extreme case, or
+- the opening's bottom ``max(floors)`` is more than ``step`` (DOOM: 24) above ``z_floor``.
+
+Dropping down is never limited.  ``move`` never lets the circle come closer than ``radius`` to
+a blocking seg: each sub-step (no longer than the radius, so the near segs gathered for it
+are all that it can meet) sweeps the circle against the nearby blocking segs, stops it at the
+first contact, and slides the rest of the motion along the walls it touches (the component
+into a wall is projected out, P_SlideMove); when that makes no progress the two
+axis-separated moves are tried, as P_SlideMove's "stairstep" fallback does.  ``z_floor`` is
+fixed for the whole call, as DOOM keeps ``thing->z`` fixed across one tic's sub-moves, so one
+call climbs one step.
+
+**Bounded cost.**  A move is cut to the size of the map (the diagonal of the level's bounds
+plus two radii: a longer straight run leaves the map or ends against its walls), and stops
+as soon as a sub-step makes no progress (the next ones would repeat it exactly).  So a move
+costs at most ``map size / radius`` sub-steps whatever its length.  Non-finite numbers, and
+coordinates beyond ``MAX_COORDINATE``, are a ``ValueError``.
+
+**Which floor to pass.**  ``floor_z(source, x, y, radius)`` is DOOM's ``floorz``: the highest
+of the floor under the centre and the opening bottoms of the two-sided walls the circle
+overlaps, so a player half over a ledge stands on the ledge (``ceiling_z`` is the matching
+``ceilingz``).  Passing it keeps every position legal for the next move.  A lower value (the
+floor under the centre) also works: a wall the circle already overlaps can then be moved
+along or away from, never further into.
+
+**Near segs come from the tree**, not from a scan of every wall: the search prunes a subtree
+whose ``node_bbox`` is out of reach and, at each node, the side of the partition line the
+query circle cannot touch (the node's own segs lie on the line, so they are skipped too).
+
+**Sight** (``line_of_sight``): the segment from ``a`` to ``b`` is blocked by every wall it meets
+(closed segments: touching counts) that is one-sided or closed (``max(floors) >= min(ceilings)``,
+which covers a sector whose floor is at or above its ceiling).  ``blocks`` does not stop
+sight, as in DOOM.  With eye heights ``za``, ``zb`` the 3-D sight line must also pass
+strictly inside every two-sided wall's opening where it crosses it
+(``max(floors) < z < min(ceilings)``), as P_CheckSight does with its slopes.  Walls are
+tested with their exact integer ends, so the answer is the same as a check of the sight
+segment against every wall.
+"""
+from __future__ import annotations
+
+import math
+import weakref
+
+from .world import state_of
+
+__all__ = ["PLAYER_RADIUS", "MAX_STEP", "PLAYER_HEIGHT", "MAX_COORDINATE", "move",
+           "floor_z", "ceiling_z", "standing_heights", "line_of_sight"]
+
+PLAYER_RADIUS = 16
+MAX_STEP = 24
+PLAYER_HEIGHT = 56
+MAX_COORDINATE = 2.0 ** 24  # |x|, |y| of a query point: 16 times the largest map (SPEC §1)
+SKIN = 1e-4          # a contact stops this far outside the radius, so float error never
+#                      leaves the circle overlapping a wall it was stopped by
+_CONTACT = SKIN / 2  # within radius + SKIN + this, a wall counts as touched: slide, don't sweep
+_MAX_SLIDES = 4      # sweeps per sub-step: one per wall met, like P_SlideMove's three tries
+_TANGENT = 1e-12     # relative inward motion accepted as "along the wall" (float noise)
+
+_GEOMETRY: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+_HEIGHTS: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+
+
+# -- checked input ------------------------------------------------------------------------------
+
+def _finite(name, value, limit=None):
+    """``value`` itself if it is a finite number (within ``limit``); else a ValueError."""
+    try:
+        ok = math.isfinite(value)
+    except (TypeError, OverflowError):
+        ok = False
+    if not ok:
+        raise ValueError(f"{name} must be a finite number, not {value!r}")
+    if limit is not None and abs(value) > limit:
+        raise ValueError(f"{name} is out of range (|{name}| <= {limit:g}): {value!r}")
+    return value
+
+
+def _point(name, x, y):
+    return _finite(f"{name} x", x, MAX_COORDINATE), _finite(f"{name} y", y, MAX_COORDINATE)
+
+
+# -- per-tree geometry, per-version heights (Python lists: per-node work must not touch
+#    numpy scalars) --------------------------------------------------------------------------
+
+class _Geometry:
+    """The tree's node and seg arrays as lists, and each wall's ends, sectors and flags."""
+
+    def __init__(self, tree):
+        level = tree.level
+        self.root = tree.root
+        self.lines = tree.node_line.tolist()
+        self.norms = [math.hypot(a, b) for a, b, _ in self.lines]
+        self.child = tree.node_child.tolist()
+        self.node_segs = tree.node_segs.tolist()
+        self.bbox = tree.node_bbox.tolist()
+        self.seg_xy = tree.seg_xy.tolist()
+        self.seg_wall = tree.seg_wall.tolist()
+        self.wall_ends = [level.vertices[w.v1] + level.vertices[w.v2] for w in level.walls]
+        self.front = [w.front for w in level.walls]
+        self.back = [-1 if w.back is None else w.back for w in level.walls]
+        # a one-sided wall, or a two-sided one flagged ``blocks``, stops the player
+        self.impassable = [w.back is None or w.blocks for w in level.walls]
+        xs = [v[0] for v in level.vertices] or [0]
+        ys = [v[1] for v in level.vertices] or [0]
+        self.extent = math.hypot(max(xs) - min(xs), max(ys) - min(ys))
+
+
+class _Heights:
+    """The state's sector floors and ceilings as lists, for one ``version``."""
+
+    def __init__(self, state):
+        self.version = state.version
+        self.floors = state.floor.tolist()
+        self.ceilings = state.ceiling.tolist()
+
+    def opening(self, geo, wall):
+        """``(bottom, top)`` of a wall's opening now; a one-sided wall has none (+inf, -inf)."""
+        back = geo.back[wall]
+        if back < 0:
+            return math.inf, -math.inf
+        front = geo.front[wall]
+        return (max(self.floors[front], self.floors[back]),
+                min(self.ceilings[front], self.ceilings[back]))
+
+
+def _world(source):
+    """``(tree, geometry, heights)`` for a tree, WorldState or world."""
+    state = state_of(source)
+    tree = state.tree
+    geo = _GEOMETRY.get(tree)
+    if geo is None:
+        geo = _GEOMETRY[tree] = _Geometry(tree)
+    heights = _HEIGHTS.get(state)
+    if heights is None or heights.version != state.version:
+        heights = _HEIGHTS[state] = _Heights(state)
+    return tree, geo, heights
+
+
+# -- tree searches --------------------------------------------------------------------------------
+
+def _segs_near(geo, x, y, reach):
+    """Seg ids that may come within ``reach`` of (x, y) (a superset; the caller measures)."""
+    found, stack = [], [geo.root]
+    while stack:
+        node = stack.pop()
+        if node < 0:
+            continue
+        x0, y0, x1, y1 = geo.bbox[node]
+        if x < x0 - reach or x > x1 + reach or y < y0 - reach or y > y1 + reach:
+            continue
+        a, b, c = geo.lines[node]
+        s = (a * x + b * y + c) / geo.norms[node]
+        if s > reach:                 # the circle is wholly behind the line
+            stack.append(geo.child[node][1])
+        elif s < -reach:              # wholly in front of it
+            stack.append(geo.child[node][0])
+        else:
+            found.extend(range(*geo.node_segs[node]))
+            stack.extend(geo.child[node])
+    return found
+
+
+def _walls_along(geo, ax, ay, bx, by):
+    """Walls with a seg that may meet the segment a-b (a superset; the caller tests exactly)."""
+    lo_x, hi_x, lo_y, hi_y = min(ax, bx), max(ax, bx), min(ay, by), max(ay, by)
+    found, stack = set(), [geo.root]
+    while stack:
+        node = stack.pop()
+        if node < 0:
+            continue
+        x0, y0, x1, y1 = geo.bbox[node]
+        # the boxes hold rounded split points: a hair of margin keeps the pruning safe
+        if hi_x < x0 - 1e-6 or lo_x > x1 + 1e-6 or hi_y < y0 - 1e-6 or lo_y > y1 + 1e-6:
+            continue
+        a, b, c = geo.lines[node]
+        sa, sb = a * ax + b * ay + c, a * bx + b * by + c
+        if sa > 0 and sb > 0:
+            stack.append(geo.child[node][1])
+        elif sa < 0 and sb < 0:
+            stack.append(geo.child[node][0])
+        else:
+            start, stop = geo.node_segs[node]
+            found.update(geo.seg_wall[start:stop])
+            stack.extend(geo.child[node])
+    return found
+
+
+# -- movement -------------------------------------------------------------------------------------
+
+def move(source, x, y, dx, dy, z_floor, radius=PLAYER_RADIUS, step=MAX_STEP,
+         headroom=PLAYER_HEIGHT):
+    """Move a player circle from (x, y) by (dx, dy), its feet at ``z_floor``; return the
+    new (x, y).  It stops ``radius`` short of blocking walls and slides along them."""
+    x, y = _point("move: start", x, y)
+    dx, dy = _finite("move: dx", dx), _finite("move: dy", dy)
+    for name, value in (("z_floor", z_floor), ("step", step), ("headroom", headroom)):
+        _finite(f"move: {name}", value)
+    if not _finite("move: radius", radius) > 0:
+        raise ValueError(f"move: radius must be positive, not {radius!r}")
+    _tree, geo, heights = _world(source)
+    length = math.hypot(dx, dy)
+    if length == 0:
+        return x, y
+    limit = geo.extent + 2 * radius
+    if length > limit:                # bounded cost: no run longer than the map
+        dx, dy, length = dx * limit / length, dy * limit / length, limit
+    pieces = max(1, math.ceil(length / radius))   # no sub-step longer than the radius
+    sx, sy = dx / pieces, dy / pieces
+    rules = (z_floor, radius, step, headroom)
+    for _ in range(pieces):
+        nx, ny = _try_move(geo, heights, x, y, sx, sy, rules)
+        if nx == x and ny == y:
+            break                     # stuck: every further sub-step would be this one
+        x, y = nx, ny
+    return x, y
+
+
+def _try_move(geo, heights, x, y, dx, dy, rules):
+    """One sub-step: slide; if stuck, try the x and y parts alone (P_SlideMove's fallback)."""
+    radius = rules[1]
+    walls = _blocking_segs(geo, heights, x, y, math.hypot(dx, dy) + radius + 2 * SKIN, rules)
+    if not walls:
+        return x + dx, y + dy
+    big = radius + SKIN
+    nx, ny = _slide(x, y, dx, dy, walls, big)
+    if (nx - x) ** 2 + (ny - y) ** 2 < 1e-18:
+        nx, ny = _slide(x, y, dx, 0.0, walls, big)
+        nx, ny = _slide(nx, ny, 0.0, dy, walls, big)
+    return nx, ny
+
+
+def _blocking_segs(geo, heights, x, y, reach, rules):
+    """Ends of the segs within reach that the player cannot cross (module docstring)."""
+    z_floor, _radius, step, headroom = rules
+    out = []
+    for seg in _segs_near(geo, x, y, reach):
+        wall = geo.seg_wall[seg]
+        if geo.impassable[wall]:
+            out.append(geo.seg_xy[seg])
+            continue
+        bottom, top = heights.opening(geo, wall)
+        if top - bottom < headroom or bottom - z_floor > step:
+            out.append(geo.seg_xy[seg])
+    return out
+
+
+def _slide(x, y, dx, dy, walls, big):
+    """Sweep the circle (radius ``big``) by (dx, dy): at each contact, keep the motion's
+    component along the walls touched and go on with what is left."""
+    for _ in range(_MAX_SLIDES):
+        normals, free = _contacts(x, y, walls, big)
+        dx, dy = _project_out(dx, dy, normals)
+        if dx * dx + dy * dy < 1e-18:
+            break
+        t = _first_hit(x, y, dx, dy, free, big)
+        if t >= 1:
+            return x + dx, y + dy
+        x, y = x + t * dx, y + t * dy
+        dx, dy = dx * (1 - t), dy * (1 - t)
+    return x, y
+
+
+def _contacts(x, y, walls, big):
+    """Split the walls into the normals of those touched (pointing at the centre) and the
+    rest, which are swept against."""
+    normals, free = [], []
+    for wall in walls:
+        qx, qy = _closest_point(x, y, *wall)
+        dist = math.hypot(x - qx, y - qy)
+        if dist < big + _CONTACT:
+            if dist > 0:
+                normals.append(((x - qx) / dist, (y - qy) / dist))
+            else:                      # centre on the wall: only its line's normal makes sense
+                normals.extend(_line_normals(*wall))
+        else:
+            free.append(wall)
+    return normals, free
+
+
+def _line_normals(x1, y1, x2, y2):
+    length = math.hypot(x2 - x1, y2 - y1)
+    nx, ny = (y1 - y2) / length, (x2 - x1) / length
+    return [(nx, ny), (-nx, -ny)]
+
+
+def _project_out(dx, dy, normals):
+    """Remove the motion's components into the touched walls (alternating projections);
+    if no direction satisfies every wall (a corner), there is no motion."""
+    if not normals:
+        return dx, dy
+    for _ in range(4):
+        moved = False
+        for nx, ny in normals:
+            k = dx * nx + dy * ny
+            if k < 0:
+                dx, dy, moved = dx - k * nx, dy - k * ny, True
+        if not moved:
+            break
+    size = math.hypot(dx, dy)
+    if any(dx * nx + dy * ny < -_TANGENT * size for nx, ny in normals):
+        return 0.0, 0.0
+    return dx, dy
+
+
+def _first_hit(x, y, dx, dy, walls, big):
+    """The least t in [0, 1] at which the moving circle touches a wall, or inf."""
+    t = math.inf
+    for wall in walls:
+        t = min(t, _sweep_time(x, y, dx, dy, *wall, big))
+    return t
+
+
+def _sweep_time(px, py, dx, dy, x1, y1, x2, y2, big):
+    """First t >= 0 at which the centre p + t*d is ``big`` from the segment (its capsule),
+    for a centre that starts outside the capsule; inf if never."""
+    t = math.inf
+    ex, ey = x2 - x1, y2 - y1
+    length = math.hypot(ex, ey)
+    nx, ny = -ey / length, ex / length
+    h0 = (px - x1) * nx + (py - y1) * ny       # signed distance to the wall's line
+    hd = dx * nx + dy * ny
+    if h0 * hd < 0 and abs(h0) >= big:          # the flat side, approached from outside
+        s = (abs(h0) - big) / abs(hd)
+        along = ((px + s * dx - x1) * ex + (py + s * dy - y1) * ey) / length
+        if 0 <= along <= length:
+            t = s
+    for ax, ay in ((x1, y1), (x2, y2)):         # the round ends
+        t = min(t, _circle_time(px - ax, py - ay, dx, dy, big))
+    return t
+
+
+def _circle_time(mx, my, dx, dy, big):
+    """First t >= 0 with |m + t*d| = big, for |m| >= big; inf if never."""
+    b = mx * dx + my * dy
+    if b >= 0:
+        return math.inf                         # moving away from the end
+    a = dx * dx + dy * dy
+    c = mx * mx + my * my - big * big
+    disc = b * b - a * c
+    if disc < 0:
+        return math.inf
+    # c / (-b + sqrt) is the smaller root without the cancellation of (-b - sqrt) / a
+    return max(0.0, c / (-b + math.sqrt(disc)))
+
+
+def _closest_point(px, py, x1, y1, x2, y2):
+    ex, ey = x2 - x1, y2 - y1
+    t = ((px - x1) * ex + (py - y1) * ey) / (ex * ex + ey * ey)
+    t = min(1.0, max(0.0, t))
+    return x1 + t * ex, y1 + t * ey
+
+
+# -- where a player stands ------------------------------------------------------------------------
+
+def floor_z(source, x, y, radius=PLAYER_RADIUS):
+    """DOOM's ``floorz`` at (x, y): the floor under the centre now, raised to the opening
+    bottom of every two-sided wall the circle overlaps; None outside the map."""
+    heights = standing_heights(source, x, y, radius)
+    return None if heights is None else heights[0]
+
+
+def ceiling_z(source, x, y, radius=PLAYER_RADIUS):
+    """DOOM's ``ceilingz`` at (x, y): the ceiling over the centre now, lowered to the
+    opening top of every two-sided wall the circle overlaps; None outside the map."""
+    heights = standing_heights(source, x, y, radius)
+    return None if heights is None else heights[1]
+
+
+def standing_heights(source, x, y, radius=PLAYER_RADIUS):
+    """``(floorz, ceilingz)`` of a circle at (x, y) (``floor_z``, ``ceiling_z``), or None
+    outside the map."""
+    x, y = _point("floor_z: point", x, y)
+    _finite("floor_z: radius", radius)
+    tree, geo, heights = _world(source)
+    sector = tree.locate(x, y)
+    if sector is None:
+        return None
+    bottom, top = heights.floors[sector], heights.ceilings[sector]
+    for seg in _segs_near(geo, x, y, radius):
+        wall = geo.seg_wall[seg]
+        if geo.back[wall] >= 0:
+            qx, qy = _closest_point(x, y, *geo.seg_xy[seg])
+            if math.hypot(x - qx, y - qy) < radius:
+                low, high = heights.opening(geo, wall)
+                bottom, top = max(bottom, low), min(top, high)
+    return bottom, top
+
+
+# -- sight ----------------------------------------------------------------------------------------
+
+def line_of_sight(source, a, b, za=None, zb=None) -> bool:
+    """Whether (x, y) point ``b`` can be seen from ``a`` (module docstring).  With eye heights
+    ``za`` and ``zb`` (absolute, both or neither), openings are also checked in height."""
+    if (za is None) != (zb is None):
+        raise ValueError("line_of_sight: give both eye heights or neither")
+    (ax, ay), (bx, by) = _point("line_of_sight: a", *a), _point("line_of_sight: b", *b)
+    if za is not None:
+        za, zb = _finite("line_of_sight: za", za), _finite("line_of_sight: zb", zb)
+    _tree, geo, heights = _world(source)
+    for wall in _walls_along(geo, ax, ay, bx, by):
+        crossing = _crossing(ax, ay, bx, by, *geo.wall_ends[wall])
+        if crossing is None:
+            continue
+        bottom, top = heights.opening(geo, wall)
+        if bottom >= top:
+            return False
+        if za is not None and not all(bottom < za + t * (zb - za) < top for t in crossing):
+            return False
+    return True
+
+
+def _orient(ax, ay, bx, by, cx, cy):
+    """Twice the signed area of abc (exact for integer input)."""
+    return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
+
+
+def _crossing(ax, ay, bx, by, cx, cy, dx, dy):
+    """Where the closed segments ab and cd meet, as parameters t along ab: one t, or the two
+    ends of the shared stretch when they are collinear; None if they do not meet."""
+    o1, o2 = _orient(ax, ay, bx, by, cx, cy), _orient(ax, ay, bx, by, dx, dy)
+    o3, o4 = _orient(cx, cy, dx, dy, ax, ay), _orient(cx, cy, dx, dy, bx, by)
+    if (o1 > 0 and o2 > 0) or (o1 < 0 and o2 < 0) or (o3 > 0 and o4 > 0) or (o3 < 0 and o4 < 0):
+        return None
+    if o3 != o4:
+        return (o3 / (o3 - o4),)
+    return _collinear_overlap(ax, ay, bx, by, cx, cy, dx, dy)
+
+
+def _collinear_overlap(ax, ay, bx, by, cx, cy, dx, dy):
+    """The shared stretch of two collinear segments, as t along ab, or None."""
+    ex, ey = bx - ax, by - ay
+    length2 = ex * ex + ey * ey
+    if length2 == 0:                  # a point sight line: it meets cd iff it lies on it
+        inside = min(cx, dx) <= ax <= max(cx, dx) and min(cy, dy) <= ay <= max(cy, dy)
+        return (0.0,) if inside else None
+    tc = ((cx - ax) * ex + (cy - ay) * ey) / length2
+    td = ((dx - ax) * ex + (dy - ay) * ey) / length2
+    lo, hi = max(0.0, min(tc, td)), min(1.0, max(tc, td))
+    return (lo, hi) if lo <= hi else None
