@@ -26,7 +26,7 @@ def _bad(path, value):
 
 BAD_LEVELS = {   # name: (level, the JSON path the message must name)
     "format": (_bad(["format"], "doom"), "format"),
-    "version": (_bad(["version"], 2), "version"),
+    "version": (_bad(["version"], 3), "version"),
     "missing_walls": (_bad(["walls"], DELETE), "walls"),
     "vertex_index": (_bad(["walls", 2, "v2"], 99), "walls[2].v2"),
     "sector_index": (_bad(["walls", 1, "front"], 3), "walls[1].front"),

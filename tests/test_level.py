@@ -13,10 +13,9 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from conftest import DELETE, edited
-from wallbsp.level import (
-    MAX_REPORTED, Level, LevelError, Sector, Start, Wall, dumps_level, find_wall_conflicts,
-    level_from_dict, load_level, loads_level,
-)
+from wallbsp.conflicts import find_wall_conflicts
+from wallbsp.level import Level, LevelError, Sector, Start, Wall
+from wallbsp.levelio import MAX_REPORTED, dumps_level, level_from_dict, load_level, loads_level
 
 LIMIT = 2 ** 20
 SOURCE = "t.json"
@@ -178,7 +177,7 @@ def test_a_utf8_byte_order_mark_is_accepted(tmp_path):
 
 def test_load_level_names_the_file_as_given(tmp_path):
     path = tmp_path / "bad.json"
-    path.write_text(json.dumps(square_room(version=2)))
+    path.write_text(json.dumps(square_room(version=3)))
     with pytest.raises(LevelError) as info:
         load_level(str(path))
     assert str(info.value).startswith(f"{path}: version: ")
@@ -200,9 +199,9 @@ def test_format_must_be_wallbsp_level(value):
 
 
 @pytest.mark.parametrize("value, fragment", [
-    (2, "unsupported version 2"), (0, "unsupported version 0"), ("1", 'the string "1"'),
+    (3, "unsupported version 3"), (0, "unsupported version 0"), ("1", 'the string "1"'),
     (True, "got true"), (1.0, "the float 1.0")])
-def test_version_must_be_1(value, fragment):
+def test_version_must_be_1_or_2(value, fragment):
     assert_error_at(error_of(square_room(version=value)), "version", fragment)
 
 

@@ -7,7 +7,8 @@ import numpy as np
 from hypothesis import HealthCheck, given, settings, strategies as st
 
 from wallbsp import Camera, compile_level, render
-from wallbsp.level import LevelError, level_from_dict
+from wallbsp.level import LevelError
+from wallbsp.levelio import level_from_dict
 
 from conftest import ROOT
 

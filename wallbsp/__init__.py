@@ -9,7 +9,8 @@ import os
 os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
 
 from .build import DEFAULT_CANDIDATES, compile_level
-from .level import Level, LevelError, load_level
+from .level import Level, LevelError
+from .levelio import load_level
 from .rendering import Camera, Frame, render
 from .tree import BSPTree, TreeError, load_tree
 

@@ -40,7 +40,7 @@ def _is_tree_file(path) -> bool:
 
 def load_source(spec: str, strict=False):
     """A Level from a level file or ``WAD:MAP``; warnings go to stderr."""
-    from .level import load_level
+    from .levelio import load_level
     from . import wad
     wad_spec = wad.parse_wad_spec(spec)
     level = (wad.load_wad_level(*wad_spec, strict=strict) if wad_spec

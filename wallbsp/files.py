@@ -1,10 +1,77 @@
-"""Writing files so that nothing is ever half-written: a temporary file in the same
-folder, then an atomic rename.  Every file wallbsp writes goes through here."""
+"""Files in and out.  Writing: nothing is ever half-written (a temporary file in the same
+folder, then an atomic rename); every file wallbsp writes goes through ``write_atomically``.
+Reading: ``read_input`` reads a user's file, or standard input for ``-``, refusing what is
+not a regular file (a FIFO, a device such as /dev/zero, a directory) without blocking on
+it, and anything larger than the caller's limit; every loader of user files uses it."""
 from __future__ import annotations
 
 import os
+import stat
+import sys
 import tempfile
 from pathlib import Path
+
+STDIN = "-"
+
+
+class InputError(ValueError):
+    """A file that cannot be read as input; ``reason`` says why without naming the file
+    (each loader names it in its own format), ``str()`` names it too."""
+
+    def __init__(self, path, reason: str):
+        super().__init__(f"{path}: {reason}")
+        self.path = str(path)
+        self.reason = reason
+
+
+def read_input(path, limit: int) -> bytes:
+    """All the bytes of the regular file at ``path`` (``"-"``: standard input), at most
+    ``limit`` of them; ``InputError`` otherwise."""
+    if os.fspath(path) == STDIN:
+        return _read_capped(sys.stdin.buffer, STDIN, limit)
+    try:
+        _check_regular(path, os.stat(path).st_mode)   # stat never blocks, open may
+        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0)
+                     | getattr(os, "O_NOCTTY", 0) | getattr(os, "O_BINARY", 0))
+    except FileNotFoundError:
+        raise InputError(path, "no such file") from None
+    except OSError as err:
+        raise InputError(path, f"cannot read: {err.strerror or err}") from None
+    with os.fdopen(fd, "rb") as f:
+        # the path may have been replaced between stat and open: check what was opened
+        info = os.fstat(f.fileno())
+        _check_regular(path, info.st_mode)
+        if info.st_size > limit:
+            raise InputError(path, _too_big(info.st_size, limit))
+        return _read_capped(f, path, limit)
+
+
+def _check_regular(path, mode: int) -> None:
+    if stat.S_ISREG(mode):
+        return
+    if stat.S_ISDIR(mode):
+        raise InputError(path, "is a directory, not a file")
+    kind = ("a FIFO (named pipe)" if stat.S_ISFIFO(mode)
+            else "a device" if stat.S_ISCHR(mode) or stat.S_ISBLK(mode)
+            else "a socket" if stat.S_ISSOCK(mode) else "not a regular file")
+    raise InputError(path, f"is {kind}, not a regular file; refusing to read it")
+
+
+def _read_capped(stream, path, limit: int) -> bytes:
+    try:
+        data = stream.read(limit + 1)
+    except OSError as err:
+        raise InputError(path, f"cannot read: {err.strerror or err}") from None
+    if data is None:        # a non-blocking read with nothing there yet
+        raise InputError(path, "not ready to be read (a FIFO or device?)")
+    if len(data) > limit:
+        raise InputError(path, _too_big(None, limit))
+    return data
+
+
+def _too_big(size: int | None, limit: int) -> str:
+    have = f"{size} bytes" if size is not None else "more"
+    return f"too large ({have}; the limit is {limit} bytes)"
 
 
 def write_atomically(path, data: bytes) -> None:

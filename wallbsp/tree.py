@@ -298,7 +298,7 @@ class BSPTree:
     # -- files ------------------------------------------------------------------------------
     def save(self, path) -> None:
         """Write the tree atomically; the same tree always gives the same bytes."""
-        from .level import dumps_level
+        from .levelio import dumps_level
         header = {"format": TREE_FORMAT, "version": TREE_VERSION,
                   "level_sha256": self.level.content_hash(),
                   "candidates": self.candidates, "seed": self.seed}
@@ -324,7 +324,7 @@ def _zip_bytes(members) -> bytes:
 
 def load_tree(path) -> BSPTree:
     """Read a compiled tree; a truncated, corrupted or foreign file raises TreeError."""
-    from .level import level_from_dict
+    from .levelio import level_from_dict
     path = os.fspath(path)
     try:
         with zipfile.ZipFile(path) as zf:
