@@ -1,7 +1,7 @@
 """DOOM-format maps imported as levels: the mapping, the colours, the errors, and Freedoom.
 
-The small WADs are written here by a tiny writer (header, lumps, directory), so every path of
-the importer is exercised with bytes whose meaning the test states."""
+The small WADs are written here (lumps built by hand, packed by ``wallbsp.wad.wad_bytes``), so
+every path of the importer is exercised with bytes whose meaning the test states."""
 from __future__ import annotations
 
 import itertools
@@ -16,23 +16,9 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from wallbsp.level import Level, LevelError
-from wallbsp.wad import GREY, SKY_BLUE, import_wad, load_wad_level, parse_wad_spec
+from wallbsp.wad import GREY, SKY_BLUE, import_wad, load_wad_level, parse_wad_spec, wad_bytes
 
 NONE = 0xFFFF
-
-# ---------------------------------------------------------------------------------------------
-# A tiny WAD writer
-
-
-def wad_bytes(lumps: list[tuple[str, bytes]], magic: bytes = b"PWAD") -> bytes:
-    body, entries = bytearray(), []
-    for name, raw in lumps:
-        entries.append((12 + len(body), len(raw), name))
-        body += raw
-    directory = b"".join(struct.pack("<ii8s", pos, size, name.encode())
-                         for pos, size, name in entries)
-    return struct.pack("<4sii", magic, len(entries), 12 + len(body)) + bytes(body) + directory
-
 
 # Palette 0: the indices the pictures below use, everything else black.
 RED, BLUE, GREEN, DARK = 1, 2, 3, 4
@@ -192,8 +178,9 @@ def raises_one_line(match: str):
 # Mapping linedefs, sidedefs, sectors and things
 
 def test_level_dict_has_the_level_format(two_rooms):
-    assert two_rooms["format"] == "wallbsp-level" and two_rooms["version"] == 1
+    assert two_rooms["format"] == "wallbsp-level" and two_rooms["version"] == 2
     assert two_rooms["name"] == "MAP01 (test.wad)"
+    assert two_rooms["resources"] == [os.path.abspath("test.wad")]   # loads from anywhere
 
 
 def test_right_sidedef_is_front_and_left_is_back(two_rooms):
@@ -489,7 +476,8 @@ def test_malformed_texture1_gives_grey_walls_and_a_warning():
     path.write_bytes(wad_bytes(Map().lumps() + lumps))
     notes = []
     level = import_wad(path, "MAP01", warnings=notes)
-    assert any(n.startswith("oddtex.wad: TEXTURE1: malformed") for n in notes)
+    assert "oddtex.wad: TEXTURE1: texture 0 at offset 24 lies past the end of the lump " \
+           "(30 bytes); grey used" in notes
     assert level["walls"][0]["color"] == GREY
     assert level["sectors"][0]["floor_color"] == COLOUR["FLOOR1"]     # flats are unaffected
 

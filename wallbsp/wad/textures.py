@@ -1,0 +1,168 @@
+"""One WAD as a source of pictures: its wall textures, flats, sprites, PLAYPAL and COLORMAP,
+decoded on first use and kept for as long as the WAD's directory is cached (``open_wad``).
+
+``wad_textures(path)`` gives the ``WadTextures`` of a WAD file (the same object while the file
+is unchanged). Its lookups take upper-case names and return a ``Picture`` or None:
+``wall(name)`` (TEXTURE1/TEXTURE2 composites of PNAMES patches; the first definition of a name
+wins), ``flat(name)`` (F_START..F_END and FF_START..FF_END, nested F1_/F2_ markers included),
+``sprite(name)`` (S_START..S_END and SS_START..SS_END); ``has_wall/has_flat/has_sprite`` look
+names up without decoding; ``palette`` and ``colormap`` are None when the WAD has none.
+
+Decoded pictures of one WAD may hold at most ``BUDGET_BYTES``: a crafted WAD of a few MB that
+names thousands of large pictures is refused with one line rather than filling memory.
+"""
+from __future__ import annotations
+
+from functools import cached_property
+
+import numpy as np
+
+from .archive import open_wad
+from .graphics import (Picture, ResourceError, TextureDef, composite, decode_colormap,
+                       decode_flat, decode_palette, decode_picture, decode_pnames,
+                       decode_texture_lump)
+
+BUDGET_BYTES = 160 << 20
+FLAT_MARKERS = (("F_START", "FF_START"), ("F_END", "FF_END"))
+SPRITE_MARKERS = (("S_START", "SS_START"), ("S_END", "SS_END"))
+
+
+def wad_textures(path) -> "WadTextures":
+    """The pictures of the WAD at ``path``, shared while the file is unchanged."""
+    with open_wad(path) as wad:
+        source = wad.extras.get("textures")
+        if source is None:
+            source = wad.extras["textures"] = WadTextures(path, wad.label, wad.directory)
+        return source
+
+
+class WadTextures:
+    def __init__(self, path, label: str, directory):
+        self.path, self.label, self.directory = path, label, directory
+        self._pictures: dict[tuple[str, str], Picture | None] = {}
+        self.decoded_bytes = 0
+
+    # -- names ------------------------------------------------------------------------------
+    @cached_property
+    def _flats(self) -> dict[str, int]:
+        with self._open() as wad:
+            return wad.between(*FLAT_MARKERS)
+
+    @cached_property
+    def _sprites(self) -> dict[str, int]:
+        with self._open() as wad:
+            return wad.between(*SPRITE_MARKERS)
+
+    @cached_property
+    def _pnames(self) -> list[str]:
+        with self._open() as wad:
+            raw = wad.lump("PNAMES")
+        return [] if raw is None else decode_pnames(raw, f"{self.label}: PNAMES")
+
+    @cached_property
+    def _textures(self) -> dict[str, TextureDef]:
+        found: dict[str, TextureDef] = {}
+        with self._open() as wad:
+            for lump in ("TEXTURE1", "TEXTURE2"):
+                raw = wad.lump(lump)
+                if raw is not None:
+                    for name, tdef in decode_texture_lump(raw, f"{self.label}: {lump}").items():
+                        found.setdefault(name, tdef)
+        return found
+
+    def wall_names(self) -> list[str]:
+        return list(self._textures)
+
+    def flat_names(self) -> list[str]:
+        return list(self._flats)
+
+    def sprite_names(self) -> list[str]:
+        return list(self._sprites)
+
+    def has_wall(self, name: str) -> bool:
+        return name in self._textures
+
+    def has_flat(self, name: str) -> bool:
+        return name in self._flats
+
+    def has_sprite(self, name: str) -> bool:
+        return name in self._sprites
+
+    # -- pictures ---------------------------------------------------------------------------
+    def wall(self, name: str) -> Picture | None:
+        tdef = self._textures.get(name)
+        if tdef is None:
+            return None
+        return self._cached("wall", name, lambda: composite(tdef, self._pnames, self._patch))
+
+    def flat(self, name: str) -> Picture | None:
+        return self._lump_picture("flat", name, self._flats, decode_flat)
+
+    def sprite(self, name: str) -> Picture | None:
+        return self._lump_picture("sprite", name, self._sprites, decode_picture)
+
+    def _patch(self, name: str) -> Picture | None:
+        # Patches are found by name anywhere in the WAD (the last lump of the name), as
+        # W_CheckNumForName finds them.
+        with self._open() as wad:
+            return self._lump_picture("patch", name, wad.index, decode_picture)
+
+    def _lump_picture(self, kind: str, name: str, lumps: dict[str, int], decode):
+        i = lumps.get(name)
+        if i is None:
+            return None
+
+        def read():
+            with self._open() as wad:
+                return decode(wad.read(i), f"{self.label}: {wad.names[i]}")
+        return self._cached(kind, name, read)
+
+    def _cached(self, kind: str, name: str, make):
+        key = (kind, name)
+        if key not in self._pictures:
+            picture = make()
+            self.decoded_bytes += picture.nbytes if picture is not None else 0
+            if self.decoded_bytes > BUDGET_BYTES:
+                raise ResourceError(f"{self.label}: {name}: decoded pictures exceed "
+                                    f"{BUDGET_BYTES >> 20} MB; refused")
+            self._pictures[key] = picture
+        return self._pictures[key]
+
+    @cached_property
+    def palette(self) -> np.ndarray | None:
+        with self._open() as wad:
+            raw = wad.lump("PLAYPAL")
+        return None if raw is None else decode_palette(raw, f"{self.label}: PLAYPAL")
+
+    @cached_property
+    def colormap(self) -> np.ndarray | None:
+        with self._open() as wad:
+            raw = wad.lump("COLORMAP")
+        return None if raw is None else decode_colormap(raw, f"{self.label}: COLORMAP")
+
+    def _open(self):
+        return _Checked(self)
+
+
+class _Checked:
+    """``open_wad`` for a source: the file must still be the one the source indexed."""
+
+    def __init__(self, source: WadTextures):
+        self.source = source
+        self.context = open_wad(source.path)
+
+    def __enter__(self):
+        wad = self.context.__enter__()
+        if not _same(wad.directory, self.source.directory):
+            self.context.__exit__(None, None, None)
+            raise ResourceError(f"{self.source.label}: changed on disk while in use")
+        return wad
+
+    def __exit__(self, *exc):
+        return self.context.__exit__(*exc)
+
+
+def _same(a, b) -> bool:
+    # the directory may have been dropped from the cache and read again: same file, same lumps
+    return a is b or (a.names == b.names and np.array_equal(a.pos, b.pos)
+                      and np.array_equal(a.size, b.size))
