@@ -27,6 +27,11 @@ class WorldState:
         self.ceiling = np.array([s.ceiling for s in sectors], dtype=np.float64)
         self.light = np.array([s.light for s in sectors], dtype=np.float64)
         self.version = 0
+        # what the game's rules change besides heights (not geometry: ``version`` stays)
+        self.wall_x_offset = np.zeros(len(tree.level.walls))  # + front side's (scrolling)
+        self.wall_textures: dict = {}    # (wall, side 0/1, part) -> texture now (switches)
+        self.floor_textures: dict = {}   # sector -> floor flat now (floors that change it)
+        self.texture_version = 0         # incremented when a texture above changes
 
     def sector(self, i: int):
         """``(floor, ceiling, light)`` of sector ``i`` now."""
@@ -41,6 +46,31 @@ class WorldState:
         if light is not None:
             self.light[i] = light
         self.version += 1
+
+    def set_light(self, i: int, light) -> None:
+        """Change sector ``i``'s light only (flickering lights): height caches stay valid."""
+        self.light[i] = light
+
+    def wall_texture(self, wall: int, side: int, part: str):
+        """The texture on ``part`` (upper/middle/lower) of ``wall``'s side 0 (front) or 1
+        now: a switch's pressed texture, else the level's (None: no texture)."""
+        if (wall, side, part) in self.wall_textures:
+            return self.wall_textures[(wall, side, part)]
+        w = self.tree.level.walls[wall]
+        textures = w.front_side if side == 0 else w.back_side
+        return None if textures is None else getattr(textures, part)
+
+    def set_wall_texture(self, wall: int, side: int, part: str, name) -> None:
+        self.wall_textures[(wall, side, part)] = name
+        self.texture_version += 1
+
+    def floor_texture(self, i: int):
+        """Sector ``i``'s floor flat now."""
+        return self.floor_textures.get(i, self.tree.level.sectors[i].floor_texture)
+
+    def set_floor_texture(self, i: int, name) -> None:
+        self.floor_textures[i] = name
+        self.texture_version += 1
 
 
 _STATIC: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
