@@ -28,14 +28,8 @@ class _Parser(argparse.ArgumentParser):
 
 
 # -- loading what the user named ------------------------------------------------------------
-def _is_tree_file(path) -> bool:
-    if path.endswith(".wbsp"):
-        return True
-    try:
-        with open(path, "rb") as f:
-            return f.read(4) == b"PK\x03\x04"
-    except OSError:
-        return False
+def _is_tree(spec: str, data: bytes) -> bool:
+    return spec.endswith(".wbsp") or data[:4] == b"PK\x03\x04"
 
 
 def load_source(spec: str, strict=False):
@@ -45,6 +39,10 @@ def load_source(spec: str, strict=False):
     wad_spec = wad.parse_wad_spec(spec)
     level = (wad.load_wad_level(*wad_spec, strict=strict) if wad_spec
              else load_level(spec, strict=strict))
+    return _warned(level)
+
+
+def _warned(level):
     for warning in level.warnings:
         print(f"warning: {warning}", file=sys.stderr)
     return level
@@ -53,12 +51,21 @@ def load_source(spec: str, strict=False):
 def load_any(spec: str, args, strict=False):
     """A BSPTree from a compiled tree, a level file or ``WAD:MAP`` (compiled in memory)."""
     from .build import compile_level
+    from .levelio import STDIN_NAME, input_name, level_from_input, read_level_input
     from .tree import load_tree
-    if not os.path.exists(spec) or not _is_tree_file(spec):
-        level = load_source(spec, strict=strict)
-        return compile_level(level, getattr(args, "candidates", None),
-                             getattr(args, "seed", 0), progress=_Progress())
-    return load_tree(spec)
+    if spec != "-" and not os.path.exists(spec):
+        level = load_source(spec, strict=strict)      # WAD:MAP, or "no such file"
+    else:
+        # read once (standard input cannot be read twice), then decide what it is
+        data = read_level_input(spec)
+        if _is_tree(spec, data):
+            if input_name(spec) == STDIN_NAME:
+                raise LevelError(f"{STDIN_NAME}: (root): a compiled tree is read from its "
+                                 f"file, not from standard input")
+            return load_tree(spec)
+        level = _warned(level_from_input(data, spec, strict=strict))
+    return compile_level(level, getattr(args, "candidates", None),
+                         getattr(args, "seed", 0), progress=_Progress())
 
 
 class _Progress:
@@ -163,7 +170,7 @@ def cmd_draw(args):
 
 def camera_for(tree, args):
     """The camera the user asked for; anything left out comes from the level's start."""
-    from .rendering import Camera
+    from .camera import Camera
     start = tree.level.start
     x, y = args.at if args.at else (start.x, start.y)
     angle = start.angle if args.angle is None else args.angle
@@ -176,7 +183,8 @@ def camera_for(tree, args):
 
 
 def cmd_render(args):
-    from .rendering import render, save_ids, save_png
+    from .image import save_png
+    from .render import render, save_ids
     tree = load_any(args.source, args, strict=args.strict)
     width, height = args.size
     frame = render(tree, camera_for(tree, args), width, height,

@@ -70,8 +70,8 @@ def _read_capped(stream, path, limit: int) -> bytes:
 
 
 def _too_big(size: int | None, limit: int) -> str:
-    have = f"{size} bytes" if size is not None else "more"
-    return f"too large ({have}; the limit is {limit} bytes)"
+    have = f"{size} bytes, " if size is not None else ""
+    return f"too large ({have}more than the limit of {limit} bytes)"
 
 
 def write_atomically(path, data: bytes) -> None:

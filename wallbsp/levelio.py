@@ -2,7 +2,9 @@
 
 Reading: ``load_level(path)`` (a file, or ``-`` for standard input), ``loads_level(text)``
 (JSON text) and ``level_from_dict(data)`` (a decoded JSON object) all validate and return a
-``Level``.  ``parse_json(data, source)`` is the JSON decoding they share: any failure,
+``Level``; ``read_level_input(path)`` then ``level_from_input(data, path)`` is
+``load_level`` in two steps, for a caller that looks at the bytes first (the CLI: tree or
+level?).  ``parse_json(data, source)`` is the JSON decoding they share: any failure,
 including nesting too deep for Python, is one ``LevelError`` line.
 Writing (``levelwrite``): ``dumps_level(level)``, ``content_hash(level)``; here
 ``save_level(level, path)`` (validates, then writes atomically).
@@ -69,11 +71,12 @@ Errors and warnings
 from __future__ import annotations
 
 import json
+import os
 from pathlib import Path
 from typing import Any
 
 from .conflicts import conflict_warnings
-from .files import InputError, read_input, write_atomically
+from .files import STDIN, InputError, read_input, write_atomically
 from .jsoncheck import ROOT, Checker, level_error
 from .level import Level, LevelError
 from .levelread import read_level
@@ -81,26 +84,42 @@ from .levelwrite import content_hash, dumps_level, level_to_dict
 
 MAX_REPORTED = 20            # per kind of wall conflict; a messy map stays readable
 MAX_LEVEL_BYTES = 256 << 20  # far above any real map; stops /dev/zero-like input
+STDIN_NAME = "<stdin>"
 
-__all__ = ["MAX_LEVEL_BYTES", "MAX_REPORTED", "content_hash", "dumps_level", "level_from_dict",
-           "level_to_dict", "load_level", "loads_level", "parse_json", "save_level"]
+__all__ = ["MAX_LEVEL_BYTES", "MAX_REPORTED", "content_hash", "dumps_level", "input_name",
+           "level_from_dict", "level_from_input", "level_to_dict", "load_level", "loads_level",
+           "parse_json", "read_level_input", "save_level"]
 
 
 def load_level(path, strict: bool = False) -> Level:
     """Read and validate a level file (``-``: standard input); messages name it as
-    ``str(path)``.  Relative resource paths are taken from the file's folder."""
-    source = str(path)
+    ``str(path)`` (``<stdin>``).  Relative resource paths are taken from the file's folder."""
+    return level_from_input(read_level_input(path), path, strict)
+
+
+def read_level_input(path) -> bytes:
+    """The bytes of the file at ``path`` (``-``: standard input), refusing FIFOs, devices,
+    directories and more than ``MAX_LEVEL_BYTES`` with one ``LevelError`` line."""
     try:
-        raw = read_input(path, MAX_LEVEL_BYTES)
+        return read_input(path, MAX_LEVEL_BYTES)
     except InputError as err:
-        raise level_error(source, ROOT, err.reason) from None
-    source_dir = None if source == "-" else Path(path).parent
-    return level_from_dict(parse_json(raw, source), source, strict, source_dir)
+        raise level_error(input_name(path), ROOT, err.reason) from None
 
 
-def loads_level(text: str, source: str = "<level>", strict: bool = False,
+def level_from_input(data: bytes, path, strict: bool = False) -> Level:
+    """The level in ``data``, the bytes read from ``path`` (see ``read_level_input``)."""
+    source_dir = None if input_name(path) == STDIN_NAME else Path(path).parent
+    return loads_level(data, input_name(path), strict, source_dir)
+
+
+def input_name(path) -> str:
+    """How messages name the input at ``path``: ``<stdin>`` for ``-``."""
+    return STDIN_NAME if os.fspath(path) == STDIN else str(path)
+
+
+def loads_level(text: str | bytes, source: str = "<level>", strict: bool = False,
                 source_dir=None) -> Level:
-    """Parse and validate a level from JSON text."""
+    """Parse and validate a level from JSON text (bytes: UTF-8)."""
     return level_from_dict(parse_json(text, source), source, strict, source_dir)
 
 
