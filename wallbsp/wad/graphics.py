@@ -24,7 +24,7 @@ import numpy as np
 from ..level import LevelError
 
 MAX_SIDE = 4096            # DOOM's own pictures are at most 1024 wide; tall skies ~ 256 high
-MAX_TEXELS = 1 << 22       # 4 M texels: the largest real sky textures, with room to spare
+MAX_TEXELS = 1 << 21       # 2 M texels (2048 × 1024): 16 times the largest Freedoom texture
 FLAT_SIDE = 64
 FLAT_BYTES = FLAT_SIDE * FLAT_SIDE
 PALETTE_BYTES = 768
@@ -110,16 +110,18 @@ def _decode_columns(buf: np.ndarray, starts: np.ndarray, height: int, where: str
     n = len(buf)
     pixels = np.zeros((len(starts), height), np.uint8)
     mask = np.zeros((len(starts), height), bool)
-    flat_pixels, flat_mask = pixels.reshape(-1), mask.reshape(-1)
     cols = np.arange(len(starts))
     pos, top_prev = starts, np.full(len(starts), -1, np.int64)
+    end_prev = np.zeros(len(starts), np.int64)
     budget = np.full(len(starts), height, np.int64)
+    posts, overlap = [], False
     while cols.size:
         if pos.max() >= n:
             raise _truncated(where, buf, pos, "has no end mark")
         delta = buf[pos].astype(np.int64)
         go = delta != POST_END
-        cols, pos, top_prev, delta, budget = cols[go], pos[go], top_prev[go], delta[go], budget[go]
+        cols, pos, top_prev, end_prev, delta, budget = (
+            cols[go], pos[go], top_prev[go], end_prev[go], delta[go], budget[go])
         if not cols.size:
             break
         if pos.max() + 1 >= n:
@@ -129,18 +131,26 @@ def _decode_columns(buf: np.ndarray, starts: np.ndarray, height: int, where: str
             raise _truncated(where, buf, pos, "has a post cut short")
         # DeePsea tall patches: a top delta not below the previous one is relative to it.
         top = np.where(delta <= top_prev, top_prev + delta, delta)
-        count = np.minimum(np.clip(height - top, 0, length), budget)
-        _paint(flat_pixels, flat_mask, buf, cols * height + top, pos + 3, count)
+        count = np.maximum(np.minimum(np.minimum(height - top, length), budget), 0)
+        overlap = overlap or bool(((top < end_prev) & (count > 0)).any())
+        posts.append((cols * height + top, pos + 3, count))
         budget -= count
-        top_prev, pos = top, pos + 4 + length
+        top_prev, end_prev, pos = top, np.maximum(end_prev, top + count), pos + 4 + length
         go = (top < height) & (budget > 0)   # tops never go back up: the rest is off the canvas
-        cols, pos, top_prev, budget = cols[go], pos[go], top_prev[go], budget[go]
+        cols, pos, top_prev, end_prev, budget = (
+            cols[go], pos[go], top_prev[go], end_prev[go], budget[go])
+    if overlap:     # rare: paint post by post so that later posts win
+        for post in posts:
+            _paint(pixels.reshape(-1), mask.reshape(-1), buf, *post)
+    elif posts:     # every texel is written at most once: one painting for all posts
+        _paint(pixels.reshape(-1), mask.reshape(-1), buf,
+               *(np.concatenate(a) for a in zip(*posts)))
     return pixels, mask
 
 
 def _paint(flat_pixels, flat_mask, buf, first, source, count) -> None:
-    """One post per column: ``count`` texels from ``buf[source:]`` to ``first`` onwards. One
-    post per column per call, so no texel is written twice in a call and later posts win."""
+    """Posts: ``count`` texels each from ``buf[source:]`` to ``first`` onwards. The caller
+    makes sure no texel is written twice in one call."""
     total = int(count.sum())
     if total == 0:
         return
@@ -252,11 +262,13 @@ def composite(tdef: TextureDef, pnames: list[str],
 def _last_of_each_placement(rows: np.ndarray) -> list[tuple[int, tuple[int, int, int]]]:
     """(entry number, placement) in painting order, a placement painted again later dropped
     where it was first: the later painting covers it anyway."""
-    if not len(rows):
-        return []
-    _, last_in_reverse = np.unique(rows[::-1], axis=0, return_index=True)
-    keep = np.sort(len(rows) - 1 - last_in_reverse)
-    return [(k, tuple(rows[k].tolist())) for k in keep.tolist()]
+    seen, kept = set(), []
+    placements = [tuple(row) for row in rows.tolist()]
+    for k in range(len(placements) - 1, -1, -1):
+        if placements[k] not in seen:
+            seen.add(placements[k])
+            kept.append((k, placements[k]))
+    return kept[::-1]
 
 
 def _paste(pixels: np.ndarray, mask: np.ndarray, picture: Picture, ox: int, oy: int) -> None:

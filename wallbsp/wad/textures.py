@@ -13,11 +13,13 @@ names thousands of large pictures is refused with one line rather than filling m
 """
 from __future__ import annotations
 
+from contextlib import contextmanager
 from functools import cached_property
+from typing import Iterator
 
 import numpy as np
 
-from .archive import open_wad
+from .archive import Wad, open_wad
 from .graphics import (Picture, ResourceError, TextureDef, composite, decode_colormap,
                        decode_flat, decode_palette, decode_picture, decode_pnames,
                        decode_texture_lump)
@@ -41,6 +43,7 @@ class WadTextures:
         self.path, self.label, self.directory = path, label, directory
         self._pictures: dict[tuple[str, str], Picture | None] = {}
         self.decoded_bytes = 0
+        self._wad: Wad | None = None
 
     # -- names ------------------------------------------------------------------------------
     @cached_property
@@ -104,8 +107,7 @@ class WadTextures:
     def _patch(self, name: str) -> Picture | None:
         # Patches are found by name anywhere in the WAD (the last lump of the name), as
         # W_CheckNumForName finds them.
-        with self._open() as wad:
-            return self._lump_picture("patch", name, wad.index, decode_picture)
+        return self._lump_picture("patch", name, self.directory.index, decode_picture)
 
     def _lump_picture(self, kind: str, name: str, lumps: dict[str, int], decode):
         i = lumps.get(name)
@@ -140,29 +142,14 @@ class WadTextures:
             raw = wad.lump("COLORMAP")
         return None if raw is None else decode_colormap(raw, f"{self.label}: COLORMAP")
 
-    def _open(self):
-        return _Checked(self)
+    @contextmanager
+    def _open(self) -> Iterator[Wad]:
+        # One file handle for the source's life: opening the file for every picture would cost
+        # more than decoding it. The directory is the one this source indexed.
+        if self._wad is None:
+            try:
+                self._wad = Wad(self.label, open(self.path, "rb"), self.directory)
+            except OSError as e:
+                raise ResourceError(f"{self.label}: cannot read: {e.strerror or e}") from None
+        yield self._wad
 
-
-class _Checked:
-    """``open_wad`` for a source: the file must still be the one the source indexed."""
-
-    def __init__(self, source: WadTextures):
-        self.source = source
-        self.context = open_wad(source.path)
-
-    def __enter__(self):
-        wad = self.context.__enter__()
-        if not _same(wad.directory, self.source.directory):
-            self.context.__exit__(None, None, None)
-            raise ResourceError(f"{self.source.label}: changed on disk while in use")
-        return wad
-
-    def __exit__(self, *exc):
-        return self.context.__exit__(*exc)
-
-
-def _same(a, b) -> bool:
-    # the directory may have been dropped from the cache and read again: same file, same lumps
-    return a is b or (a.names == b.names and np.array_equal(a.pos, b.pos)
-                      and np.array_equal(a.size, b.size))
