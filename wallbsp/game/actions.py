@@ -146,7 +146,7 @@ def _shortest_lower_texture(env, s: int) -> float | None:
             continue
         for side in (0, 1):
             name = env.state.wall_texture(wall, side, "lower")
-            height = env.texture_height(name) if name else 0
+            height = (env.texture_height(name) or 0) if name else 0
             if height > 0:
                 heights.append(height)
     return min(heights) if heights else None
