@@ -3,8 +3,8 @@ from fractions import Fraction
 import numpy as np
 from hypothesis import given, strategies as st
 
-from wallbsp.geometry import (canonical, canonical_lines, dehomogenize, join, meet, side,
-                              side_at, sign_det2)
+from projective import canonical, dehomogenize, join, meet, side
+from wallbsp.geometry import canonical_lines, side_at, sign_det2
 
 LIMIT = 2 ** 20
 coord = st.integers(-LIMIT, LIMIT)

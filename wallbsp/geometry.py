@@ -3,62 +3,31 @@
 A point ``(x, y)`` is the homogeneous vector ``(x, y, 1)``; the line through two points is
 their cross product ``l = p1 × p2 = (a, b, c)`` and ``s = a*x + b*y + c`` is positive on
 the left of ``p1 → p2`` and negative on its right (a wall's front, SPEC §2).  Two lines meet
-at ``l × m``.  Nothing here uses floating point: every answer is an exact sign.
+at ``l × m``.  Every answer here is an exact sign.
 
 Magnitudes: map coordinates are at most 2**20, so a line has ``|a|, |b| <= 2**21`` and
 ``|c| <= 2**41``, and ``s`` at a map point stays below 2**43.  A split point is a ratio of
 two such values, so every product the compiler needs stays below 2**88: ``sign_det2``
 evaluates it exactly in 128-bit arithmetic built from numpy's uint64.
+
+Float points (an eye, a player): a double is an exact binary fraction, so its side of an
+integer line has an exact answer too.  ``a*x + b*y + c`` evaluated in doubles is within
+``side_tolerance`` of the true value; beyond that bound its sign is the true sign, and only
+points closer than that (a hair from the line) are decided exactly, by ``exact_side``.
 """
 from __future__ import annotations
 
 from fractions import Fraction
-from math import gcd
+from math import isfinite
+from numbers import Rational
 
 import numpy as np
 
 COORD_LIMIT = 2 ** 20
+LINE_A_LIMIT = 2 * COORD_LIMIT            # |a|, |b| of a line through two map points
+LINE_C_LIMIT = 2 * COORD_LIMIT ** 2       # |c| of such a line
 _LOW32 = np.uint64(0xFFFFFFFF)
 _SHIFT32 = np.uint64(32)
-
-
-def join(p, q):
-    """The homogeneous line through integer points p and q: ``p × q``."""
-    (x1, y1), (x2, y2) = p, q
-    return (y1 - y2, x2 - x1, x1 * y2 - x2 * y1)
-
-
-def meet(l, m):
-    """The homogeneous point where lines l and m meet: ``l × m`` (w == 0: parallel)."""
-    a1, b1, c1 = l
-    a2, b2, c2 = m
-    return (b1 * c2 - c1 * b2, c1 * a2 - a1 * c2, a1 * b2 - b1 * a2)
-
-
-def dehomogenize(point):
-    """``(X, Y, W) -> (Fraction(X, W), Fraction(Y, W))``."""
-    x, y, w = point
-    return Fraction(x, w), Fraction(y, w)
-
-
-def canonical(line):
-    """Reduce a line by the gcd of its coefficients and give it the canonical sign
-    (a > 0, or a == 0 and b > 0), so every collinear wall gets the identical triple.
-    Returns ``(line, flipped)``: flipped is True when the sign was changed."""
-    a, b, c = line
-    g = gcd(gcd(a, b), c) or 1
-    flipped = a < 0 or (a == 0 and b < 0)
-    if flipped:
-        g = -g
-    return (a // g, b // g, c // g), flipped
-
-
-def side(line, point) -> int:
-    """Exact side of a point (integers or Fractions): -1 right, 0 on, +1 left."""
-    a, b, c = line
-    x, y = point
-    s = a * x + b * y + c
-    return (s > 0) - (s < 0)
 
 
 def canonical_lines(x1, y1, x2, y2):
@@ -122,3 +91,50 @@ def side_at(s1, s2, n, d):
         # s1*d + n*(s2 - s1) == s1*d - n*(s1 - s2)
         result[idx] = sign_det2(s1[idx], d[idx], n[idx], s1[idx] - s2[idx])
     return result
+
+
+# -- float points --------------------------------------------------------------------------
+# Evaluating a*x + b*y + c in doubles (a, b, c integers, exact as doubles) rounds four times:
+# the result is within 3u/(1-3u) * (|a x| + |b y| + |c|) of the true value, u = 2**-53, plus
+# 2**-1074 per product that underflows.  Converting a non-float x (a Fraction) to a double
+# first adds one more rounding.  SIDE_ERROR = 16u covers all of that, and the rounding of
+# the bound's own computation, with room to spare; SIDE_UNDERFLOW covers the underflow.
+SIDE_ERROR = 2.0 ** -49
+SIDE_UNDERFLOW = 2.0 ** -1000
+
+
+def side_tolerance(a_max, b_max, c_max, x, y) -> float:
+    """A bound on the error of ``a*x + b*y + c`` computed in doubles, for every line with
+    ``|a| <= a_max, |b| <= b_max, |c| <= c_max``: a computed value beyond it in magnitude
+    has the exact sign.  ValueError if the point is not finite (it has no side)."""
+    if not (_finite(x) and _finite(y)):
+        raise ValueError(f"the point ({x}, {y}) is not finite")
+    return SIDE_ERROR * (a_max * abs(x) + b_max * abs(y) + c_max) + SIDE_UNDERFLOW
+
+
+def _finite(v) -> bool:
+    return isinstance(v, Rational) or isfinite(v)
+
+
+def exact_side(a, b, c, x, y) -> int:
+    """The exact sign (-1, 0, +1) of ``a*x + b*y + c`` for finite real numbers (ints,
+    floats, Fractions), in rational arithmetic."""
+    s = Fraction(a) * Fraction(x) + Fraction(b) * Fraction(y) + Fraction(c)
+    return (s > 0) - (s < 0)
+
+
+def side_of(a, b, c, x, y) -> int:
+    """Exact side (-1 right, 0 on, +1 left) of the point (x, y), which may be floats, of
+    the line ``(a, b, c)``: in doubles when the answer is clear, exactly otherwise.
+
+    A hot loop over many lines inlines the same test with one tolerance for all of them
+    (``BSPTree.side_tolerance(x, y)``): ``s = a*x + b*y + c``, then ``if not (s < -tol or
+    s > tol): s = exact_side(a, b, c, x, y)`` (written so that a nan from an overflow is
+    decided exactly too); only the sign of ``s`` is used after that."""
+    tol = side_tolerance(abs(a), abs(b), abs(c), x, y)
+    s = a * x + b * y + c
+    if s < -tol:
+        return -1
+    if s > tol:
+        return 1
+    return exact_side(a, b, c, x, y)
