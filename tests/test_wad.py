@@ -16,51 +16,10 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from wallbsp.level import Level, LevelError
+from wadkit import BLUE, DARK, GREEN, RED, flat, patch, playpal, pnames, texture_lump
 from wallbsp.wad import GREY, SKY_BLUE, import_wad, load_wad_level, parse_wad_spec, wad_bytes
 
 NONE = 0xFFFF
-
-# Palette 0: the indices the pictures below use, everything else black.
-RED, BLUE, GREEN, DARK = 1, 2, 3, 4
-PALETTE = {RED: (200, 0, 0), BLUE: (0, 0, 100), GREEN: (0, 255, 0), DARK: (10, 20, 30)}
-
-
-def playpal() -> bytes:
-    colours = [PALETTE.get(i, (0, 0, 0)) for i in range(256)]
-    return bytes(c for rgb in colours for c in rgb) * 2     # two palettes; only the first counts
-
-
-def flat(indices: list[int]) -> bytes:
-    assert len(indices) == 4096
-    return bytes(indices)
-
-
-def patch(width: int, height: int, columns: list[list[tuple[int, list[int]]]]) -> bytes:
-    """A picture: per column, its posts as (top delta, palette indices)."""
-    body, offsets = bytearray(), []
-    for posts in columns:
-        offsets.append(8 + 4 * width + len(body))
-        for top, pixels in posts:
-            body += bytes([top, len(pixels), 0]) + bytes(pixels) + b"\0"
-        body += b"\xff"
-    return struct.pack("<HHhh", width, height, 0, 0) + struct.pack(f"<{width}I", *offsets) + body
-
-
-def pnames(names: list[str]) -> bytes:
-    return struct.pack("<i", len(names)) + b"".join(n.encode().ljust(8, b"\0") for n in names)
-
-
-def texture_lump(textures: list[tuple[str, int, int, list[tuple[int, int, int]]]]) -> bytes:
-    """TEXTURE1: (name, width, height, [(origin x, origin y, PNAMES index)])."""
-    defs = [struct.pack("<8sihhih", name.encode(), 0, w, h, 0, len(ps))
-            + b"".join(struct.pack("<hhhhh", x, y, p, 1, 0) for x, y, p in ps)
-            for name, w, h, ps in textures]
-    offsets, at = [], 4 + 4 * len(defs)
-    for d in defs:
-        offsets.append(at)
-        at += len(d)
-    return struct.pack(f"<i{len(defs)}i", len(defs), *offsets) + b"".join(defs)
-
 
 SOLID = patch(4, 4, [[(0, [RED] * 4)]] * 4)                 # 4 × 4 red
 BLUE_BAR = patch(2, 4, [[(0, [BLUE] * 4)]] * 2)             # 2 × 4 blue
@@ -125,20 +84,27 @@ class Map:
     things: list = field(default_factory=lambda: [
         (200, 64, 0, 3004), (64, 64, 0, 1), (32, 96, 180, 1)])
     name: str = "MAP01"
+    # linedef -> (flags, special, tag); sector -> (special, tag); sidedef -> (x, y) offsets
+    line_fields: dict = field(default_factory=dict)
+    sector_fields: dict = field(default_factory=dict)
+    side_offsets: dict = field(default_factory=dict)
 
     def lumps(self) -> list[tuple[str, bytes]]:
         return [
             (self.name, b""),
             ("THINGS", b"".join(struct.pack("<hhhhh", x, y, a, t, 7)
                                 for x, y, a, t in self.things)),
-            ("LINEDEFS", b"".join(struct.pack("<HHhhhHH", v1, v2, 1, 0, 0, r, lf)
-                                  for v1, v2, r, lf in self.linedefs)),
-            ("SIDEDEFS", b"".join(struct.pack("<hh8s8s8sH", 0, 0, u.encode(), lo.encode(),
-                                              m.encode(), s) for u, lo, m, s in self.sidedefs)),
+            ("LINEDEFS", b"".join(struct.pack("<HHHHHHH", v1, v2,
+                                                  *self.line_fields.get(i, (1, 0, 0)), r, lf)
+                                  for i, (v1, v2, r, lf) in enumerate(self.linedefs))),
+            ("SIDEDEFS", b"".join(struct.pack("<hh8s8s8sH", *self.side_offsets.get(i, (0, 0)),
+                                              u.encode(), lo.encode(), m.encode(), s)
+                                  for i, (u, lo, m, s) in enumerate(self.sidedefs))),
             ("VERTEXES", b"".join(struct.pack("<hh", x, y) for x, y in self.vertices)),
             ("SEGS", b""), ("SSECTORS", b""), ("NODES", b""),
-            ("SECTORS", b"".join(struct.pack("<hh8s8shhh", f, c, ff.encode(), cf.encode(), li, 0, 0)
-                                 for f, c, ff, cf, li in self.sectors)),
+            ("SECTORS", b"".join(struct.pack("<hh8s8shHH", f, c, ff.encode(), cf.encode(), li,
+                                             *self.sector_fields.get(i, (0, 0)))
+                                 for i, (f, c, ff, cf, li) in enumerate(self.sectors))),
             ("REJECT", b""), ("BLOCKMAP", b"")]
 
 
@@ -252,6 +218,63 @@ def test_map_is_found_among_several():
     second = Map(name="MAP02", things=[(100, 50, 90, 1)])
     level = import_wad(write_wad(Map(), second), "MAP02")
     assert level["start"] == {"x": 100, "y": 50, "angle": 90}
+
+
+# ---------------------------------------------------------------------------------------------
+# Version 2: textures, flags, specials, things (DOOM's numbering kept)
+
+def test_sides_keep_their_textures_and_offsets():
+    m = Map(side_offsets={3: (5, -7)})
+    portal = import_wad(write_wad(m), "MAP01")["walls"][2]
+    assert portal["front_side"] == {"upper": "MIX", "middle": None, "lower": "HOLE",
+                                    "x_offset": 5, "y_offset": -7}
+    assert portal["back_side"] == {"upper": None, "middle": None, "lower": None,
+                                   "x_offset": 0, "y_offset": 0}
+
+
+def test_turned_round_linedef_keeps_its_one_side_as_the_front(two_rooms):
+    east = two_rooms["walls"][5]        # only a left sidedef (6): it is the front side now
+    assert east["front_side"]["middle"] == "SPARSE" and "back_side" not in east
+
+
+def test_linedef_flags_become_pegging_and_blocking():
+    # ML_BLOCKING 1, ML_DONTPEGTOP 8, ML_DONTPEGBOTTOM 16; blocking matters on two-sided walls
+    m = Map(line_fields={0: (1 | 8, 0, 0), 2: (1 | 16, 0, 0), 1: (0, 0, 0)})
+    walls = import_wad(write_wad(m), "MAP01")["walls"]
+    assert (walls[0]["upper_unpegged"], walls[0]["lower_unpegged"], walls[0]["blocks"]) == \
+        (True, False, False)
+    assert (walls[2]["upper_unpegged"], walls[2]["lower_unpegged"], walls[2]["blocks"]) == \
+        (False, True, True)
+    assert walls[1]["blocks"] is False
+
+
+def test_line_and_sector_specials_and_tags_are_kept():
+    m = Map(line_fields={2: (4, 1, 0), 6: (1, 62, 9)}, sector_fields={1: (9, 7)})
+    level = import_wad(write_wad(m), "MAP01")
+    assert [(w["special"], w["tag"]) for w in level["walls"]][2:7:4] == [(1, 0), (62, 9)]
+    assert [(s["special"], s["tag"]) for s in level["sectors"]] == [(0, 0), (9, 7)]
+
+
+def test_sector_flats_are_named_and_sky_is_kept(two_rooms):
+    s0, s1 = two_rooms["sectors"]
+    assert (s0["floor_texture"], s0["ceiling_texture"]) == ("FLOOR1", "CEIL1")
+    assert (s1["floor_texture"], s1["ceiling_texture"]) == ("FLOOR1", "F_SKY1")
+
+
+def test_all_things_are_kept_in_order(two_rooms):
+    assert two_rooms["things"] == [
+        {"x": 200, "y": 64, "angle": 0, "type": 3004, "flags": 7},
+        {"x": 64, "y": 64, "angle": 0, "type": 1, "flags": 7},
+        {"x": 32, "y": 96, "angle": 180, "type": 1, "flags": 7}]
+
+
+def test_version_2_import_loads_as_a_level_with_textures():
+    level = load_wad_level(write_wad(Map(line_fields={2: (1 | 8, 11, 3)})), "MAP01")
+    portal = level.walls[2]
+    assert portal.front_side.upper == "MIX" and portal.back_side is not None
+    assert portal.upper_unpegged and portal.blocks and (portal.special, portal.tag) == (11, 3)
+    assert level.sectors[1].ceiling_texture == "F_SKY1" and len(level.things) == 3
+    assert [str(p) for p in level.resource_paths()] == [os.path.abspath("test.wad")]
 
 
 # ---------------------------------------------------------------------------------------------

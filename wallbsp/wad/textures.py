@@ -73,6 +73,14 @@ class WadTextures:
                         found.setdefault(name, tdef)
         return found
 
+    def definition(self, name: str) -> TextureDef | None:
+        """The TEXTURE1/TEXTURE2 entry of a wall texture (its patches' placements)."""
+        return self._textures.get(name)
+
+    def patch_names(self) -> list[str]:
+        """PNAMES: the names a texture entry's patch numbers index."""
+        return list(self._pnames)
+
     def wall_names(self) -> list[str]:
         return list(self._textures)
 
