@@ -13,7 +13,7 @@ import pytest
 
 from conftest import ROOT
 from wallbsp.cli import main
-from wallbsp.files import InputError, read_input
+from wallbsp.files import InputError, open_regular, read_input
 from wallbsp.level import LevelError
 from wallbsp.levelio import load_level
 
@@ -71,6 +71,15 @@ def test_a_file_over_the_limit_is_refused(tmp_path):
     assert read_input(path, 101) == b" " * 101
     with pytest.raises(InputError, match=r"too large \(101 bytes, more than the limit of 100"):
         read_input(path, 100)
+
+
+def test_open_regular_refuses_what_read_input_refuses(tmp_path, fifo):
+    with pytest.raises(InputError, match="is a FIFO"):
+        open_regular(fifo)
+    path = tmp_path / "a.bin"
+    path.write_bytes(b"abc")
+    with open_regular(path) as f:
+        assert f.read() == b"abc"
 
 
 def test_a_dash_reads_standard_input(monkeypatch):

@@ -2,7 +2,8 @@
 folder, then an atomic rename); every file wallbsp writes goes through ``write_atomically``.
 Reading: ``read_input`` reads a user's file, or standard input for ``-``, refusing what is
 not a regular file (a FIFO, a device such as /dev/zero, a directory) without blocking on
-it, and anything larger than the caller's limit; every loader of user files uses it."""
+it, and anything larger than the caller's limit; every loader of user files uses it (or
+``open_regular``, the same refusal, for a reader that streams a large file)."""
 from __future__ import annotations
 
 import os
@@ -29,6 +30,16 @@ def read_input(path, limit: int) -> bytes:
     ``limit`` of them; ``InputError`` otherwise."""
     if os.fspath(path) == STDIN:
         return _read_capped(sys.stdin.buffer, STDIN, limit)
+    with open_regular(path) as f:
+        size = os.fstat(f.fileno()).st_size
+        if size > limit:
+            raise InputError(path, _too_big(size, limit))
+        return _read_capped(f, path, limit)
+
+
+def open_regular(path):
+    """The regular file at ``path`` opened for reading in binary (for a reader that
+    streams it); anything else is an ``InputError``, refused before it is opened."""
     try:
         _check_regular(path, os.stat(path).st_mode)   # stat never blocks, open may
         fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0)
@@ -37,13 +48,14 @@ def read_input(path, limit: int) -> bytes:
         raise InputError(path, "no such file") from None
     except OSError as err:
         raise InputError(path, f"cannot read: {err.strerror or err}") from None
-    with os.fdopen(fd, "rb") as f:
+    f = os.fdopen(fd, "rb")
+    try:
         # the path may have been replaced between stat and open: check what was opened
-        info = os.fstat(f.fileno())
-        _check_regular(path, info.st_mode)
-        if info.st_size > limit:
-            raise InputError(path, _too_big(info.st_size, limit))
-        return _read_capped(f, path, limit)
+        _check_regular(path, os.fstat(f.fileno()).st_mode)
+    except InputError:
+        f.close()
+        raise
+    return f
 
 
 def _check_regular(path, mode: int) -> None:

@@ -142,13 +142,16 @@ class Level:
     # The file format lives in levelio, which builds Levels; importing it here, when the
     # method runs, keeps the model free of it (see levelio for what these do).
     def to_dict(self) -> dict[str, Any]:
+        """The level as the JSON object that ``save`` writes."""
         from . import levelio
         return levelio.level_to_dict(self)
 
     def content_hash(self) -> str:
+        """sha256 (hex) of the canonical JSON: equal levels have equal hashes."""
         from . import levelio
         return levelio.content_hash(self)
 
     def save(self, path) -> None:
+        """Validate, then write atomically (``LevelError`` or ``OSError`` naming ``path``)."""
         from . import levelio
         levelio.save_level(self, path)
