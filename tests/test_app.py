@@ -1,8 +1,9 @@
 """The pygame walkthrough (wallbsp.app), driven by posted events and a fixed frame time
-under SDL's dummy video driver."""
+under SDL's dummy video driver.  The player's rules themselves are test_player's."""
 import math
 import os
 import re
+import subprocess
 import sys
 
 os.environ["SDL_VIDEODRIVER"] = "dummy"       # before pygame is imported: never open a window
@@ -12,11 +13,12 @@ import pygame        # noqa: E402
 import pytest        # noqa: E402
 
 from wallbsp import app, compile_level            # noqa: E402
-from wallbsp.image import load_png                # noqa: E402
+from wallbsp.game.player import TICRATE, WALK_THRUST, spawn_player, player_tic   # noqa: E402
+from pngread import load_png                      # noqa: E402
 from wallbsp.level import Level, Sector, Start, Wall   # noqa: E402
-from wallbsp.rendering import Camera, render         # noqa: E402
+from wallbsp import render                         # noqa: E402
 
-DT = 1 / 30
+DT = 1 / TICRATE          # one tic a frame: frames and tics line up
 
 
 @pytest.fixture
@@ -27,7 +29,7 @@ def tree(compiled_levels):
 @pytest.fixture
 def walk(tree):
     """An open walkthrough at the level's start; the display is closed afterwards."""
-    state = app.Walkthrough(tree, app.Player.at_start(tree), (160, 100), (320, 200))
+    state = app.Walkthrough.at_start(tree, (160, 100), (320, 200))
     app.open_display(state)
     yield state
     app.close_display(state)
@@ -50,17 +52,19 @@ def screen(walk):
     return pygame.surfarray.array3d(walk.display)
 
 
-# -- moving and turning -------------------------------------------------------------------------
+# -- moving and turning: keys become the player's tic inputs -------------------------------------
 
-def test_holding_w_walks_forward_and_changes_the_picture(walk):
+def test_holding_w_walks_forward_as_the_player_would_and_changes_the_picture(walk, tree):
     frames(walk, 1)
-    before, start = walk.frame.color.copy(), (walk.player.x, walk.player.y)
+    before = walk.frame.color.copy()
+    start = tree.level.start
+    expected = spawn_player(tree, start.x, start.y, start.angle)
     press(pygame.K_w)
     frames(walk, 6)
-    a = math.radians(walk.player.angle)
-    moved = (walk.player.x - start[0], walk.player.y - start[1])
-    assert moved == pytest.approx((6 * DT * app.WALK_SPEED * math.cos(a),
-                                   6 * DT * app.WALK_SPEED * math.sin(a)), abs=1e-6)
+    for _ in range(6):
+        player_tic(tree, expected, forward=1.0)
+    assert walk.player == expected
+    assert walk.player.x != start.x or walk.player.y != start.y
     assert not np.array_equal(walk.frame.color, before)
 
 
@@ -68,7 +72,7 @@ def test_releasing_the_key_stops_the_player(walk):
     press(pygame.K_UP)
     frames(walk, 2)
     release(pygame.K_UP)
-    frames(walk, 1)
+    frames(walk, 60)                  # momentum runs out
     here = (walk.player.x, walk.player.y)
     frames(walk, 3)
     assert (walk.player.x, walk.player.y) == here
@@ -79,31 +83,35 @@ def test_strafing_right_moves_along_the_right_vector(walk):
     a = math.radians(walk.player.angle)
     x, y = walk.player.x, walk.player.y
     app.update_player(walk, DT)
-    step = DT * app.WALK_SPEED
-    assert (walk.player.x, walk.player.y) == pytest.approx(
-        (x + step * math.sin(a), y - step * math.cos(a)))
+    moved = (walk.player.x - x, walk.player.y - y)
+    length = math.hypot(*moved)
+    assert length > 0
+    assert (moved[0] / length, moved[1] / length) == pytest.approx((math.sin(a), -math.cos(a)))
 
 
-def test_shift_runs_and_speed_does_not_depend_on_the_frame_rate(tree):
+def test_tics_run_at_35_a_second_whatever_the_frame_rate(tree):
     def distance(keys, dt, count):
-        state = app.Walkthrough(tree, app.Player.at_start(tree), (160, 100), (320, 200))
+        state = app.Walkthrough.at_start(tree, (160, 100), (320, 200))
         state.held = set(keys)
         for _ in range(count):
             app.update_player(state, dt)
         start = tree.level.start
         return math.hypot(state.player.x - start.x, state.player.y - start.y)
 
-    walked = distance({pygame.K_w}, 1 / 30, 3)
-    assert distance({pygame.K_w}, 1 / 90, 9) == pytest.approx(walked)
-    assert distance({pygame.K_w, pygame.K_LSHIFT}, 1 / 30, 3) == pytest.approx(2 * walked)
+    walked = distance({pygame.K_w}, 3 / TICRATE, 1)
+    assert walked == pytest.approx(WALK_THRUST * (1 + 1.90625 + 2.72754), rel=1e-3)
+    assert distance({pygame.K_w}, 1 / TICRATE, 3) == pytest.approx(walked)
+    assert distance({pygame.K_w}, 0.5 / TICRATE, 6) == pytest.approx(walked)
+    assert distance({pygame.K_w, pygame.K_LSHIFT}, 3 / TICRATE, 1) == pytest.approx(2 * walked)
 
 
-def test_turning_changes_the_frame(walk):
+def test_turning_is_slow_at_first_then_doom_speed(walk):
     frames(walk, 1)
     before, angle = walk.frame.color.copy(), walk.player.angle
     press(pygame.K_RIGHT)
-    frames(walk, 3)
-    assert walk.player.angle == pytest.approx((angle - 3 * DT * app.TURN_SPEED) % 360)
+    frames(walk, app.SLOW_TURN_TICS + 2)
+    turned = app.SLOW_TURN_TICS * app.TURN_SLOW + 2 * app.TURN_WALK
+    assert walk.player.angle == pytest.approx((angle - turned) % 360)
     assert not np.array_equal(walk.frame.color, before)
 
 
@@ -121,27 +129,10 @@ def test_the_mouse_turns_only_while_grabbed(walk):
     assert walk.player.angle == pytest.approx((angle - 40 * app.MOUSE_TURN) % 360)
 
 
-def step_up_level(height):
-    """Two rooms; the east one's floor is ``height`` up.  The player faces east."""
-    vertices = [(0, 0), (0, 256), (256, 256), (256, 0), (512, 256), (512, 0)]
-    sectors = [Sector(0, 160), Sector(height, 160 + height)]
-    walls = [Wall(0, 1, 0), Wall(1, 2, 0), Wall(2, 3, 0, 1), Wall(3, 0, 0),
-             Wall(2, 4, 1), Wall(4, 5, 1), Wall(5, 3, 1)]
-    return compile_level(Level("step", vertices, sectors, walls, Start(200, 128, 0)))
-
-
-def test_the_eye_eases_up_a_step_and_walls_stop_the_player():
-    tree = step_up_level(24)
-    state = app.Walkthrough(tree, app.Player.at_start(tree), (160, 100), (320, 200))
-    state.held = {pygame.K_w}
-    for _ in range(6):                           # 50 units: the circle is over the step
-        app.update_player(state, DT)
-    assert state.player.floor == 24
-    assert 41 < state.player.eye < 24 + 41      # still catching up
-    for _ in range(60):                         # into the east wall
-        app.update_player(state, DT)
-    assert state.player.eye == pytest.approx(24 + 41, abs=1e-3)
-    assert state.player.x == pytest.approx(512 - 16, abs=1e-2)
+def test_importing_the_app_loads_no_pygame():
+    code = ("import sys, wallbsp.app, wallbsp.cli; "
+            "sys.exit(1 if any(m.startswith('pygame') for m in sys.modules) else 0)")
+    assert subprocess.run([sys.executable, "-c", code]).returncode == 0
 
 
 # -- toggles, overlays, quitting ----------------------------------------------------------------
@@ -205,11 +196,9 @@ def test_escape_or_closing_the_window_quits(walk, event):
     assert not walk.running
 
 
-def test_an_interactive_run_ends_on_escape(tree):
-    pygame.display.init()
+def test_an_interactive_run_ends_on_escape(walk):
     press(pygame.K_ESCAPE)
-    summary = app.run_walkthrough(tree, size=(160, 100), window=(320, 200))
-    assert summary["frames"] == 1
+    assert len(app.run_frames(walk)) == 1
 
 
 # -- headless runs --------------------------------------------------------------------------------
@@ -226,7 +215,7 @@ def test_screenshot_is_the_last_frame_at_the_internal_size(tree, tmp_path):
     app.run_walkthrough(tree, frames=3, turn=10.0, size=(160, 100), screenshot=path)
     picture = load_png(path)
     start = tree.level.start
-    camera = Camera(start.x, start.y, app.Player.at_start(tree).eye, start.angle + 20.0)
+    camera = spawn_player(tree, start.x, start.y, start.angle + 20.0).camera()
     assert picture.shape == (100, 160, 3)
     assert np.array_equal(picture, render(tree, camera, 160, 100).color)
 
@@ -236,7 +225,16 @@ def test_without_a_display_headless_runs_use_the_dummy_driver(tree, monkeypatch)
         monkeypatch.delenv(name, raising=False)
     if os.name != "posix" or sys.platform == "darwin":
         pytest.skip("only X11/Wayland systems need a DISPLAY")
-    with pytest.raises(app.NoDisplayError):
+    with pytest.raises(app.NoDisplayError, match="DISPLAY"):
         app.run_walkthrough(tree)
     assert app.run_walkthrough(tree, frames=1)["frames"] == 1
     assert os.environ["SDL_VIDEODRIVER"] == "dummy"
+
+
+@pytest.mark.parametrize("driver", ["dummy", "offscreen"])
+def test_an_interactive_walk_on_a_driver_that_shows_nothing_is_no_display(tree, monkeypatch,
+                                                                          driver):
+    monkeypatch.setenv("SDL_VIDEODRIVER", driver)
+    monkeypatch.setenv("DISPLAY", ":0")
+    with pytest.raises(app.NoDisplayError, match=driver):
+        app.run_walkthrough(tree)

@@ -5,6 +5,7 @@ import sys
 import warnings
 import zipfile
 
+import numpy as np
 import pytest
 
 from conftest import DELETE, edited
@@ -174,3 +175,91 @@ def test_builds_longer_than_a_second_show_progress_on_stderr(capsys):
     slow(4, 90, 0)
     err = capsys.readouterr().err
     assert "depth 3, 40 nodes, 1200 segs to place" in err and err.endswith("\n")
+
+
+# -- the edges of the command line (issue 14 §7, §8, §10, §11) ---------------------------------
+
+def _box(tmp_path):
+    level = tmp_path / "box.json"
+    level.write_text(json.dumps(GOOD))
+    return level
+
+
+def _one_line_exit_2(argv, capsys, *expected):
+    code, out, err = _run(argv, capsys)
+    assert code == 2 and len(err.strip().splitlines()) == 1, (argv, err)
+    assert "Traceback" not in err and all(e in err for e in expected), err
+    return err
+
+
+@pytest.mark.parametrize("command", ["compile", "stats", "render"])
+def test_a_negative_seed_is_one_line_exit_2(tmp_path, capsys, command):
+    argv = [command, _box(tmp_path), "--seed", "-1"] + (["-o", tmp_path / "a.png"]
+                                                        if command == "render" else [])
+    _one_line_exit_2(argv, capsys, "--seed")
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["box.json"]
+
+
+@pytest.mark.parametrize("outputs, where", [
+    (["-o", "out.png", "--ids", "nodir/ids.npz"], "nodir"),
+    (["-o", "nodir/out.png", "--ids", "ids.npz"], "nodir"),
+    (["-o", "same", "--ids", "same"], "same"),
+    (["-o", ".", "--ids", "ids.npz"], "directory"),
+    (["-o", "box.json"], "box.json"),
+])
+def test_render_writes_all_its_outputs_or_none(tmp_path, capsys, monkeypatch, outputs, where):
+    monkeypatch.chdir(tmp_path)
+    _box(tmp_path)
+    before = (tmp_path / "box.json").read_bytes()
+    _one_line_exit_2(["render", "box.json", *outputs], capsys, where)
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["box.json"]
+    assert (tmp_path / "box.json").read_bytes() == before
+
+
+def test_render_writes_the_png_and_the_ids_together(tmp_path, capsys):
+    level = _box(tmp_path)
+    code, _, err = _run(["render", level, "-o", tmp_path / "a.png", "--ids",
+                         tmp_path / "a.npz"], capsys)
+    assert code == 0 and err == ""
+    assert sorted(p.name for p in tmp_path.iterdir()) == ["a.npz", "a.png", "box.json"]
+    with np.load(tmp_path / "a.npz") as ids:
+        assert ids["kind"].shape == ids["index"].shape == (200, 320)
+
+
+@pytest.mark.parametrize("flag, value", [
+    ("--at", "1e308,-1e308"), ("--at", "0,1e9"), ("--z", "1e308"), ("--z", "-1e30"),
+    ("--angle", "1e300"), ("--angle", "inf"), ("--fov", "0"), ("--fov", "179.5"),
+])
+def test_numbers_out_of_range_are_one_line_exit_2(tmp_path, capsys, flag, value):
+    out = tmp_path / "a.png"
+    _one_line_exit_2(["render", _box(tmp_path), "-o", out, f"{flag}={value}"], capsys, flag)
+    assert not out.exists()
+
+
+def test_numbers_at_the_edge_of_the_range_render_without_warnings(tmp_path, capsys):
+    level, out = _box(tmp_path), tmp_path / "a.png"
+    edge = str(2 ** 24)
+    code, _, err = _run(["render", level, "-o", out, f"--at=-{edge},{edge}", f"--z=-{edge}",
+                         "--angle=36000", "--fov=179"], capsys)
+    assert code == 0 and err == "" and out.exists()
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")           # a numpy overflow warning would raise here
+        assert _run(["render", level, "-o", out, f"--z={edge}", "--at=128,128"], capsys)[0] == 0
+
+
+def test_draw_size_is_capped_like_render(tmp_path, capsys):
+    level = _box(tmp_path)
+    for size in ("100000", "63", "big"):
+        _one_line_exit_2(["draw", level, "-o", tmp_path / "d.png", "--size", size], capsys,
+                         "--size")
+    assert not (tmp_path / "d.png").exists()
+
+
+def test_walk_with_a_driver_that_shows_nothing_is_no_display(tmp_path, capsys, monkeypatch):
+    monkeypatch.setenv("SDL_VIDEODRIVER", "dummy")
+    _one_line_exit_2(["walk", _box(tmp_path)], capsys, "no display", "--frames")
+
+
+def test_walk_checks_its_screenshot_path_before_walking(tmp_path, capsys):
+    _one_line_exit_2(["walk", _box(tmp_path), "--frames", "2", "--screenshot",
+                      tmp_path / "nodir" / "s.png"], capsys, "nodir")

@@ -1,67 +1,55 @@
-"""The pygame walkthrough (SPEC §6 ``wallbsp walk``): walk a compiled level in a window.
+"""The pygame walkthrough (SPEC §6 ``wallbsp walk``): the window around the game.
 
-The only module that opens pygame's display.  It initialises the display and the font
-module only (``pygame.display.init()``, ``pygame.font.init()``), never audio.
+The only module that opens pygame's display, and only when a walkthrough starts: importing
+it loads no pygame.  It initialises the display and fonts only, never audio.  What the player
+does is ``game.player`` (pure code, tic by tic); this module turns events into the player's
+inputs and draws the view and the HUD.  One frame: ``handle_events`` -> ``update_player``
+(the tics due, 35 a second, each with the inputs held now) -> ``draw_frame`` (render at the
+internal resolution, scale into the window, then automap, readout, help, message) -> flip.
+No ``clock.tick`` unless a frame cap (``max_fps``) is asked for.
 
-One frame, each step a function:  measure the frame time -> ``handle_events`` ->
-``update_player`` -> ``draw_frame`` (``render_view``: render at the internal resolution,
-``blit_array`` onto a cached surface, scale into the window; ``draw_overlays``: automap,
-readout, help line, message) -> flip.  Nothing else waits: no ``clock.tick`` unless a frame
-cap (``max_fps``) is asked for.
+Keys: W/S or Up/Down forward/back, A/D strafe, Left/Right or the mouse (grab with M) to turn
+(DOOM's key turning: slow for ``SLOW_TURN_TICS`` tics, then ``TURN_WALK``/``TURN_RUN`` a
+tic), Shift run, Tab automap, O map overlay/full, L partition lines on the map, R or F1
+readout, P front-to-back / painter's, [ ] internal resolution, F or F11 fullscreen, K or F12
+screenshot (``wallbsp-shot-NNN.png`` here), H help line, Esc quit.
 
-Keys: W/S or Up/Down forward/back, A/D strafe, Left/Right or the mouse (grab with M) to turn,
-Shift to run, Tab automap, O map overlay/full, L partition lines on the map, R or F1 readout,
-P front-to-back / painter's, [ ] internal resolution, F or F11 fullscreen, K or F12 screenshot
-(``wallbsp-shot-NNN.png`` in the current directory), H help line, Esc quit.
-
-Speeds are in map units (degrees) per second, scaled by the measured frame time (clamped to
-``MAX_FRAME_TIME``), so the frame rate does not change how fast one walks.  The eye is
-``EYE_HEIGHT`` above the floor the player stands on (``collide.floor_z``, DOOM's floorz) and
-eases towards it over ``EYE_EASE`` seconds after a step, like DOOM's viewheight; diagonal
-motion is normalised (DOOM's faster strafe-running is not reproduced).
-
-Headless (``frames=N``): N frames with no input, turning ``turn`` degrees after each; when
-there is no display (``DISPLAY`` and ``WAYLAND_DISPLAY`` unset on a Unix other than macOS)
-SDL's dummy video driver is used.  The result is a ``Summary``: a dict whose ``str`` is the
-one-line report ``frames=N median_ms=... fps=... size=WxH order=...``.
+Headless (``frames=N``): N frames with no input, turning ``turn`` degrees after each, under
+SDL's dummy driver when there is no window system.  An interactive walkthrough with no
+display (none, or SDL's ``dummy``/``offscreen`` driver) is a ``NoDisplayError``.  The
+result is a ``Summary``, a dict whose ``str`` is ``frames=N median_ms=... fps=... size=WxH
+order=...``.
 """
 from __future__ import annotations
 
-import math
+import functools
 import os
 import statistics
 import sys
 import time
 from dataclasses import dataclass, field
+from types import SimpleNamespace
 
-import pygame
-
-from . import collide
-from .draw import node_depths, depth_color, partition_pieces
-from .rendering import Camera, render, save_png
+from .game.player import TICRATE, Player, player_tic, spawn_player
+from .image import save_png
+from .mapview import MapView, automap_layer, draw_marker, level_bounds, partition_pieces
+from .queries import PLAYER_RADIUS
+from .render import render
 
 RESOLUTIONS = ((160, 100), (320, 200), (640, 400), (800, 500), (1280, 800), (1600, 1000))
-WALK_SPEED = 250.0        # map units per second (DOOM walks at about this)
-RUN_SPEED = 500.0
-TURN_SPEED = 150.0        # degrees per second
-MOUSE_TURN = 0.15         # degrees per pixel of mouse motion
-EYE_HEIGHT = 41.0         # DOOM's VIEWHEIGHT
-EYE_EASE = 0.1            # seconds: time constant of the eye catching up with a step
-CEILING_GAP = 4.0         # DOOM keeps the eye this far under the ceiling
-MAX_FRAME_TIME = 0.1      # seconds: a hitch (window drag, swap) moves no further than this
+_BAM = 360.0 / 2 ** 16                  # degrees per unit of DOOM's angleturn
+TURN_SLOW, TURN_WALK, TURN_RUN = 320 * _BAM, 640 * _BAM, 1280 * _BAM   # degrees a tic
+SLOW_TURN_TICS = 6                      # DOOM turns slowly for the first tics a key is held
+MOUSE_TURN = 0.15                       # degrees per pixel of mouse motion
+MAX_FRAME_TIME = 0.1      # seconds: a hitch (window drag, swap) runs no more tics than this
 MESSAGE_SECONDS = 2.0
 SHOT_NAME = "wallbsp-shot-{:03d}.png"
-
-FORWARD, BACK = (pygame.K_w, pygame.K_UP), (pygame.K_s, pygame.K_DOWN)
-STRAFE_LEFT, STRAFE_RIGHT = (pygame.K_a,), (pygame.K_d,)
-TURN_LEFT, TURN_RIGHT = (pygame.K_LEFT,), (pygame.K_RIGHT,)
-RUN = (pygame.K_LSHIFT, pygame.K_RSHIFT)
+NO_DISPLAY_DRIVERS = ("dummy", "offscreen")   # SDL drivers that show nothing
 
 HELP = ("WASD/arrows move   Left/Right or mouse (M grab) turn   Shift run   Esc quit",
         "Tab map  O overlay  L lines  R stats  P painter  [ ] resolution  F fullscreen  "
         "K shot  H help")
 TEXT, SHADOW = (235, 235, 235), (0, 0, 0)
-MAP_BACKGROUND, PARTITION, PLAYER = (12, 12, 16), (48, 84, 120), (255, 255, 255)
 
 
 class NoDisplayError(RuntimeError):
@@ -77,25 +65,6 @@ class Summary(dict):
 
 
 @dataclass
-class Player:
-    x: float
-    y: float
-    angle: float
-    floor: float          # DOOM's floorz under the player (collide.floor_z)
-    eye: float            # absolute eye height, easing towards floor + EYE_HEIGHT
-
-    @classmethod
-    def at_start(cls, tree):
-        start = tree.level.start
-        floor = collide.floor_z(tree, start.x, start.y) or 0.0
-        return cls(float(start.x), float(start.y), float(start.angle), floor,
-                   floor + EYE_HEIGHT)
-
-    def camera(self, fov):
-        return Camera(self.x, self.y, self.eye, self.angle, fov)
-
-
-@dataclass
 class Walkthrough:
     """Everything the walkthrough keeps between frames."""
     tree: object
@@ -107,6 +76,8 @@ class Walkthrough:
     running: bool = True
     held: set = field(default_factory=set)     # keys down, from KEYDOWN/KEYUP events
     mouse_dx: float = 0.0
+    pending: float = 0.0             # seconds of game time not yet run as tics
+    turn_tics: int = 0               # tics a turn key has been held
     show_help: bool = True
     show_map: bool = False
     map_overlay: bool = False
@@ -124,6 +95,12 @@ class Walkthrough:
     map_cache: tuple = (None, None)  # (key, surface) of the automap's static layer
     partitions: list = None          # partition_pieces, computed on first use
 
+    @classmethod
+    def at_start(cls, tree, size=(320, 200), window=(960, 600), **options):
+        start = tree.level.start
+        return cls(tree, spawn_player(tree, start.x, start.y, start.angle), tuple(size),
+                   tuple(window), **options)
+
 
 # -- the entry point ------------------------------------------------------------------------------
 
@@ -131,15 +108,14 @@ def run_walkthrough(tree, *, size=(320, 200), window=(960, 600), frames=None, tu
                     screenshot=None, max_fps=None, order="front_to_back", fov=90.0) -> Summary:
     """Walk ``tree`` in a window; with ``frames=N`` render N frames headless and return the
     summary.  ``screenshot``: save the last frame (internal resolution) as a PNG."""
-    if frames is None and _no_display():
-        raise NoDisplayError("wallbsp walk: no display (DISPLAY and WAYLAND_DISPLAY are "
-                             "unset); use --frames N for a headless run")
-    if _no_display():
+    if frames is None:
+        check_display()
+    elif _no_window_system():
         os.environ["SDL_VIDEODRIVER"] = "dummy"
-    walk = Walkthrough(tree, Player.at_start(tree), tuple(size), tuple(window), order, fov)
+    walk = Walkthrough.at_start(tree, size, window, order=order, fov=fov)
     open_display(walk)
     try:
-        times = _frame_loop(walk, frames, turn, max_fps)
+        times = run_frames(walk, frames, turn, max_fps)
         if screenshot is not None and walk.frame is not None:
             save_png(screenshot, walk.frame.color)
     finally:
@@ -147,7 +123,21 @@ def run_walkthrough(tree, *, size=(320, 200), window=(960, 600), frames=None, tu
     return _summary(walk, times)
 
 
-def _no_display() -> bool:
+def check_display() -> None:
+    """``NoDisplayError`` when an interactive window cannot be shown here: no window
+    system, or an SDL video driver that shows nothing."""
+    driver = os.environ.get("SDL_VIDEODRIVER", "").strip().lower()
+    if driver in NO_DISPLAY_DRIVERS:
+        problem = f"SDL_VIDEODRIVER={driver} shows nothing"
+    elif _no_window_system():
+        problem = "DISPLAY and WAYLAND_DISPLAY are unset"
+    else:
+        return
+    raise NoDisplayError(f"wallbsp walk: no display ({problem}); use --frames N for a "
+                         f"headless run")
+
+
+def _no_window_system() -> bool:
     """No X11 or Wayland display on a Unix that needs one, and no driver chosen by the user."""
     if "SDL_VIDEODRIVER" in os.environ or os.name != "posix" or sys.platform == "darwin":
         return False
@@ -155,6 +145,7 @@ def _no_display() -> bool:
 
 
 def open_display(walk):
+    import pygame
     pygame.display.init()
     pygame.font.init()
     walk.display = pygame.display.set_mode(walk.window, pygame.RESIZABLE)
@@ -163,13 +154,15 @@ def open_display(walk):
 
 
 def close_display(walk):
+    import pygame
     if walk.mouse_grab:
         _toggle_mouse_grab(walk)
     pygame.display.quit()
 
 
-def _frame_loop(walk, frames, turn, max_fps):
-    """Run frames until quit (or N frames); return each frame's measured seconds."""
+def run_frames(walk, frames=None, turn=0.0, max_fps=None):
+    """Run frames until quit (or N headless frames); return each frame's measured seconds."""
+    import pygame
     clock = pygame.time.Clock() if max_fps else None
     times, last = [], time.perf_counter()
     while walk.running and (frames is None or len(times) < frames):
@@ -218,8 +211,34 @@ def _summary(walk, times) -> Summary:
 
 # -- input ----------------------------------------------------------------------------------------
 
+@functools.cache
+def bindings():
+    """The key bindings (pygame key codes, read when first needed)."""
+    import pygame
+    return SimpleNamespace(
+        forward=(pygame.K_w, pygame.K_UP), back=(pygame.K_s, pygame.K_DOWN),
+        strafe_left=(pygame.K_a,), strafe_right=(pygame.K_d,),
+        turn_left=(pygame.K_LEFT,), turn_right=(pygame.K_RIGHT,),
+        run=(pygame.K_LSHIFT, pygame.K_RSHIFT),
+        actions={
+            pygame.K_ESCAPE: _quit,
+            pygame.K_TAB: _toggle("show_map"),
+            pygame.K_o: _toggle("map_overlay"),
+            pygame.K_l: _toggle("show_partitions"),
+            pygame.K_r: _toggle("show_readout"), pygame.K_F1: _toggle("show_readout"),
+            pygame.K_h: _toggle("show_help"),
+            pygame.K_p: _toggle_order,
+            pygame.K_m: _toggle_mouse_grab,
+            pygame.K_f: _toggle_fullscreen, pygame.K_F11: _toggle_fullscreen,
+            pygame.K_k: save_screenshot, pygame.K_F12: save_screenshot,
+            pygame.K_LEFTBRACKET: lambda walk: _next_resolution(walk, -1),
+            pygame.K_RIGHTBRACKET: lambda walk: _next_resolution(walk, 1),
+        })
+
+
 def handle_events(walk, keys=True):
     """Drain the event queue: quit, resize, and (unless ``keys`` is False) keys and mouse."""
+    import pygame
     for event in pygame.event.get():
         if event.type == pygame.QUIT:
             walk.running = False
@@ -240,7 +259,7 @@ def handle_events(walk, keys=True):
 
 def handle_key(walk, key):
     """The one-shot keys (toggles and commands); held keys are read in update_player."""
-    action = _KEY_ACTIONS.get(key)
+    action = bindings().actions.get(key)
     if action is not None:
         action(walk)
 
@@ -261,6 +280,7 @@ def _toggle_order(walk):
 
 
 def _toggle_mouse_grab(walk):
+    import pygame
     walk.mouse_grab = not walk.mouse_grab
     # grabbed and hidden: SDL's relative mouse mode, so turning never hits the screen edge
     pygame.event.set_grab(walk.mouse_grab)
@@ -270,6 +290,7 @@ def _toggle_mouse_grab(walk):
 
 
 def _toggle_fullscreen(walk):
+    import pygame
     walk.fullscreen = not walk.fullscreen
     if walk.fullscreen:
         walk.window = walk.display.get_size()
@@ -280,6 +301,7 @@ def _toggle_fullscreen(walk):
 
 
 def _on_resize(walk):
+    import pygame
     walk.display = pygame.display.get_surface()
     if not walk.fullscreen:
         walk.window = walk.display.get_size()
@@ -315,63 +337,40 @@ def _say(walk, text):
     walk.message, walk.message_until = text, time.perf_counter() + MESSAGE_SECONDS
 
 
-_KEY_ACTIONS = {
-    pygame.K_ESCAPE: _quit,
-    pygame.K_TAB: _toggle("show_map"),
-    pygame.K_o: _toggle("map_overlay"),
-    pygame.K_l: _toggle("show_partitions"),
-    pygame.K_r: _toggle("show_readout"), pygame.K_F1: _toggle("show_readout"),
-    pygame.K_h: _toggle("show_help"),
-    pygame.K_p: _toggle_order,
-    pygame.K_m: _toggle_mouse_grab,
-    pygame.K_f: _toggle_fullscreen, pygame.K_F11: _toggle_fullscreen,
-    pygame.K_k: save_screenshot, pygame.K_F12: save_screenshot,
-    pygame.K_LEFTBRACKET: lambda walk: _next_resolution(walk, -1),
-    pygame.K_RIGHTBRACKET: lambda walk: _next_resolution(walk, 1),
-}
-
-
-# -- the player -----------------------------------------------------------------------------------
+# -- the player: held keys -> one tic's inputs ------------------------------------------------------
 
 def _axis(held, plus, minus) -> int:
     return any(k in held for k in plus) - any(k in held for k in minus)
 
 
-def update_player(walk, dt):
-    """Turn, move through collide.move, and let the eye follow the floor, for ``dt`` s."""
-    player, held = walk.player, walk.held
-    turn = _axis(held, TURN_LEFT, TURN_RIGHT) * TURN_SPEED * dt - walk.mouse_dx * MOUSE_TURN
-    player.angle = (player.angle + turn) % 360.0
+def tic_inputs(walk):
+    """``(forward, strafe, turn, run)`` for the next tic from the keys held and the mouse
+    moved since the last tic (SPEC §8's inputs)."""
+    held, keys = walk.held, bindings()
+    running = any(k in held for k in keys.run)
+    turning = _axis(held, keys.turn_left, keys.turn_right)
+    walk.turn_tics = walk.turn_tics + 1 if turning else 0
+    speed = TURN_SLOW if walk.turn_tics <= SLOW_TURN_TICS else (TURN_RUN if running else TURN_WALK)
+    turn = turning * speed - walk.mouse_dx * MOUSE_TURN
     walk.mouse_dx = 0.0
-    forward, right = _axis(held, FORWARD, BACK), _axis(held, STRAFE_RIGHT, STRAFE_LEFT)
-    if forward or right:
-        speed = RUN_SPEED if any(k in held for k in RUN) else WALK_SPEED
-        a = math.radians(player.angle)
-        # SPEC §4: forward F = (cos a, sin a), right R = (sin a, -cos a)
-        mx = forward * math.cos(a) + right * math.sin(a)
-        my = forward * math.sin(a) - right * math.cos(a)
-        step = speed * dt / math.hypot(mx, my)
-        player.x, player.y = collide.move(walk.tree, player.x, player.y,
-                                          mx * step, my * step, player.floor)
-    _follow_floor(walk, dt)
+    return (_axis(held, keys.forward, keys.back), _axis(held, keys.strafe_right, keys.strafe_left),
+            turn, running)
 
 
-def _follow_floor(walk, dt):
-    """DOOM's viewheight: the eye eases to EYE_HEIGHT over the new floor, under the ceiling."""
-    player, tree = walk.player, walk.tree
-    floor = collide.floor_z(tree, player.x, player.y)
-    if floor is None:
-        return
-    player.floor = floor
-    target = floor + EYE_HEIGHT
-    player.eye += (target - player.eye) * (1.0 - math.exp(-dt / EYE_EASE))
-    ceiling = tree.level.sectors[tree.locate(player.x, player.y)].ceiling
-    player.eye = min(player.eye, max(ceiling - CEILING_GAP, floor + 1.0))
+def update_player(walk, dt):
+    """Run the tics that ``dt`` more seconds make due (TICRATE a second)."""
+    walk.pending += dt
+    tics = int(walk.pending * TICRATE + 1e-9)     # a hair: k/35 s is k tics despite rounding
+    walk.pending -= tics / TICRATE
+    for _ in range(tics):
+        forward, strafe, turn, running = tic_inputs(walk)
+        player_tic(walk.tree, walk.player, forward, strafe, turn, running)
 
 
 # -- drawing --------------------------------------------------------------------------------------
 
 def draw_frame(walk):
+    import pygame
     render_view(walk)
     draw_overlays(walk)
     pygame.display.flip()
@@ -379,6 +378,7 @@ def draw_frame(walk):
 
 def render_view(walk):
     """Render at the internal resolution; one blit_array, one scale into the window."""
+    import pygame
     width, height = walk.size
     walk.frame = render(walk.tree, walk.player.camera(walk.fov), width, height, order=walk.order)
     if walk.surface is None or walk.surface.get_size() != walk.size:
@@ -421,70 +421,21 @@ def _draw_text_block(walk, lines, topleft):
 
 # -- the automap ----------------------------------------------------------------------------------
 
-class _MapView:
-    """Map units to window pixels: the level's bounds fitted in the window, y up."""
-
-    def __init__(self, tree, size, margin=24):
-        xs = [v[0] for v in tree.level.vertices] or [0]
-        ys = [v[1] for v in tree.level.vertices] or [0]
-        self.x0, self.y1 = min(xs), max(ys)
-        span = max(max(xs) - self.x0, self.y1 - min(ys), 1)
-        self.scale = min(size[0] - 2 * margin, size[1] - 2 * margin) / span
-        self.ox = (size[0] - (max(xs) - self.x0) * self.scale) / 2
-        self.oy = (size[1] - (self.y1 - min(ys)) * self.scale) / 2
-
-    def __call__(self, x, y):
-        return (self.ox + (x - self.x0) * self.scale, self.oy + (self.y1 - y) * self.scale)
-
-
 def draw_automap(walk):
     """The static layer (cached per window size and mode), then the player and view cone."""
     size = walk.display.get_size()
+    view = MapView.centred(level_bounds(walk.tree), size)
     key = (size, walk.map_overlay, walk.show_partitions)
     if walk.map_cache[0] != key:
-        walk.map_cache = (key, _map_layer(walk, size))
+        walk.map_cache = (key, _map_layer(walk, size, view))
     walk.display.blit(walk.map_cache[1], (0, 0))
-    _draw_player_marker(walk, _MapView(walk.tree, size))
-
-
-def _map_layer(walk, size):
-    """Segs coloured by the depth of their node (partition lines under them on request);
-    black is transparent in overlay mode, so the view shows through."""
-    tree, view = walk.tree, _MapView(walk.tree, size)
-    layer = pygame.Surface(size, 0, walk.display)
-    layer.fill((0, 0, 0) if walk.map_overlay else MAP_BACKGROUND)
-    if walk.map_overlay:
-        layer.set_colorkey((0, 0, 0))
-    if walk.show_partitions:
-        _draw_partitions(walk, layer, view)
-    depth = node_depths(tree)
-    levels = max(depth, default=0) + 1
-    two_sided = [w.back is not None for w in tree.level.walls]
-    for node, (start, stop) in enumerate(tree.node_segs.tolist()):
-        color = depth_color(depth[node], levels)
-        for seg in range(start, stop):
-            x1, y1, x2, y2 = tree.seg_xy[seg].tolist()
-            width = 1 if two_sided[tree.seg_wall[seg]] else 2
-            pygame.draw.line(layer, color, view(x1, y1), view(x2, y2), width)
-    return layer
-
-
-def _draw_partitions(walk, layer, view):
-    if walk.partitions is None:
-        xs = [v[0] for v in walk.tree.level.vertices] or [0]
-        ys = [v[1] for v in walk.tree.level.vertices] or [0]
-        walk.partitions = partition_pieces(walk.tree, (min(xs), min(ys), max(xs), max(ys)))
-    for _node, p, q in walk.partitions:
-        pygame.draw.line(layer, PARTITION, view(*p), view(*q), 1)
-
-
-def _draw_player_marker(walk, view):
     player = walk.player
-    centre = view(player.x, player.y)
-    pygame.draw.circle(walk.display, PLAYER, centre,
-                       max(3, round(collide.PLAYER_RADIUS * view.scale)), 1)
-    reach = max(40.0, 256.0 * view.scale)        # the cone: 256 map units, at least 40 px
-    for side in (-1, 1):
-        a = math.radians(player.angle + side * walk.fov / 2)
-        tip = (centre[0] + reach * math.cos(a), centre[1] - reach * math.sin(a))
-        pygame.draw.line(walk.display, PLAYER, centre, tip, 1)
+    draw_marker(walk.display, view, (player.x, player.y), PLAYER_RADIUS, player.angle, walk.fov)
+
+
+def _map_layer(walk, size, view):
+    if walk.show_partitions and walk.partitions is None:
+        walk.partitions = partition_pieces(walk.tree, level_bounds(walk.tree))
+    return automap_layer(walk.tree, view, size, walk.display, walk.map_overlay,
+                         walk.partitions if walk.show_partitions else None)
+

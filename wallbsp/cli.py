@@ -13,9 +13,13 @@ import sys
 import time
 
 from .build import DEFAULT_CANDIDATES
+from .files import write_atomically
 from .level import LevelError
 
-EYE_HEIGHT = 41          # DOOM's view height above the floor
+MAX_COORDINATE = 2 ** 24  # --at and --z: 16 times the largest map (SPEC §1)
+MAX_ANGLE = 36000         # --angle: a hundred turns either way
+MAX_SIDE = 8192           # pixels: the longest side of any picture
+MAX_SEED = 2 ** 63 - 1
 
 
 class UsageError(Exception):
@@ -106,24 +110,84 @@ def _finite(text):
     return value
 
 
+def _bounded(low, high, kind=_finite, what="a number"):
+    """An argument type: ``kind(text)`` within [low, high], else one clear line."""
+    def parse(text):
+        value = kind(text)
+        if not low <= value <= high:
+            raise argparse.ArgumentTypeError(f"expected {what} from {low} to {high}, "
+                                             f"not {text!r}")
+        return value
+    return parse
+
+
+def _integer(text):
+    try:
+        return int(text)
+    except ValueError:
+        raise argparse.ArgumentTypeError(f"expected an integer, not {text!r}") from None
+
+
+_coordinate = _bounded(-MAX_COORDINATE, MAX_COORDINATE)
+
+
 def _pair(kind, sep):
     def parse(text):
         parts = text.split(sep)
-        try:
-            values = [kind(p) for p in parts]
-        except (ValueError, argparse.ArgumentTypeError):
-            values = []
-        if len(values) != 2:
+        if len(parts) != 2:
             raise argparse.ArgumentTypeError(f"expected two numbers as A{sep}B, not {text!r}")
-        return tuple(values)
+        try:
+            return tuple(kind(p) for p in parts)
+        except ValueError:
+            raise argparse.ArgumentTypeError(f"expected two numbers as A{sep}B, "
+                                             f"not {text!r}") from None
+        except argparse.ArgumentTypeError as err:
+            raise argparse.ArgumentTypeError(f"{text!r}: {err}") from None
     return parse
 
 
 def _size(text):
     w, h = _pair(int, "x")(text.lower())
-    if not (1 <= w <= 8192 and 1 <= h <= 8192):
-        raise argparse.ArgumentTypeError(f"size out of range 1..8192: {text!r}")
+    if not (1 <= w <= MAX_SIDE and 1 <= h <= MAX_SIDE):
+        raise argparse.ArgumentTypeError(f"size out of range 1..{MAX_SIDE}: {text!r}")
     return w, h
+
+
+# -- outputs: all or none ----------------------------------------------------------------------
+def check_outputs(command, outputs, inputs=()):
+    """Refuse, before anything is read or computed, output paths that cannot be written:
+    a missing or read-only folder, a directory, one path named twice, an input file."""
+    seen = {os.path.realpath(p): "the input" for p in inputs if p and p != "-"}
+    for path in filter(None, outputs):
+        full = os.path.realpath(path)
+        folder = os.path.dirname(full)
+        if full in seen:
+            raise UsageError(f"{path}: named as {seen[full]} of wallbsp {command} too")
+        seen[full] = "another output"
+        if os.path.isdir(full):
+            raise UsageError(f"{path}: is a directory")
+        if not os.path.isdir(folder):
+            raise UsageError(f"{path}: folder {os.path.dirname(path) or '.'} does not exist")
+        if not os.access(folder, os.W_OK):
+            raise UsageError(f"{path}: folder {os.path.dirname(path) or '.'} is not writable")
+
+
+def write_outputs(outputs: dict) -> None:
+    """Write ``{path: bytes}`` together: each file is staged beside its target first and
+    only when every one is complete are they all renamed into place."""
+    staged = []
+    try:
+        for path, data in outputs.items():
+            folder, name = os.path.split(os.fspath(path))
+            stage = os.path.join(folder, f".{name}.{os.getpid()}.partial")
+            write_atomically(stage, data)
+            staged.append((stage, path))
+        for stage, path in staged:
+            os.replace(stage, path)
+    finally:
+        for stage, _ in staged:
+            if os.path.lexists(stage):
+                os.unlink(stage)
 
 
 def _default_output(level_path: str, suffix: str) -> str:
@@ -149,9 +213,10 @@ def _print_stats(stats: dict, as_json: bool):
 # -- commands ------------------------------------------------------------------------------
 def cmd_compile(args):
     from .build import compile_level
+    out = args.output or _default_output(args.level, ".wbsp")
+    check_outputs("compile", [out], [args.level])
     level = load_source(args.level, strict=args.strict)
     tree = compile_level(level, args.candidates, args.seed, progress=_Progress())
-    out = args.output or _default_output(args.level, ".wbsp")
     tree.save(out)
     stats = tree.stats()
     stats["output"] = out
@@ -163,46 +228,59 @@ def cmd_stats(args):
 
 
 def cmd_draw(args):
-    from .draw import draw_partition
+    from .mapview import draw_partition
+    check_outputs("draw", [args.output], [args.source])
     tree = load_any(args.source, args, strict=args.strict)
     draw_partition(tree, args.output, size=args.size)
 
 
 def camera_for(tree, args):
-    """The camera the user asked for; anything left out comes from the level's start."""
-    from .camera import Camera
+    """The camera the user asked for; anything left out comes from the level's start
+    (the eye over the floor there: ``camera.eye_camera``'s one rule)."""
+    from .camera import Camera, eye_camera
+    from .world import state_of
     start = tree.level.start
     x, y = args.at if args.at else (start.x, start.y)
     angle = start.angle if args.angle is None else args.angle
-    z = args.z
-    if z is None:
-        sector = tree.locate(x, y)
-        floor = tree.level.sectors[sector].floor if sector is not None else 0
-        z = floor + EYE_HEIGHT
-    return Camera(x, y, z, angle, args.fov)
+    if args.z is not None:
+        return Camera(x, y, args.z, angle, args.fov)
+    return eye_camera(state_of(tree), x, y, angle, args.fov)
+
+
+def _ids_bytes(frame) -> bytes:
+    import io
+    import numpy as np
+    buf = io.BytesIO()
+    np.savez(buf, kind=np.ascontiguousarray(frame.kind), index=np.ascontiguousarray(frame.index))
+    return buf.getvalue()
 
 
 def cmd_render(args):
-    from .image import save_png
-    from .render import render, save_ids
+    from .image import png_bytes
+    from .render import render
+    check_outputs("render", [args.output, args.ids], [args.source])
     tree = load_any(args.source, args, strict=args.strict)
     width, height = args.size
     frame = render(tree, camera_for(tree, args), width, height,
                    order="back_to_front" if args.painter else "front_to_back")
-    save_png(args.output, frame.color)
+    outputs = {args.output: png_bytes(frame.color)}
     if args.ids:
-        save_ids(args.ids, frame)
+        outputs[args.ids] = _ids_bytes(frame)
+    write_outputs(outputs)
     if args.json:
         print(json.dumps(frame.stats, sort_keys=True))
 
 
 def cmd_walk(args):
-    from .app import NoDisplayError, run_walkthrough
+    from .app import NoDisplayError, check_display, run_walkthrough
     if args.level is None:
         from importlib.resources import files
         args.level = str(files("wallbsp") / "data" / "default.json")
-    tree = load_any(args.level, args, strict=args.strict)
+    check_outputs("walk", [args.screenshot], [args.level])
     try:
+        if args.frames is None:
+            check_display()      # before the level is compiled: that may take a while
+        tree = load_any(args.level, args, strict=args.strict)
         summary = run_walkthrough(tree, size=args.size, frames=args.frames, turn=args.turn,
                                   screenshot=args.screenshot, max_fps=args.max_fps)
     except NoDisplayError as err:
@@ -213,6 +291,7 @@ def cmd_walk(args):
 
 def cmd_import_wad(args):
     from . import wad
+    check_outputs("import-wad", [args.output], [args.wad])
     level = wad.load_wad_level(args.wad, args.map, strict=args.strict)
     for warning in level.warnings:
         print(f"warning: {warning}", file=sys.stderr)
@@ -225,7 +304,8 @@ def _add_build_options(p):
     p.add_argument("--candidates", type=_candidates, default=None, metavar="K",
                    help=f"random splitter candidates per node, or 'all' (exhaustive); "
                         f"default {DEFAULT_CANDIDATES}")
-    p.add_argument("--seed", type=int, default=0, metavar="N", help="seed of the candidate draw (default 0)")
+    p.add_argument("--seed", type=_bounded(0, MAX_SEED, _integer, "an integer"), default=0,
+                   metavar="N", help="seed of the candidate draw, 0 or more (default 0)")
 
 
 def _add_strict(p):
@@ -242,10 +322,13 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("level", nargs="?", help="level, tree or WAD:MAP (default: the bundled level)")
     p.add_argument("--size", type=_size, default=(320, 200), metavar="WxH",
                    help="internal resolution (default 320x200)")
-    p.add_argument("--frames", type=int, default=None, help="render N frames headless and report")
-    p.add_argument("--turn", type=_finite, default=0.0, help="degrees to turn per headless frame")
+    p.add_argument("--frames", type=_bounded(1, 10 ** 7, _integer, "a whole number"),
+                   default=None, help="render N frames headless and report")
+    p.add_argument("--turn", type=_bounded(-360, 360), default=0.0,
+                   help="degrees to turn per headless frame")
     p.add_argument("--screenshot", help="save the last frame as PNG")
-    p.add_argument("--max-fps", type=_finite, default=None, help="frame cap (default: none)")
+    p.add_argument("--max-fps", type=_bounded(1, 1000), default=None,
+                   help="frame cap (default: none)")
     _add_build_options(p), _add_strict(p)
     p.set_defaults(func=cmd_walk)
 
@@ -258,10 +341,13 @@ def build_parser() -> argparse.ArgumentParser:
 
     p = sub.add_parser("render", help="render one frame to PNG, headless")
     p.add_argument("source", metavar="LEVEL_OR_TREE")
-    p.add_argument("--at", type=_pair(_finite, ","), metavar="X,Y", help="camera position X,Y (default: start)")
-    p.add_argument("--z", type=_finite, metavar="Z", help="eye height (default: floor + 41)")
-    p.add_argument("--angle", type=_finite, metavar="A", help="view angle in degrees (default: start)")
-    p.add_argument("--fov", type=_finite, default=90.0, metavar="F", help="horizontal field of view (default 90)")
+    p.add_argument("--at", type=_pair(_coordinate, ","), metavar="X,Y",
+                   help=f"camera position X,Y, each within ±{MAX_COORDINATE} (default: start)")
+    p.add_argument("--z", type=_coordinate, metavar="Z", help="eye height (default: floor + 41)")
+    p.add_argument("--angle", type=_bounded(-MAX_ANGLE, MAX_ANGLE), metavar="A",
+                   help="view angle in degrees (default: start)")
+    p.add_argument("--fov", type=_bounded(1, 179), default=90.0, metavar="F",
+                   help="horizontal field of view, 1 to 179 (default 90)")
     p.add_argument("--size", type=_size, default=(320, 200), metavar="WxH",
                    help="frame size (default 320x200)")
     p.add_argument("--painter", action="store_true", help="use the back-to-front renderer")
@@ -280,7 +366,8 @@ def build_parser() -> argparse.ArgumentParser:
     p = sub.add_parser("draw", help="a picture of the partition (PNG)")
     p.add_argument("source", metavar="LEVEL_OR_TREE")
     p.add_argument("-o", "--output", required=True, metavar="PNG", help="PNG to write")
-    p.add_argument("--size", type=int, default=1024, help="longest side in pixels (default 1024)")
+    p.add_argument("--size", type=_bounded(64, MAX_SIDE, _integer, "a whole number"),
+                   default=1024, help=f"longest side in pixels, 64 to {MAX_SIDE} (default 1024)")
     _add_build_options(p), _add_strict(p)
     p.set_defaults(func=cmd_draw)
 
@@ -293,19 +380,9 @@ def build_parser() -> argparse.ArgumentParser:
     return parser
 
 
-def _check_arguments(args):
-    if getattr(args, "frames", None) is not None and args.frames < 1:
-        raise UsageError(f"wallbsp {args.command}: --frames must be at least 1")
-    if getattr(args, "fov", None) is not None and not 1 <= args.fov <= 179:
-        raise UsageError(f"wallbsp {args.command}: --fov must be between 1 and 179 degrees")
-    if getattr(args, "size", None) is not None and isinstance(args.size, int) and args.size < 64:
-        raise UsageError(f"wallbsp {args.command}: --size must be at least 64")
-
-
 def main(argv=None) -> int:
     try:
         args = build_parser().parse_args(argv)
-        _check_arguments(args)
         args.func(args)
     except UsageError as err:
         print(str(err), file=sys.stderr)
