@@ -126,3 +126,26 @@ def test_close_then_open_after_30_seconds():
     assert heights[63] == 0                         # shut after 64 tics
     assert heights[64 + 30 * 35 - 1] == 0           # still shut 30 s later
     assert heights[-1] == 128 and rules.active_movers == 0   # back to where it was
+
+
+def test_monsters_open_plain_doors_but_never_locked_ones_and_never_close_them():
+    level = door_level()
+    rules, state = rules_for(level)
+    wall = wall_between(level, 0)
+    rules.use_line(wall, 0, monster=True)
+    run(rules, state, 70)
+    rules.use_line(wall, 0, monster=True)           # waiting open: a monster leaves it
+    assert run(rules, state, 1) == [124]
+    locked = door_level(special=26)
+    rules, state = rules_for(locked)
+    assert rules.use_line(wall_between(locked, 0), 0, monster=True) is None
+    assert rules.active_movers == 0
+
+
+def test_raise_ceiling_lower_floor_line_raises_only_the_ceiling_as_in_doom():
+    level = corridor([room(ceiling=200), room(floor=32, ceiling=96, tag=5)],
+                     between={0: dict(special=40, tag=5)})
+    rules, state = rules_for(level)
+    rules.cross_line(wall_between(level, 0), 0)
+    run(rules, state, 200)
+    assert (state.floor[1], state.ceiling[1]) == (32, 200)

@@ -29,7 +29,8 @@ from dataclasses import dataclass
 import numpy as np
 
 from . import actions, lights
-from .movers import Ceiling, Door, DoorKind, Plat, RAISE_IN_5_MINS_WAIT, CLOSE30_WAIT
+from .actions import FloorKind
+from .movers import CLOSE30_WAIT, RAISE_IN_5_MINS_WAIT, Ceiling, CeilingKind, Door, DoorKind, Plat
 from .neighbours import Neighbours
 from .specials import LINE_SPECIALS, LineSpecial
 from .switches import Buttons
@@ -79,12 +80,64 @@ def spawns(flags: int, skill: int) -> bool:
     return bool(flags & bit)
 
 
+def _scrolling_walls(specials, rate: int) -> np.ndarray:
+    """The walls whose special scrolls their texture ``rate`` units a tic."""
+    return np.array([i for i, n in enumerate(specials) if n in LINE_SPECIALS
+                     and LINE_SPECIALS[n].action == "scroll" and LINE_SPECIALS[n].arg == rate],
+                    dtype=np.int64)
+
+
 def _never_blocked(sector, floor, ceiling) -> bool:
     return False
 
 
 def _no_height(name) -> int:
     return 0
+
+
+def _raise_ceiling_lower_floor(rules, tag: int) -> bool:
+    # DOOM starts the ceiling first, so the floor of a sector it moves stays where it is
+    raised = actions.do_ceiling(rules, tag, CeilingKind.RAISE_TO_HIGHEST)
+    return actions.do_floor(rules, tag, FloorKind.LOWER_TO_LOWEST) or raised
+
+
+# Light changes and exits always "start" something: their switches always change.
+def _set_light(rules, tag: int, level: int) -> bool:
+    lights.light_turn_on(rules, tag, level)
+    return True
+
+
+def _darken(rules, tag: int) -> bool:
+    lights.lights_to_darkest_neighbour(rules, tag)
+    return True
+
+
+def _strobe(rules, tag: int) -> bool:
+    rules.lights.extend(lights.start_strobing(rules, tag))
+    return True
+
+
+def _leave(rules, kind: str) -> bool:
+    rules.exit = kind
+    return True
+
+
+# action name (specials.LineSpecial.action) -> what it does: (rules, tag, arg, front sector)
+_ACTIONS = {
+    "door": lambda r, tag, kind, front: actions.do_door(r, tag, kind),
+    "plat": lambda r, tag, kind, front: actions.do_plat(r, tag, kind[0], kind[1], front),
+    "stop_plats": lambda r, tag, _, front: actions.stop_plats(r, tag),
+    "floor": lambda r, tag, kind, front: actions.do_floor(r, tag, kind, front),
+    "ceiling": lambda r, tag, kind, front: actions.do_ceiling(r, tag, kind),
+    "stop_crushers": lambda r, tag, _, front: actions.stop_crushers(r, tag),
+    "ceiling_and_floor": lambda r, tag, _, front: _raise_ceiling_lower_floor(r, tag),
+    "stairs": lambda r, tag, kind, front: actions.build_stairs(r, tag, kind),
+    "donut": lambda r, tag, _, front: actions.do_donut(r, tag),
+    "light": lambda r, tag, level, front: _set_light(r, tag, level),
+    "darkest_light": lambda r, tag, _, front: _darken(r, tag),
+    "strobe": lambda r, tag, _, front: _strobe(r, tag),
+    "exit": lambda r, tag, kind, front: _leave(r, kind),
+}
 
 
 class Rules:
@@ -112,11 +165,7 @@ class Rules:
         self.secrets_found = 0
         self.secrets_total = 0
         self._rng = random.Random(seed)
-        self._scroll = {rate: np.array([i for i, n in enumerate(self.specials)
-                                        if LINE_SPECIALS.get(n) is not None
-                                        and LINE_SPECIALS[n].action == "scroll"
-                                        and LINE_SPECIALS[n].arg == rate], dtype=np.int64)
-                        for rate in (1, -1)}
+        self._scroll = {rate: _scrolling_walls(self.specials, rate) for rate in (1, -1)}
         self._destinations = None
         for s, special in enumerate(self.sector_specials):
             if special:
@@ -232,36 +281,7 @@ class Rules:
     def _fire(self, wall: int, entry: LineSpecial) -> bool:
         """Do what ``entry`` does for ``wall``; whether it started anything."""
         w = self.level.walls[wall]
-        tag, kind = w.tag, entry.arg
-        act = entry.action
-        if act == "door":
-            return actions.do_door(self, tag, kind)
-        if act == "plat":
-            return actions.do_plat(self, tag, kind[0], kind[1], w.front)
-        if act == "floor":
-            return actions.do_floor(self, tag, kind, w.front)
-        if act == "ceiling":
-            return actions.do_ceiling(self, tag, kind)
-        if act == "ceiling_and_floor":
-            raised = actions.do_ceiling(self, tag, actions.CeilingKind.RAISE_TO_HIGHEST)
-            return actions.do_floor(self, tag, actions.FloorKind.LOWER_TO_LOWEST) or raised
-        if act == "stairs":
-            return actions.build_stairs(self, tag, kind)
-        if act == "donut":
-            return actions.do_donut(self, tag)
-        if act == "stop_plats":
-            return actions.stop_plats(self, tag)
-        if act == "stop_crushers":
-            return actions.stop_crushers(self, tag)
-        if act == "light":
-            lights.light_turn_on(self, tag, kind)
-        elif act == "darkest_light":
-            lights.lights_to_darkest_neighbour(self, tag)
-        elif act == "strobe":
-            self.lights.extend(lights.start_strobing(self, tag))
-        elif act == "exit":
-            self.exit = kind
-        return True
+        return _ACTIONS[entry.action](self, w.tag, entry.arg, w.front)
 
     # --- teleporters --------------------------------------------------------------------------
 
