@@ -44,6 +44,7 @@ from pathlib import Path
 
 import numpy as np
 
+from .files import InputError, open_regular
 from .level import Level, LevelError
 from .wad.graphics import FLAT_SIDE, Picture, ResourceError, check_size
 from .wad.textures import BUDGET_BYTES, wad_textures
@@ -80,6 +81,8 @@ class ResourceSet:
     def __init__(self, paths):
         self.sources = [_open_source(Path(p)) for p in paths]
         self._sprite_frames: list[dict] | None = None
+        self._found: dict[tuple[str, str], Picture | None] = {}    # lookups answered
+        self._tables: dict[str, np.ndarray | None] = {}
 
     @classmethod
     def from_level(cls, level: Level) -> "ResourceSet":
@@ -150,19 +153,19 @@ class ResourceSet:
         return self.sources
 
     def _find(self, kind: str, name: str) -> Picture | None:
-        name = name.upper()
-        for source in self._usable():
-            picture = _guard(source, lambda: source.picture(kind, name))
-            if picture is not None:
-                return picture
-        return None
+        key = (kind, name.upper())
+        if key not in self._found:
+            self._found[key] = next(
+                (p for p in (_guard(s, lambda: s.picture(*key)) for s in self._usable())
+                 if p is not None), None)
+        return self._found[key]
 
     def _first_table(self, which: str):
-        for source in self.sources:
-            table = _guard(source, lambda: getattr(source, which))
-            if table is not None:
-                return table
-        return None
+        if which not in self._tables:
+            self._tables[which] = next(
+                (t for t in (_guard(s, lambda: getattr(s, which)) for s in self.sources)
+                 if t is not None), None)
+        return self._tables[which]
 
 
 def _guard(source, call):
@@ -327,8 +330,10 @@ def _read_png(path: Path, kind: str) -> Picture:
 
 def _png_size(path: Path) -> tuple[int, int]:
     try:
-        with open(path, "rb") as f:
+        with open_regular(path) as f:   # before pygame sees it: a FIFO would block
             head = f.read(_PNG_HEAD.size)
+    except InputError as e:
+        raise ResourceError(f"{path}: cannot read: {e.reason}") from None
     except OSError as e:
         raise ResourceError(f"{path}: cannot read: {e.strerror or e}") from None
     if len(head) < _PNG_HEAD.size or not head.startswith(_PNG_MAGIC):

@@ -24,7 +24,7 @@ from typing import BinaryIO, Iterable, Iterator
 
 import numpy as np
 
-from ..files import write_atomically
+from ..files import InputError, open_regular, write_atomically
 from ..level import LevelError
 
 HEADER = struct.Struct("<4sii")
@@ -46,10 +46,11 @@ class Directory:
 
 @dataclass
 class Wad:
-    """An open WAD: its label for messages, the file, and its cached directory."""
+    """An open WAD: its label for messages, the file, its cached directory and its path."""
     label: str
     file: BinaryIO
     directory: Directory
+    path: str
 
     @property
     def names(self) -> list[str]:
@@ -109,9 +110,9 @@ def open_wad(wad_path) -> Iterator[Wad]:
     file (path, inode, mtime, ctime, size) has not changed."""
     label = str(wad_path)
     try:
-        f = open(wad_path, "rb")
-    except OSError as e:
-        raise LevelError(f"{label}: cannot read: {e.strerror or e}") from None
+        f = open_regular(wad_path)      # a FIFO or device would block or never end
+    except InputError as e:
+        raise LevelError(f"{label}: cannot read: {e.reason}") from None
     with f:
         st = os.fstat(f.fileno())
         key = (os.path.realpath(wad_path), st.st_ino, st.st_mtime_ns, st.st_ctime_ns,
@@ -122,7 +123,7 @@ def open_wad(wad_path) -> Iterator[Wad]:
             _CACHE[key] = directory
             while len(_CACHE) > CACHE_SIZE:
                 _CACHE.popitem(last=False)
-        yield Wad(label, f, directory)
+        yield Wad(label, f, directory, os.fspath(wad_path))
 
 
 def forget_wads() -> None:

@@ -23,7 +23,7 @@ class WadColours:
     """The average colours of one WAD's pictures by name, computed on first use."""
 
     def __init__(self, wad: Wad):
-        self.textures = wad_textures(wad.file.name)
+        self.textures = wad_textures(wad.path)
         self.notes: list[str] = []
         self._seen_notes: set[str] = set()
         self._colours: dict[tuple[str, str], str | None] = {}

@@ -19,6 +19,7 @@ from typing import Iterator
 
 import numpy as np
 
+from ..files import InputError, open_regular
 from .archive import Wad, open_wad
 from .graphics import (Picture, ResourceError, TextureDef, composite, decode_colormap,
                        decode_flat, decode_palette, decode_picture, decode_pnames,
@@ -156,8 +157,8 @@ class WadTextures:
         # more than decoding it. The directory is the one this source indexed.
         if self._wad is None:
             try:
-                self._wad = Wad(self.label, open(self.path, "rb"), self.directory)
-            except OSError as e:
-                raise ResourceError(f"{self.label}: cannot read: {e.strerror or e}") from None
+                self._wad = Wad(self.label, open_regular(self.path), self.directory, self.path)
+            except InputError as e:
+                raise ResourceError(f"{self.label}: cannot read: {e.reason}") from None
         yield self._wad
 
