@@ -79,7 +79,7 @@ def test_open_regular_refuses_what_read_input_refuses(tmp_path, fifo):
     path = tmp_path / "a.bin"
     path.write_bytes(b"abc")
     with open_regular(path) as f:
-        assert f.read() == b"abc"
+        assert f.read() == b"abc" and f.name == str(path)   # a name, not a descriptor
 
 
 def test_a_dash_reads_standard_input(monkeypatch):

@@ -42,13 +42,11 @@ def open_regular(path):
     streams it); anything else is an ``InputError``, refused before it is opened."""
     try:
         _check_regular(path, os.stat(path).st_mode)   # stat never blocks, open may
-        fd = os.open(path, os.O_RDONLY | getattr(os, "O_NONBLOCK", 0)
-                     | getattr(os, "O_NOCTTY", 0) | getattr(os, "O_BINARY", 0))
+        f = open(path, "rb", opener=_open_without_waiting)
     except FileNotFoundError:
         raise InputError(path, "no such file") from None
     except OSError as err:
         raise InputError(path, f"cannot read: {err.strerror or err}") from None
-    f = os.fdopen(fd, "rb")
     try:
         # the path may have been replaced between stat and open: check what was opened
         _check_regular(path, os.fstat(f.fileno()).st_mode)
@@ -56,6 +54,11 @@ def open_regular(path):
         f.close()
         raise
     return f
+
+
+def _open_without_waiting(path, flags: int) -> int:
+    # should a FIFO replace the file after the stat, opening it must not wait for a writer
+    return os.open(path, flags | getattr(os, "O_NONBLOCK", 0) | getattr(os, "O_NOCTTY", 0))
 
 
 def _check_regular(path, mode: int) -> None:
