@@ -27,8 +27,17 @@ def _light(env, s: int) -> int:
     return int(env.state.light[s])
 
 
+class _Countdown:
+    """An effect that acts each time its ``count`` of tics runs out (and sets it again)."""
+
+    def tick(self, env) -> None:
+        self.count -= 1
+        if not self.count:
+            self.act(env)
+
+
 @dataclass
-class FireFlicker:
+class FireFlicker(_Countdown):
     """Sector special 17: the light drops by 0, 16, 32 or 48 every 4 tics, never below
     16 above the darkest neighbour."""
     sector: int
@@ -36,10 +45,7 @@ class FireFlicker:
     min_light: int
     count: int = FLICKER_TICS
 
-    def tick(self, env) -> None:
-        self.count -= 1
-        if self.count:
-            return
+    def act(self, env) -> None:
         amount = (env.random() & 3) * 16
         if _light(env, self.sector) - amount < self.min_light:
             env.state.set_light(self.sector, self.min_light)
@@ -49,17 +55,14 @@ class FireFlicker:
 
 
 @dataclass
-class LightFlash:
+class LightFlash(_Countdown):
     """Sector special 1: a broken light, off and on at random moments."""
     sector: int
     max_light: int
     min_light: int
     count: int
 
-    def tick(self, env) -> None:
-        self.count -= 1
-        if self.count:
-            return
+    def act(self, env) -> None:
         if _light(env, self.sector) == self.max_light:
             env.state.set_light(self.sector, self.min_light)
             self.count = (env.random() & FLASH_DARK_MASK) + 1
@@ -69,7 +72,7 @@ class LightFlash:
 
 
 @dataclass
-class Strobe:
+class Strobe(_Countdown):
     """Sector specials 2, 3, 4, 12, 13 (and line 17): bright for 5 tics, dark for
     ``dark_time``; the synchronised ones all start on the same tic."""
     sector: int
@@ -79,10 +82,7 @@ class Strobe:
     count: int
     bright_time: int = STROBE_BRIGHT
 
-    def tick(self, env) -> None:
-        self.count -= 1
-        if self.count:
-            return
+    def act(self, env) -> None:
         if _light(env, self.sector) == self.min_light:
             env.state.set_light(self.sector, self.max_light)
             self.count = self.bright_time
