@@ -15,31 +15,31 @@ SKY_TEXTURE = "SKY1"
 
 # wall textures: name → (width, height, fallback colour)
 WALL_TEXTURES = {
-    "BRICK1": (128, 128, "#7e4434"),     # red-brown bricks
-    "BRICK2": (64, 128, "#6e6a66"),      # grey bricks
-    "STONE1": (128, 128, "#6a6258"),     # rough blocks
-    "STONE2": (64, 64, "#5e6466"),       # small cobbles
-    "METAL1": (64, 128, "#5a6068"),      # riveted plates
-    "METAL2": (64, 64, "#4c5258"),       # grooved panels
-    "WOOD1": (64, 128, "#6e4e30"),       # planks
-    "WATERW": (64, 64, "#2e5470"),       # a wall of falling water
-    "STEP1": (64, 16, "#7a7064"),        # stair risers
-    "DOOR1": (64, 72, "#6a5a48"),        # door face
-    "DOORTRAK": (8, 128, "#4a4a4e"),     # door jamb
-    "SW1EXIT": (64, 128, "#5a5e64"),     # exit switch, off
-    "SW2EXIT": (64, 128, "#5a5e64"),     # exit switch, on
-    SKY_TEXTURE: (256, 128, "#5a7aa8"),
+    "BRICK1": (128, 128, "#854b3b"),     # red-brown bricks
+    "BRICK2": (64, 128, "#6a6765"),      # grey bricks
+    "STONE1": (128, 128, "#736a5f"),     # rough blocks
+    "STONE2": (64, 64, "#5d6467"),       # small cobbles
+    "METAL1": (64, 128, "#5d636b"),      # riveted plates
+    "METAL2": (64, 64, "#4d5358"),       # grooved panels
+    "WOOD1": (64, 128, "#624528"),       # planks
+    "WATERW": (64, 64, "#365e7d"),       # a wall of falling water
+    "STEP1": (64, 16, "#7f7567"),        # stair risers
+    "DOOR1": (64, 72, "#5e5143"),        # door face
+    "DOORTRAK": (8, 128, "#47474b"),     # door jamb
+    "SW1EXIT": (64, 128, "#5b5c63"),     # exit switch, off
+    "SW2EXIT": (64, 128, "#5a5d63"),     # exit switch, on
+    SKY_TEXTURE: (256, 128, "#566d98"),
 }
 # flats are 64 x 64: name → fallback colour
 FLATS = {
-    "FLOOR1": "#5c5a56",                 # square tiles
-    "FLOOR2": "#5a544c",                 # stone slabs
-    "FLOOR3": "#6a4c32",                 # wooden floor
+    "FLOOR1": "#5b5956",                 # square tiles
+    "FLOOR2": "#575048",                 # stone slabs
+    "FLOOR3": "#583f29",                 # wooden floor
     "CEIL1": "#4a4a50",                  # ceiling panels
-    "CEIL2": "#6a6a70",                  # light panels
-    "GRASS1": "#3e5a2e",
-    "WATER1": "#2a4a6a",
-    "LAVA1": "#a04418",
+    "CEIL2": "#8c8c87",                  # light panels
+    "GRASS1": "#3b572c",
+    "WATER1": "#284867",
+    "LAVA1": "#753512",
 }
 # sprites (DOOM lump names where a DOOM type uses them): name → (width, height)
 SPRITES = {
