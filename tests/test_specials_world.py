@@ -163,6 +163,13 @@ def test_random_lights_are_the_same_with_the_same_seed():
         assert first == again and len(set(first)) > 1
 
 
+def test_the_random_bytes_are_fixed_by_the_seed_on_any_machine():
+    rules, _ = rules_for(corridor([room(), room()]))
+    assert [rules.random() for _ in range(8)] == [0, 220, 4, 101, 170, 31, 173, 29]
+    rules, _ = rules_for(corridor([room(), room()]), seed=7)
+    assert [rules.random() for _ in range(4)] == [108, 78, 116, 146]
+
+
 def test_light_specials_set_tagged_sectors():
     level = corridor([room(light=160), room(light=90, tag=2), room(light=250)],
                      between={0: dict(special=80, tag=2), 1: dict(special=79, tag=2)})

@@ -23,7 +23,6 @@ Everything random (flickering lights, perpetual lifts) comes from one generator 
 from __future__ import annotations
 
 import math
-import random
 from dataclasses import dataclass
 
 import numpy as np
@@ -149,7 +148,7 @@ class Rules:
         self.neighbours = Neighbours(level)
         self.texture_height = texture_height or _no_height
         self.blocked = blocked or _never_blocked
-        self._locate = locate or state.tree.locate
+        self._locate = locate             # None: the tree's, when a teleporter first needs it
         self.skill = skill
         self.specials = [w.special for w in level.walls]            # once-only lines go to 0
         self.sector_specials = [s.special for s in level.sectors]
@@ -164,7 +163,7 @@ class Rules:
         self.exit: str | None = None
         self.secrets_found = 0
         self.secrets_total = 0
-        self._rng = random.Random(seed)
+        self._seed = seed & 0x7FFFFFFF
         self._scroll = {rate: _scrolling_walls(self.specials, rate) for rate in (1, -1)}
         self._destinations = None
         for s, special in enumerate(self.sector_specials):
@@ -174,8 +173,10 @@ class Rules:
     # --- what movers and effects ask of the rules ---------------------------------------------
 
     def random(self) -> int:
-        """A random byte (0..255) from the rules' own seeded generator."""
-        return self._rng.getrandbits(8)
+        """A random byte (0..255) from the rules' own generator: a plain linear congruential
+        one, written out so that no library's version changes a level's flickering."""
+        self._seed = (self._seed * 1103515245 + 12345) & 0x7FFFFFFF
+        return (self._seed >> 16) & 0xFF
 
     def busy(self, sector: int) -> bool:
         return sector in self._mover_of
@@ -289,7 +290,8 @@ class Rules:
         if side == 1:                 # from the back: so that you can step off a teleporter
             return None
         if self._destinations is None:
-            self._destinations = [(self._locate(t.x, t.y), t) for t in self.level.things
+            locate = self._locate or self.state.tree.locate
+            self._destinations = [(locate(t.x, t.y), t) for t in self.level.things
                                   if t.type == TELEPORT_DESTINATION
                                   and spawns(t.flags, self.skill)]
         for s in self.neighbours.tagged(self.level.walls[wall].tag):
