@@ -16,11 +16,16 @@ def linedefs(*specials):
     return b"".join(struct.pack("<HHhhhHH", 0, 1, 0, s, 0, 0, 0xFFFF) for s in specials)
 
 
+def sectors(*specials):
+    return b"".join(struct.pack("<hh8s8shhh", 0, 128, b"FLAT", b"FLAT", 160, s, 0)
+                    for s in specials)
+
+
 def tiny_wad(path, *maps):
     lumps = []
     for name, specials in maps:
         lumps += [(name, b""), ("THINGS", b""), ("LINEDEFS", linedefs(*specials)),
-                  ("SIDEDEFS", b""), ("VERTEXES", b""), ("SECTORS", b"")]
+                  ("SIDEDEFS", b""), ("VERTEXES", b""), ("SECTORS", sectors(0, 9, 9, 77, 6))]
     write_wad(path, lumps)
 
 
@@ -54,6 +59,10 @@ def test_coverage_counts_lines_per_special_and_their_status(tmp_path, capsys):
     assert rows[15889]["status"] == "unsupported"
     assert rows[126]["status"].startswith("handled (monsters only")
     assert result["handled_lines"] == 5 and result["monster_only_lines"] == 1
+    sector_rows = {r["number"]: r for r in result["sector_specials"]}
+    assert sector_rows[9]["sectors"] == 4 and sector_rows[9]["status"] == "handled"
+    assert sector_rows[77]["description"] == "Boom: strobe, fast, in sync, 10 damage"
+    assert sector_rows[6]["status"] == "unsupported"
     table = (tmp_path / "specials.md").read_text()
     assert "| 88 | WR Lift down, wait 3 s, up | 1 | 1 | handled |" in table
 

@@ -2,8 +2,8 @@
 (issue 11, part 4).
 
 Reads every map's LINEDEFS directly (all linedefs, including the ones a level import drops),
-counts the lines of each special number, prints one JSON object and writes the table to
-docs/specials.md.  A special is *handled* when ``wallbsp.game.specials`` has it and its
+counts the lines of each special number (and the sectors of each sector special), prints one
+JSON object and writes the tables to docs/specials.md.  A special is *handled* when ``wallbsp.game.specials`` has it and its
 trigger is one the walkthrough has (use, walking over, or a passive effect); shot (G) lines
 are run by ``Rules.shoot_line`` but nothing shoots yet, so they are counted as not handled;
 Boom's extended and generalised specials are unsupported.
@@ -25,6 +25,7 @@ import numpy as np
 
 from wallbsp import wad
 from wallbsp.files import write_atomically
+from wallbsp.game.rules import describe_sector_special
 from wallbsp.game.specials import LINE_SPECIALS, describe
 from wallbsp.level import LevelError
 
@@ -35,20 +36,28 @@ DOCS = ROOT / "docs" / "specials.md"
 TARGET = 0.95
 LINEDEF = np.dtype([("v1", "<u2"), ("v2", "<u2"), ("flags", "<i2"), ("special", "<i2"),
                     ("tag", "<i2"), ("right", "<u2"), ("left", "<u2")])
+SECTOR = np.dtype([("floor", "<i2"), ("ceiling", "<i2"), ("floor_flat", "S8"),
+                   ("ceiling_flat", "S8"), ("light", "<i2"), ("special", "<i2"), ("tag", "<i2")])
 HANDLED_TRIGGERS = frozenset("DSW-")
 
 
-def map_specials(wad_path) -> dict[str, np.ndarray]:
-    """Map name -> the special of each of its linedefs (0 for none)."""
+def _records(archive, wad_path, name: str, lumps: dict, lump: str, dtype) -> np.ndarray:
+    raw = archive.read(lumps[lump])
+    if len(raw) % dtype.itemsize:
+        raise LevelError(f"{wad_path}: {name}: {lump}: {len(raw)} bytes is not a whole number "
+                         f"of {dtype.itemsize}-byte records")
+    # read unsigned: a special is a bit pattern to Boom, never negative
+    return np.frombuffer(raw, dtype)["special"].astype(np.int64) & 0xFFFF
+
+
+def map_specials(wad_path) -> dict[str, tuple[np.ndarray, np.ndarray]]:
+    """Map name -> (the special of each linedef, of each sector), 0 for none."""
     out = {}
     with wad.open_wad(wad_path) as archive:
         for name in wad.list_maps(wad_path):
-            raw = archive.read(wad.map_lump_indices(archive, name)["LINEDEFS"])
-            if len(raw) % LINEDEF.itemsize:
-                raise LevelError(f"{wad_path}: {name}: LINEDEFS: {len(raw)} bytes is not a "
-                                 f"whole number of {LINEDEF.itemsize}-byte records")
-            # DOOM reads the special as a signed short; Boom's generalised ones are unsigned
-            out[name] = np.frombuffer(raw, LINEDEF)["special"].astype(np.int64) & 0xFFFF
+            lumps = wad.map_lump_indices(archive, name)
+            out[name] = (_records(archive, wad_path, name, lumps, "LINEDEFS", LINEDEF),
+                         _records(archive, wad_path, name, lumps, "SECTORS", SECTOR))
     return out
 
 
@@ -61,15 +70,30 @@ def status(number: int) -> str:
     return "handled" if entry.players else "handled (monsters only: nothing for the player)"
 
 
+def _count(counts: Counter, maps: defaultdict, specials: np.ndarray, where: str) -> None:
+    for number, count in zip(*np.unique(specials[specials != 0], return_counts=True)):
+        counts[int(number)] += int(count)
+        maps[int(number)].add(where)
+
+
+def _sector_rows(counts: Counter, maps: defaultdict) -> list[dict]:
+    rows = []
+    for n in sorted(counts):
+        what = describe_sector_special(n)
+        rows.append({"number": n, "description": what or "not run", "sectors": counts[n],
+                     "maps": len(maps[n]), "status": "handled" if what else "unsupported"})
+    return rows
+
+
 def coverage(wads) -> dict:
     lines, maps = Counter(), defaultdict(set)
+    sectors, sector_maps = Counter(), defaultdict(set)
     n_maps = 0
     for path in wads:
-        for name, specials in map_specials(path).items():
+        for name, (line_specials, sector_specials) in map_specials(path).items():
             n_maps += 1
-            for number, count in zip(*np.unique(specials[specials != 0], return_counts=True)):
-                lines[int(number)] += int(count)
-                maps[int(number)].add(f"{Path(path).stem}:{name}")
+            _count(lines, maps, line_specials, f"{Path(path).stem}:{name}")
+            _count(sectors, sector_maps, sector_specials, f"{Path(path).stem}:{name}")
     rows = [{"number": n, "description": describe(n), "lines": lines[n], "maps": len(maps[n]),
              "status": status(n)} for n in sorted(lines)]
     total = sum(lines.values())
@@ -79,7 +103,8 @@ def coverage(wads) -> dict:
             "distinct_specials": len(rows), "handled_lines": handled,
             "monster_only_lines": monsters_only,
             "handled_share": round(handled / total, 4) if total else 1.0,
-            "target_share": TARGET, "specials": rows}
+            "target_share": TARGET, "specials": rows,
+            "sector_specials": _sector_rows(sectors, sector_maps)}
 
 
 def markdown(result: dict) -> str:
@@ -107,7 +132,17 @@ def markdown(result: dict) -> str:
     ]
     body = [f"| {r['number']} | {r['description']} | {r['lines']:,} | {r['maps']} | "
             f"{r['status']} |" for r in result["specials"]]
-    return "\n".join(head + body) + "\n"
+    sectors = [
+        "", "## Sector specials", "",
+        "Run by `Rules`: light effects from the start, damage and secrets through "
+        "`Rules.player_in_sector` (the World calls it every tic for the player's sector), the "
+        "timed doors as movers. Boom's generalised sector specials are bit fields: their light, "
+        "damage and secret bits are run.", "",
+        "| special | what it does | sectors | maps | status |",
+        "|---:|---|---:|---:|---|",
+    ] + [f"| {r['number']} | {r['description']} | {r['sectors']:,} | {r['maps']} | "
+         f"{r['status']} |" for r in result["sector_specials"]]
+    return "\n".join(head + body + sectors) + "\n"
 
 
 def main(argv=None) -> int:

@@ -34,8 +34,8 @@ from .neighbours import Neighbours
 from .specials import LINE_SPECIALS, LineSpecial
 from .switches import Buttons
 
-__all__ = ["Rules", "Teleport", "SectorEvent", "spawns", "TELEPORT_DESTINATION",
-           "TELEPORT_FREEZE", "SECRET"]
+__all__ = ["Rules", "Teleport", "SectorEvent", "spawns", "describe_sector_special",
+           "TELEPORT_DESTINATION", "TELEPORT_FREEZE", "SECRET"]
 
 TELEPORT_DESTINATION = 14   # the thing type a teleporter sends you to
 TELEPORT_FREEZE = 18        # tics the player cannot move after teleporting
@@ -48,6 +48,28 @@ _BOOM_DAMAGE = (0, 5, 10, 20)     # Boom generalised sector specials: bits 5-6
 _BOOM_SECRET = 128                # ... and bit 7
 _LIGHT_BITS = 31                  # ... whose low 5 bits are a DOOM sector special
 EXIT_SECTOR = 11                  # E1M8's floor: hurts, and ends the level below 11 health
+
+
+_SECTOR_NAMES = {5: "10 damage", 7: "5 damage", 9: "secret", 10: "door closes after 30 s",
+                 11: "20 damage, exit below 11 health", 14: "door opens after 5 minutes",
+                 16: "20 damage"}
+
+
+def describe_sector_special(number: int) -> str | None:
+    """What sector special ``number`` does here, or None if the rules ignore it."""
+    if number >= 32:                       # Boom generalised: bits for light, damage, secret
+        light = number & _LIGHT_BITS
+        if number >= 256 or (light and light not in lights.LIGHT_SPECIALS):
+            return None                    # friction and pushers are not run here
+        parts = [lights.LIGHT_SPECIALS[light][0]] if light else []
+        if number & 96:
+            parts.append(f"{_BOOM_DAMAGE[(number >> 5) & 3]} damage")
+        if number & _BOOM_SECRET:
+            parts.append("secret")
+        return "Boom: " + ", ".join(parts)
+    if number in lights.LIGHT_SPECIALS:
+        return lights.LIGHT_SPECIALS[number][0]
+    return _SECTOR_NAMES.get(number)
 
 
 @dataclass(frozen=True)
@@ -202,13 +224,16 @@ class Rules:
     # --- the level's start ------------------------------------------------------------------
 
     def _spawn_sector_special(self, s: int, special: int) -> None:
-        if special >= 32:             # Boom generalised: light, damage and secret bits
+        if special >= 32:             # Boom generalised: only its light and secret bits spawn
             self.secrets_total += bool(special & _BOOM_SECRET)
-            special &= _LIGHT_BITS
+            effect = lights.spawn_sector_light(self, s, special & _LIGHT_BITS)
+            if effect is not None:
+                self.lights.append(effect)
+            return
         effect = lights.spawn_sector_light(self, s, special)
         if effect is not None:
             self.lights.append(effect)
-            if self.sector_specials[s] == special and special != 4:
+            if special != 4:
                 self.sector_specials[s] = 0       # an ordinary sector in play
         elif special == SECRET:
             self.secrets_total += 1
