@@ -10,6 +10,7 @@ import pytest
 from test_wad import FREEDOOM_MAPS, freedoom
 
 from wallbsp import Camera, compile_level, render
+from wallbsp.queries import floor_z
 from wallbsp.wad import load_wad_level
 
 EYE = 41              # DOOM's view height above the floor
@@ -18,7 +19,7 @@ SIZE = (64, 40)
 
 def start_camera(tree) -> Camera:
     start = tree.level.start
-    floor = tree.floor_z(start.x, start.y)
+    floor = floor_z(tree, start.x, start.y)
     assert floor is not None, f"the player start {start} is outside the map"
     return Camera(start.x, start.y, floor + EYE, start.angle)
 

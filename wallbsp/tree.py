@@ -180,24 +180,6 @@ class BSPTree:
         sector = leaf_sector[~node]
         return None if sector < 0 else sector
 
-    # -- queries (collision; moving to wallbsp.queries) -------------------------------------
-    def move(self, x, y, dx, dy, z_floor, radius=16, step=24, headroom=56):
-        """Where a player circle at (x, y) trying to move by (dx, dy) ends up: blocked
-        by walls, steps higher than ``step`` and gaps lower than ``headroom``, sliding
-        along what blocks it (DOOM's rules; see ``wallbsp.collide.move``)."""
-        from .collide import move
-        return move(self, x, y, dx, dy, z_floor, radius, step, headroom)
-
-    def line_of_sight(self, a, b, za=None, zb=None) -> bool:
-        """Whether nothing solid lies between points a and b (see ``wallbsp.collide``)."""
-        from .collide import line_of_sight
-        return line_of_sight(self, a, b, za, zb)
-
-    def floor_z(self, x, y, radius=16):
-        """DOOM's floorz: the highest floor a circle at (x, y) stands on, None outside."""
-        from .collide import floor_z
-        return floor_z(self, x, y, radius)
-
     # -- checking and saving ---------------------------------------------------------------
     def validate(self) -> None:
         """Check the tree's invariants exactly; raise ValueError naming the first broken one
