@@ -84,6 +84,12 @@ def test_teleport_destinations_of_another_skill_or_multiplayer_are_absent():
     assert rules.cross_line(wall_between(level, 0), 0) is not None
 
 
+def test_walkover_walls_lists_the_walls_whose_crossing_can_matter():
+    level = teleport_level()
+    rules, _ = rules_for(level)
+    assert rules.walkover_walls.tolist() == [wall_between(level, 0)]
+
+
 def test_monster_only_teleporter_does_nothing_for_the_player():
     level = corridor([room(), room(tag=7)], between={0: dict(special=126, tag=7)},
                      things=[Thing(200, 60, 0, 14, 7)])

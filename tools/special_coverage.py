@@ -3,10 +3,11 @@
 
 Reads every map's LINEDEFS directly (all linedefs, including the ones a level import drops),
 counts the lines of each special number (and the sectors of each sector special), prints one
-JSON object and writes the tables to docs/specials.md.  A special is *handled* when ``wallbsp.game.specials`` has it and its
-trigger is one the walkthrough has (use, walking over, or a passive effect); shot (G) lines
-are run by ``Rules.shoot_line`` but nothing shoots yet, so they are counted as not handled;
-Boom's extended and generalised specials are unsupported.
+JSON object and writes the tables to docs/specials.md.  A special is *handled* when
+``wallbsp.game.specials`` has it and its trigger is one the walkthrough has (use, walking
+over, or a passive effect); shot (G) lines are run by ``Rules.shoot_line`` but nothing shoots
+yet, so they are counted as not handled; Boom's extended and generalised specials are
+unsupported.
 
     python tools/special_coverage.py [--no-docs] [--docs PATH] [WAD ...]
 

@@ -187,6 +187,10 @@ class Rules:
         self.secrets_total = 0
         self._seed = seed & 0x7FFFFFFF
         self._scroll = {rate: _scrolling_walls(self.specials, rate) for rate in (1, -1)}
+        # the only walls whose crossing can matter: the World need test no others
+        self.walkover_walls = np.array([i for i, n in enumerate(self.specials)
+                                        if n in LINE_SPECIALS and LINE_SPECIALS[n].trigger == "W"],
+                                       dtype=np.int64)
         self._destinations = None
         for s, special in enumerate(self.sector_specials):
             if special:
