@@ -88,6 +88,10 @@ def switch(on):
     return draw
 
 
+def grate1(r, w, h):
+    return kit.grate(r, w, h, rgb("#6a6e74"))
+
+
 def sky1(r, w, h):
     return kit.sky(r, w, h)
 
@@ -95,7 +99,8 @@ def sky1(r, w, h):
 WALL_DESIGNS = {"BRICK1": brick1, "BRICK2": brick2, "STONE1": stone1, "STONE2": stone2,
                 "METAL1": metal1, "METAL2": metal2, "WOOD1": wood1, "WATERW": waterw,
                 "STEP1": step1, "DOOR1": door1, "DOORTRAK": doortrak,
-                "SW1EXIT": switch(False), "SW2EXIT": switch(True), "SKY1": sky1}
+                "SW1EXIT": switch(False), "SW2EXIT": switch(True), "GRATE1": grate1,
+                "SKY1": sky1}
 
 # -- flats (64 x 64) -------------------------------------------------------------------------
 

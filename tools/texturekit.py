@@ -168,6 +168,20 @@ def track(r, w, h, base):
     return paint(base, shade * (0.9 + 0.2 * noise(r, h, w, 16, 1)))
 
 
+def grate(r, w, h, base):
+    """Bars 4 wide every 16, a rail along the top, middle and bottom; transparent between."""
+    ys, xs = grid(h, w)
+    bars = (xs % 16 >= 6) & (xs % 16 < 10)
+    rails = (ys < 6) | (ys >= h - 6) | (np.abs(ys - h // 2) < 3)
+    solid = bars | rails
+    lx = np.where(rails, ys % 6, xs % 16 - 6)
+    shade = np.where(lx == 0, 1.3, np.where(lx == 3, 0.65, 1.0)) * (0.9 + 0.2 * noise(r, h, w, 8, 4))
+    out = np.zeros((h, w, 4))
+    out[..., :3] = paint(base, shade)
+    out[..., 3] = np.where(solid, 255.0, 0.0)
+    return out
+
+
 _GLYPHS = {"E": ("111", "100", "110", "100", "111"), "X": ("101", "101", "010", "101", "101"),
            "I": ("111", "010", "010", "010", "111"), "T": ("111", "010", "010", "010", "010")}
 

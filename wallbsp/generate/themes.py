@@ -28,8 +28,10 @@ WALL_TEXTURES = {
     "DOORTRAK": (8, 128, "#47474b"),     # door jamb
     "SW1EXIT": (64, 128, "#5b5c63"),     # exit switch, off
     "SW2EXIT": (64, 128, "#5a5d63"),     # exit switch, on
+    "GRATE1": (64, 128, "#676b71"),      # see-through bars (a masked middle texture)
     SKY_TEXTURE: (256, 128, "#566d98"),
 }
+MASKED_TEXTURES = frozenset({"GRATE1"})   # with transparent texels: for two-sided middles
 # flats are 64 x 64: name → fallback colour
 FLATS = {
     "FLOOR1": "#5b5956",                 # square tiles
