@@ -5,7 +5,7 @@ Each mover is a small state machine whose ``tick(env)`` runs once per 35 Hz tic 
 the mover has finished and should be forgotten.  ``env`` is the rules' view of the world:
 ``env.state`` (a ``WorldState``), ``env.blocked(sector, floor, ceiling) -> bool`` (would
 something in the sector no longer fit?), ``env.set_floor_texture(sector, name)`` and
-``env.sector_specials`` (a mutable list) and ``env.crushing`` (a set the world empties).
+``env.sector_specials`` (a mutable list) and ``env.crushing`` (emptied each tic).
 
 Units: heights in map units, speeds in units per tic.  DOOM's speeds are 1 (floors, ceilings,
 ``FLOORSPEED``), 2 (doors), 8 (blazing doors) and lifts at 4 or 8; its waits are 150 tics for
@@ -256,7 +256,7 @@ class Floor:
 class CeilingKind(enum.Enum):
     LOWER_TO_FLOOR = "lower to the floor"
     RAISE_TO_HIGHEST = "raise to the highest neighbouring ceiling"
-    LOWER_AND_CRUSH = "lower to 8 above the floor, crushing"
+    LOWER_AND_CRUSH = "lower to 8 above the floor (DOOM never set it crushing)"
     CRUSH_AND_RAISE = "crusher: down to 8 above the floor and back up, for ever"
     FAST_CRUSH_AND_RAISE = "fast crusher"
     SILENT_CRUSH_AND_RAISE = "silent crusher"

@@ -180,7 +180,7 @@ class Rules:
         self.ceilings: list[Ceiling] = []
         self.lights: list = []
         self.buttons = Buttons(state)
-        self.crushing: set[int] = set()  # sectors whose crusher pressed on something this tic
+        self.crushing: set[int] = set()  # sectors a crusher pressed on, last tic
         self.tic_count = 0
         self.exit: str | None = None
         self.secrets_found = 0
@@ -354,7 +354,9 @@ class Rules:
     # --- time -----------------------------------------------------------------------------------
 
     def tic(self) -> None:
-        """One 35 Hz tic: movers in the order they started, light effects, buttons, scrolls."""
+        """One 35 Hz tic: movers in the order they started, light effects, buttons, scrolls.
+        Afterwards ``crushing`` holds the sectors whose crusher pressed on something."""
+        self.crushing.clear()
         for mover in list(self.movers):
             if mover.tick(self):
                 self._finish(mover)
