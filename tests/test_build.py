@@ -7,7 +7,7 @@ from hypothesis import HealthCheck, given, settings, strategies as st
 from wallbsp import compile_level, load_level, load_tree
 from wallbsp.build import DEFAULT_CANDIDATES
 from conftest import ROOT
-from treecheck import level_of_walls, ray_order_violations
+from treeoracles import level_of_walls, ray_order_violations
 
 LEVELS_DIR = ROOT / "levels"
 

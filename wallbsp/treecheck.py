@@ -283,8 +283,8 @@ def _check_boxes(tree):
         box[has, 2:] = np.maximum(box[has, 2:], kid_box[:, 2:])
     bad = np.nonzero((box != tree.node_bbox).any(axis=1))[0]
     if len(bad):
-        raise ValueError(f"the box of node {bad[0]} is not the bounding box of its segs and "
-                         f"its children's boxes")
+        raise ValueError(f"node_bbox: the box of node {bad[0]} is not the bounding box of its "
+                         f"segs and its children's boxes")
 
 
 def _check_leaf_sectors(tree):
