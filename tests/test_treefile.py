@@ -298,6 +298,6 @@ def test_an_array_header_claiming_gigabytes_allocates_nothing(tmp_path, good):
 def test_what_is_not_a_regular_file_is_refused_without_blocking(tmp_path):
     fifo = tmp_path / "pipe.wbsp"
     os.mkfifo(fifo)
-    refused(fifo, "not a regular file")
-    refused(tmp_path, "not a regular file")
+    refused(fifo, "FIFO", "not a regular file")
+    refused(tmp_path, "directory")
     refused(tmp_path / "absent.wbsp", "no such file")

@@ -21,7 +21,6 @@ import io
 import json
 import os
 import re
-import stat
 import struct
 import tokenize
 import zipfile
@@ -31,7 +30,7 @@ from pathlib import Path
 
 import numpy as np
 
-from .files import write_atomically
+from .files import InputError, open_regular, write_atomically
 from .level import Level, LevelError
 from .levelio import dumps_level, level_from_dict, parse_json
 
@@ -121,17 +120,9 @@ def _open_regular(path):
     """The file opened for reading; a FIFO, device or directory is refused before it is
     opened (reading one would block or never end)."""
     try:
-        if not stat.S_ISREG(os.stat(path).st_mode):
-            raise TreeError(f"{path}: not a regular file; refusing to read it")
-        f = open(path, "rb")
-    except FileNotFoundError:
-        raise TreeError(f"{path}: no such file") from None
-    except OSError as err:
-        raise TreeError(f"{path}: cannot read: {err.strerror or err}") from None
-    if not stat.S_ISREG(os.fstat(f.fileno()).st_mode):   # replaced since the stat
-        f.close()
-        raise TreeError(f"{path}: not a regular file; refusing to read it")
-    return f
+        return open_regular(path)
+    except InputError as err:
+        raise TreeError(f"{path}: {err.reason}") from None
 
 
 def _read_members(path, zf: zipfile.ZipFile, file_size: int) -> TreeFile:
