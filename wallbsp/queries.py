@@ -146,51 +146,32 @@ def _world(source):
     return tree, geo, heights
 
 
-# -- tree searches --------------------------------------------------------------------------------
+# -- the tree search ------------------------------------------------------------------------------
+# Not ``BSPTree.walk``: that is a view order from a point and visits both sides of every
+# node; a range search skips the side of a line its region cannot reach.
 
-def _segs_near(geo, x, y, reach):
-    """Seg ids that may come within ``reach`` of (x, y) (a superset; the caller measures)."""
+def _segs_near(geo, ax, ay, bx, by, reach):
+    """Seg ids that may come within ``reach`` of the segment a-b (a == b: of a point); a
+    superset, the caller measures.  Boxes hold rounded split points: a hair of margin."""
+    lo_x, hi_x = min(ax, bx) - reach - 1e-6, max(ax, bx) + reach + 1e-6
+    lo_y, hi_y = min(ay, by) - reach - 1e-6, max(ay, by) + reach + 1e-6
     found, stack = [], [geo.root]
     while stack:
         node = stack.pop()
         if node < 0:
             continue
         x0, y0, x1, y1 = geo.bbox[node]
-        if x < x0 - reach or x > x1 + reach or y < y0 - reach or y > y1 + reach:
+        if hi_x < x0 or lo_x > x1 or hi_y < y0 or lo_y > y1:
             continue
         a, b, c = geo.lines[node]
-        s = (a * x + b * y + c) / geo.norms[node]
-        if s > reach:                 # the circle is wholly behind the line
+        norm = geo.norms[node]
+        sa, sb = (a * ax + b * ay + c) / norm, (a * bx + b * by + c) / norm
+        if sa > reach and sb > reach:          # wholly behind the line
             stack.append(geo.child[node][1])
-        elif s < -reach:              # wholly in front of it
+        elif sa < -reach and sb < -reach:      # wholly in front of it
             stack.append(geo.child[node][0])
         else:
             found.extend(range(*geo.node_segs[node]))
-            stack.extend(geo.child[node])
-    return found
-
-
-def _walls_along(geo, ax, ay, bx, by):
-    """Walls with a seg that may meet the segment a-b (a superset; the caller tests exactly)."""
-    lo_x, hi_x, lo_y, hi_y = min(ax, bx), max(ax, bx), min(ay, by), max(ay, by)
-    found, stack = set(), [geo.root]
-    while stack:
-        node = stack.pop()
-        if node < 0:
-            continue
-        x0, y0, x1, y1 = geo.bbox[node]
-        # the boxes hold rounded split points: a hair of margin keeps the pruning safe
-        if hi_x < x0 - 1e-6 or lo_x > x1 + 1e-6 or hi_y < y0 - 1e-6 or lo_y > y1 + 1e-6:
-            continue
-        a, b, c = geo.lines[node]
-        sa, sb = a * ax + b * ay + c, a * bx + b * by + c
-        if sa > 0 and sb > 0:
-            stack.append(geo.child[node][1])
-        elif sa < 0 and sb < 0:
-            stack.append(geo.child[node][0])
-        else:
-            start, stop = geo.node_segs[node]
-            found.update(geo.seg_wall[start:stop])
             stack.extend(geo.child[node])
     return found
 
@@ -243,7 +224,7 @@ def _blocking_segs(geo, heights, x, y, reach, rules):
     """Ends of the segs within reach that the player cannot cross (module docstring)."""
     z_floor, _radius, step, headroom = rules
     out = []
-    for seg in _segs_near(geo, x, y, reach):
+    for seg in _segs_near(geo, x, y, x, y, reach):
         wall = geo.seg_wall[seg]
         if geo.impassable[wall]:
             out.append(geo.seg_xy[seg])
@@ -280,7 +261,7 @@ def standing_heights(source, x, y, radius=PLAYER_RADIUS):
     if sector is None:
         return None
     bottom, top = heights.floors[sector], heights.ceilings[sector]
-    for seg in _segs_near(geo, x, y, radius):
+    for seg in _segs_near(geo, x, y, x, y, radius):
         wall = geo.seg_wall[seg]
         if geo.back[wall] >= 0:
             qx, qy = closest_point(x, y, *geo.seg_xy[seg])
@@ -301,7 +282,7 @@ def line_of_sight(source, a, b, za=None, zb=None) -> bool:
     if za is not None:
         za, zb = _finite("line_of_sight: za", za), _finite("line_of_sight: zb", zb)
     _tree, geo, heights = _world(source)
-    for wall in _walls_along(geo, ax, ay, bx, by):
+    for wall in {geo.seg_wall[seg] for seg in _segs_near(geo, ax, ay, bx, by, 0.0)}:
         where = crossing(ax, ay, bx, by, *geo.wall_ends[wall])
         if where is None:
             continue
