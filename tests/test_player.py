@@ -35,6 +35,11 @@ def test_a_player_spawns_with_its_feet_on_the_floor_and_the_eye_41_above():
     assert player.camera(70).fov == 70 and player.camera().z == player.eye
 
 
+def test_a_player_outside_the_map_stands_at_0_with_the_eye_41_up():
+    player = spawn_player(two_rooms(), -500, -500, 0)
+    assert (player.z, player.eye) == (0, EYE_HEIGHT)
+
+
 def test_walking_settles_at_doom_speed_and_running_doubles_it():
     tree = two_rooms()                  # 512 units east to west, open between the rooms
     walker, runner = spawn_player(tree, 24, 100, 0), spawn_player(tree, 24, 150, 0)

@@ -59,7 +59,7 @@ class Player:
     z: float
     angle: float
     floor: float = 0.0              # DOOM's floorz and ceilingz around the player now
-    ceiling: float = 0.0
+    ceiling: float = math.inf       # (outside the map: floor 0, no ceiling)
     momx: float = 0.0
     momy: float = 0.0
     momz: float = 0.0
