@@ -14,13 +14,16 @@ import weakref
 
 import numpy as np
 
+from .things import level_things
+
 __all__ = ["WorldState", "static_state", "state_of"]
 
 
 class WorldState:
-    """Current sector floors, ceilings and light of one compiled tree."""
+    """Current sector floors, ceilings and light of one compiled tree, and its things
+    (``things``: the level's things at ``skill``, ``wallbsp.things``)."""
 
-    def __init__(self, tree):
+    def __init__(self, tree, skill: int = 3):
         sectors = tree.level.sectors
         self.tree = tree
         self.floor = np.array([s.floor for s in sectors], dtype=np.float64)
@@ -32,6 +35,15 @@ class WorldState:
         self.wall_textures: dict = {}    # (wall, side 0/1, part) -> texture now (switches)
         self.floor_textures: dict = {}   # sector -> floor flat now (floors that change it)
         self.texture_version = 0         # incremented when a texture above changes
+        self.skill = skill
+        self._things = None
+
+    @property
+    def things(self):
+        """The level's things at ``skill`` (``wallbsp.things.Things``), made on first use."""
+        if self._things is None:
+            self._things = level_things(self.tree, self.skill)
+        return self._things
 
     def sector(self, i: int):
         """``(floor, ceiling, light)`` of sector ``i`` now."""

@@ -1,0 +1,258 @@
+"""The things of a level at run time, each kept in the tree's leaf (convex cell) that holds it.
+
+DOOM links every thing into its subsector's list so the renderer projects only the things
+of the subsectors its walk enters (``R_AddSprites``): a part of the map hidden behind walls
+costs nothing.  ``Things`` does the same with flat numpy arrays, one entry per thing:
+
+- ``x``, ``y``: position (float64); ``z``: feet height, NaN for "on its floor now" (or, for
+  a type that hangs, its top at the ceiling now), so things ride lifts and doors for free;
+- ``angle`` (degrees), ``type`` (editor number), ``alive`` (still there: not picked up,
+  not removed, spawned at this skill);
+- ``leaf`` and ``sector`` (the leaf's sector, -1 outside the map), kept up to date by
+  ``add`` / ``move`` / ``remove``;
+- per type: ``radius``, ``height``, ``flags`` (DOOM's mobj flags, ``thingtypes``),
+  ``drawn`` (DOOM never links MF_NOSECTOR things: teleport destinations are there for the
+  rules but never drawn).
+
+Thing ``i`` is the level's THINGS entry ``i`` (SPEC §2b, §5: a frame's ``index`` for kind 4);
+``add`` appends.  Things that the skill leaves out, multiplayer-only things, player and
+deathmatch starts (DOOM puts the player there, no thing) and types that neither DOOM nor
+the level knows are present but not ``alive``.
+
+``things_in_leaves(leaves)`` gives the things of those leaves, leaf by leaf, from a table
+grouped by leaf that is rebuilt on first use after a change (one argsort), so moving many
+things in a tic costs one vectorised locate (``locate_leaves``) and no regrouping until a
+frame asks.
+"""
+from __future__ import annotations
+
+import weakref
+
+import numpy as np
+
+from .geometry import exact_side
+from .thingtypes import DEATHMATCH_START, PLAYER_STARTS, SPAWNCEILING, thing_info
+
+__all__ = ["Things", "level_things", "spawned_at", "locate_leaves", "MULTIPLAYER_ONLY"]
+
+MULTIPLAYER_ONLY = 16              # THINGS flag bit 4
+_MARKERS = frozenset(PLAYER_STARTS) | {DEATHMATCH_START}
+
+
+def skill_bit(skill: int) -> int:
+    """THINGS flag bit of a skill 1-5: bit 0 for skills 1-2, bit 1 for 3, bit 2 for 4-5."""
+    if not 1 <= int(skill) <= 5:
+        raise ValueError(f"skill must be 1 to 5, got {skill!r}")
+    return 1 if skill <= 2 else 2 if skill == 3 else 4
+
+
+def spawned_at(flags, skill: int) -> np.ndarray:
+    """Whether things with THINGS ``flags`` are in a single-player game at ``skill``."""
+    flags = np.asarray(flags, dtype=np.int64)
+    return ((flags & skill_bit(skill)) != 0) & ((flags & MULTIPLAYER_ONLY) == 0)
+
+
+# -- locating many points at once ------------------------------------------------------------
+
+class _TreeLines:
+    """A tree's node lines and children as numpy arrays, for the vectorised walk."""
+
+    def __init__(self, tree):
+        lines = np.asarray(tree.node_line, dtype=np.float64).reshape(-1, 3)
+        self.a, self.b, self.c = (np.ascontiguousarray(lines[:, k]) for k in range(3))
+        child = np.asarray(tree.node_child, dtype=np.int64).reshape(-1, 2)
+        self.front, self.back = np.ascontiguousarray(child[:, 0]), np.ascontiguousarray(child[:, 1])
+        self.exact = np.asarray(tree.node_line).reshape(-1, 3).tolist()   # ints for exact_side
+        self.leaf_sector = np.asarray(tree.leaf_sector, dtype=np.int64)
+
+
+_LINES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+
+
+def _tree_lines(tree) -> _TreeLines:
+    try:
+        lines = _LINES.get(tree)
+    except TypeError:
+        return _TreeLines(tree)
+    if lines is None:
+        lines = _LINES[tree] = _TreeLines(tree)
+    return lines
+
+
+def locate_leaves(tree, x, y) -> np.ndarray:
+    """The leaf holding each point (int64 array), by the tree's own side rule (``BSPTree.walk``
+    and ``locate``): the sign of ``a*x + b*y + c`` in doubles where it is clear, exactly
+    otherwise, a point on a line going to the line's front.  All points descend together,
+    one numpy step per tree level.  ValueError for a point that is not finite."""
+    x = np.atleast_1d(np.asarray(x, dtype=np.float64))
+    y = np.atleast_1d(np.asarray(y, dtype=np.float64))
+    if not (np.isfinite(x).all() and np.isfinite(y).all()):
+        raise ValueError("a thing's position must be finite")
+    node = np.full(x.shape, int(tree.root), dtype=np.int64)
+    if tree.root < 0 or not x.size:
+        return ~node
+    t = _tree_lines(tree)
+    tol = tree.side_tolerance(float(np.abs(x).max()), float(np.abs(y).max()))
+    active = np.arange(x.size)
+    while active.size:
+        at, px, py = node[active], x[active], y[active]
+        s = t.a[at] * px + t.b[at] * py + t.c[at]
+        unsure = np.flatnonzero(~((s < -tol) | (s > tol)))
+        for k in unsure.tolist():                  # on or next to a line: decide exactly
+            s[k] = exact_side(*t.exact[at[k]], float(px[k]), float(py[k]))
+        nxt = np.where(s <= 0, t.front[at], t.back[at])
+        node[active] = nxt
+        active = active[nxt >= 0]
+    return ~node
+
+
+# -- the things ------------------------------------------------------------------------------
+
+_FIELDS = ("x", "y", "z", "angle", "type", "alive", "leaf", "sector", "radius", "height",
+           "flags", "drawn", "bright")
+
+
+class Things:
+    """The things of one tree's level at run time (see the module's docstring)."""
+
+    def __init__(self, tree, own_types=None):
+        self.tree = tree
+        self.own_types = own_types if own_types is not None else tree.level.thing_types
+        self.x = np.zeros(0)
+        self.y = np.zeros(0)
+        self.z = np.zeros(0)
+        self.angle = np.zeros(0)
+        self.type = np.zeros(0, dtype=np.int32)
+        self.alive = np.zeros(0, dtype=bool)
+        self.leaf = np.zeros(0, dtype=np.int64)
+        self.sector = np.zeros(0, dtype=np.int64)
+        self.radius = np.zeros(0)
+        self.height = np.zeros(0)
+        self.flags = np.zeros(0, dtype=np.int64)
+        self.drawn = np.zeros(0, dtype=bool)
+        self.bright = np.zeros(0, dtype=bool)
+        self.version = 0                 # incremented by every change
+        self._infos: dict = {}
+        self._grouped = None             # (thing ids by leaf, start of each leaf)
+
+    def __len__(self) -> int:
+        return len(self.x)
+
+    def info(self, i: int):
+        """The ``ThingInfo`` of thing ``i``'s type (None for a type nobody knows)."""
+        return self._info(int(self.type[i]))
+
+    def _info(self, thing_type: int):
+        if thing_type not in self._infos:
+            self._infos[thing_type] = thing_info(thing_type, self.own_types)
+        return self._infos[thing_type]
+
+    # -- changes ---------------------------------------------------------------------------
+    def add(self, x, y, type, angle=0.0, z=np.nan, alive=True) -> np.ndarray:
+        """Add things (scalars or arrays of one length) and return their indices.  ``z`` NaN:
+        on the floor (hanging types: from the ceiling).  A type nobody knows is never alive."""
+        x, y = np.atleast_1d(np.asarray(x, dtype=np.float64)), np.atleast_1d(
+            np.asarray(y, dtype=np.float64))
+        n = len(x)
+        types = np.broadcast_to(np.asarray(type, dtype=np.int32), (n,))
+        infos = [self._info(int(t)) for t in types.tolist()]
+        known = np.array([i is not None for i in infos], dtype=bool)
+        leaf = locate_leaves(self.tree, x, y)
+        new = {
+            "x": x, "y": y, "z": np.broadcast_to(np.asarray(z, dtype=np.float64), (n,)),
+            "angle": np.broadcast_to(np.asarray(angle, dtype=np.float64), (n,)),
+            "type": types, "alive": np.broadcast_to(np.asarray(alive, dtype=bool), (n,)) & known,
+            "leaf": leaf, "sector": _tree_lines(self.tree).leaf_sector[leaf],
+            "radius": np.array([i.radius if i else 0 for i in infos], dtype=np.float64),
+            "height": np.array([i.height if i else 0 for i in infos], dtype=np.float64),
+            "flags": np.array([i.flags if i else 0 for i in infos], dtype=np.int64),
+            "drawn": np.array([bool(i and i.drawn) for i in infos], dtype=bool),
+            "bright": np.array([bool(i and i.bright) for i in infos], dtype=bool),
+        }
+        first = len(self)
+        for name in _FIELDS:
+            old = getattr(self, name)
+            setattr(self, name, np.concatenate([old, new[name].astype(old.dtype)]))
+        self._changed()
+        return np.arange(first, first + n)
+
+    def move(self, i, x, y, z=None, angle=None) -> None:
+        """Move thing(s) ``i`` (an index or an array of them) to ``(x, y)``; ``z`` (feet;
+        NaN: on the floor) and ``angle`` too when given.  Their leaves follow."""
+        i = np.atleast_1d(np.asarray(i, dtype=np.int64))
+        x = np.broadcast_to(np.asarray(x, dtype=np.float64), i.shape)
+        y = np.broadcast_to(np.asarray(y, dtype=np.float64), i.shape)
+        leaf = locate_leaves(self.tree, x, y)
+        self.x[i], self.y[i], self.leaf[i] = x, y, leaf
+        self.sector[i] = _tree_lines(self.tree).leaf_sector[leaf]
+        if z is not None:
+            self.z[i] = z
+        if angle is not None:
+            self.angle[i] = angle
+        self._changed()
+
+    def remove(self, i) -> None:
+        """Take thing(s) ``i`` out of the world (picked up, destroyed); indices stay."""
+        self.alive[np.asarray(i, dtype=np.int64)] = False
+        self._changed()
+
+    def _changed(self):
+        self.version += 1
+        self._grouped = None
+
+    # -- what the renderer and the rules read ---------------------------------------------
+    def _groups(self):
+        if self._grouped is None:
+            linked = np.flatnonzero(self.alive & self.drawn)
+            order = linked[np.argsort(self.leaf[linked], kind="stable")]
+            n_leaves = len(self.tree.leaf_sector)
+            start = np.searchsorted(self.leaf[order], np.arange(n_leaves + 1))
+            self._grouped = (order, start)
+        return self._grouped
+
+    def things_in_leaf(self, leaf: int) -> np.ndarray:
+        """The drawn things (alive, not MF_NOSECTOR) in ``leaf``, by index."""
+        order, start = self._groups()
+        return order[start[leaf]:start[leaf + 1]]
+
+    def things_in_leaves(self, leaves) -> np.ndarray:
+        """The drawn things of ``leaves`` (a sequence of leaf numbers), leaf by leaf in the
+        order given: the cost follows the leaves, not the things of the map."""
+        order, start = self._groups()
+        leaves = np.asarray(leaves, dtype=np.int64)
+        if not leaves.size or not order.size:
+            return order[:0]
+        first, counts = start[leaves], start[leaves + 1] - start[leaves]
+        total = int(counts.sum())
+        if not total:
+            return order[:0]
+        offsets = np.cumsum(counts) - counts
+        return order[np.arange(total) - np.repeat(offsets - first, counts)]
+
+    def feet(self, i, floor, ceiling) -> np.ndarray:
+        """Feet heights of things ``i`` with sector heights ``floor``/``ceiling`` now: the
+        set ``z``, else the floor of their sector, or for hanging types the ceiling minus
+        their height (DOOM's MF_SPAWNCEILING)."""
+        i = np.asarray(i, dtype=np.int64)
+        sector = np.maximum(self.sector[i], 0)
+        hangs = (self.flags[i] & SPAWNCEILING) != 0
+        resting = np.where(hangs, ceiling[sector] - self.height[i], floor[sector])
+        z = self.z[i]
+        return np.where(np.isnan(z), resting, z)
+
+
+
+def level_things(tree, skill: int = 3) -> Things:
+    """The level's things for a single-player game at ``skill`` (1-5): thing ``i`` is THINGS
+    entry ``i``; the ones that are not in the game at that skill are not ``alive``."""
+    things = Things(tree)
+    placed = tree.level.things
+    if not placed:
+        return things
+    flags = np.array([t.flags for t in placed], dtype=np.int64)
+    types = np.array([t.type for t in placed], dtype=np.int64)
+    playing = spawned_at(flags, skill) & ~np.isin(types, list(_MARKERS))
+    things.add([t.x for t in placed], [t.y for t in placed], types,
+               [float(t.angle) for t in placed], alive=playing)
+    things.version = 0
+    return things
