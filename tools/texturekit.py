@@ -315,25 +315,23 @@ def keycard(r, w, h):
     return out
 
 
-def medikit(r, w, h):
-    out, (ys, xs) = _sprite(h, w), grid(h, w)
-    box = (ys >= 4) & (xs >= 1) & (xs < w - 1)
-    _fill(out, box, (225, 225, 220))
-    _fill(out, box & (ys >= h - 2), (150, 150, 145))
-    cx, cy = w / 2 - 0.5, (h + 4) / 2 - 0.5
-    cross = ((np.abs(xs - cx) < 2) & (np.abs(ys - cy) < 5)) | ((np.abs(xs - cx) < 5) & (np.abs(ys - cy) < 2))
-    _fill(out, cross, (210, 20, 20))
-    return out
+def first_aid(box_colour, lid, arm):
+    """A box with a red cross standing on the floor: the medikit and the stimpack."""
+    def draw(r, w, h):
+        out, (ys, xs) = _sprite(h, w), grid(h, w)
+        box = (ys >= lid) & (xs >= 1) & (xs < w - 1)
+        _fill(out, box, box_colour)
+        _fill(out, box & (ys >= h - 2), np.array(box_colour) * 0.65)
+        cx, cy = w / 2 - 0.5, (h + lid) / 2 - 0.5
+        across, along = np.abs(xs - cx), np.abs(ys - cy)
+        cross = ((across < arm / 2.5) & (along < arm)) | ((across < arm) & (along < arm / 2.5))
+        _fill(out, cross, (210, 20, 20))
+        return out
+    return draw
 
 
-def stimpack(r, w, h):
-    out, (ys, xs) = _sprite(h, w), grid(h, w)
-    box = (ys >= 3) & (xs >= 1) & (xs < w - 1)
-    _fill(out, box, (200, 210, 230))
-    cx, cy = w / 2 - 0.5, (h + 3) / 2 - 0.5
-    cross = ((np.abs(xs - cx) < 1.5) & (np.abs(ys - cy) < 4)) | ((np.abs(xs - cx) < 4) & (np.abs(ys - cy) < 1.5))
-    _fill(out, cross, (210, 20, 20))
-    return out
+medikit = first_aid((225, 225, 220), 4, 5)
+stimpack = first_aid((200, 210, 230), 3, 4)
 
 
 def target(r, w, h):

@@ -99,17 +99,27 @@ def _level(plan: Plan, name: str, start, placed, exits) -> Level:
     vertices, v1, v2 = vertex_table(found.ends)
     exit_set = {(a, b) for a, b in exits}
     front_x, back_x = texture_offsets(found.ends)
+    sides = _SideCache()
     walls = []
     for i, (x1, y1, x2, y2) in enumerate(found.ends.tolist()):
         f, b = int(found.front[i]), int(found.back[i])
         is_exit = ((x1, y1), (x2, y2)) in exit_set
-        walls.append(_wall(plan, int(v1[i]), int(v2[i]), f, None if b == SOLID else b,
-                           int(front_x[i]), int(back_x[i]), is_exit))
+        walls.append(_wall(plan, sides, (int(v1[i]), int(v2[i])), f, None if b == SOLID else b,
+                           (int(front_x[i]), int(back_x[i])), is_exit))
     sectors = [_sector(s) for s in plan.sectors]
     things = tuple(Thing(*tile_centre(p.x, p.y), p.angle, p.type) for p in placed)
     return Level(name, vertices, sectors, walls, Start(*start), version=2,
                  resources=("textures",), things=things, thing_types=dict(THING_TYPES),
                  sky=SKY_TEXTURE, source_dir=TEXTURE_DIR.parent)
+
+
+class _SideCache(dict):
+    """Equal sides shared: a level has few distinct ones (textures x grid offsets), and
+    making a frozen dataclass costs more than a lookup."""
+
+    def __missing__(self, key):
+        side = self[key] = Side(*key)
+        return side
 
 
 def _sector(s) -> Sector:
@@ -119,21 +129,22 @@ def _sector(s) -> Sector:
                   s.special)
 
 
-def _wall(plan: Plan, v1: int, v2: int, front: int, back: int | None, fx: int, bx: int,
-          is_exit: bool) -> Wall:
+def _wall(plan: Plan, sides: _SideCache, ends: tuple[int, int], front: int, back: int | None,
+          offsets: tuple[int, int], is_exit: bool) -> Wall:
     f = plan.sectors[front]
+    fx, bx = offsets
     if back is None:
         if is_exit:
-            return Wall(v1, v2, front, None, colour_of("SW1EXIT"),
-                        front_side=Side(None, "SW1EXIT", None, fx), special=features.EXIT_SWITCH)
+            return Wall(*ends, front, None, colour_of("SW1EXIT"),
+                        front_side=sides[None, "SW1EXIT", None, fx], special=features.EXIT_SWITCH)
         jamb = f.kind == "door"
-        return Wall(v1, v2, front, None, colour_of(f.theme.wall),
-                    front_side=Side(None, f.theme.wall, None, fx), lower_unpegged=jamb)
+        return Wall(*ends, front, None, colour_of(f.theme.wall),
+                    front_side=sides[None, f.theme.wall, None, fx], lower_unpegged=jamb)
     b = plan.sectors[back]
     # the riser belongs to the higher floor, the lintel to the lower ceiling, so a step
     # looks the same from both sides; a door's lintel is the door itself
     lower = (f if f.floor >= b.floor else b).theme.lower
     upper = (f if f.ceiling <= b.ceiling else b).theme.upper
     door = DOOR_SPECIAL if b.kind == "door" else 0
-    return Wall(v1, v2, front, back, colour_of(f.theme.wall), colour_of(upper), colour_of(lower),
-                Side(upper, None, lower, fx), Side(upper, None, lower, bx), special=door)
+    return Wall(*ends, front, back, colour_of(f.theme.wall), colour_of(upper), colour_of(lower),
+                sides[upper, None, lower, fx], sides[upper, None, lower, bx], special=door)
