@@ -1,5 +1,6 @@
 """The evidence scripts run: tools/bench_gordon_chen.py and tools/bench_maps.py in --quick
---no-docs mode print what docs/benchmarks.md is built from.
+--no-docs mode print what docs/benchmarks.md is built from (their experiments are
+tools/benchkit/gordon_chen.py and maps.py).
 
 --no-docs: a test never rewrites docs/benchmarks.md or its plots.  No test is timed: the
 subprocess timeout only stops a hung script (--quick takes about 5 s here).
@@ -13,6 +14,7 @@ import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "tools"))
+from benchkit import freedoom, maps as bench_maps  # noqa: E402
 FREEDOOM_INSTALLED = all(Path(f"/usr/share/games/doom/freedoom{i}.wad").exists() for i in (1, 2))
 
 
@@ -84,11 +86,8 @@ def test_maps_quick_prints_maps_frames_and_a_summary(maps):
 
 
 def test_maps_skips_cleanly_without_the_wads(monkeypatch, tmp_path):
-    import benchkit
-    import bench_maps
     absent = (tmp_path / "freedoom1.wad", tmp_path / "freedoom2.wad")
-    monkeypatch.setattr(benchkit, "FREEDOOM", absent)
-    monkeypatch.setattr(bench_maps, "FREEDOOM", absent)
+    monkeypatch.setattr(freedoom, "FREEDOOM", absent)
     lines = bench_maps.run(bench_maps.parse_args(["--quick", "--no-docs"]))
     assert len(lines) == 1
     assert lines[0]["kind"] == "summary" and "absent" in lines[0]["skipped"]

@@ -1,4 +1,5 @@
-"""The benchmark scripts run: each one's --quick mode prints one JSON object with its keys.
+"""The benchmark scripts run: each one's --quick mode prints one JSON object with its keys
+(the experiments are tools/benchkit/*.py; the scripts only run them).
 
 They run with --no-docs, so a test never rewrites docs/benchmarks.md or its plots. Nothing
 here is timed; the timeout only stops a hung script.
@@ -12,10 +13,12 @@ import pytest
 
 ROOT = Path(__file__).resolve().parent.parent
 FREEDOOM_INSTALLED = Path("/usr/share/games/doom/freedoom2.wad").exists()
+FREEDOOM_BOTH = all(Path(f"/usr/share/games/doom/freedoom{i}.wad").exists() for i in (1, 2))
 
 
-def run_quick(script: str) -> dict:
-    done = subprocess.run([sys.executable, str(ROOT / "tools" / script), "--quick", "--no-docs"],
+def run_quick(script: str, *options: str) -> dict:
+    done = subprocess.run([sys.executable, str(ROOT / "tools" / script), "--quick", "--no-docs",
+                           *options],
                           capture_output=True, text=True, timeout=300, cwd=ROOT)
     assert done.returncode == 0, done.stderr
     return json.loads(done.stdout)
@@ -89,3 +92,31 @@ def test_render_benchmark_quick_reports_fps_nodes_and_gordon_chen():
     assert 0 < result["levels"]["large"]["nodes_visited_median_fraction"] <= 1
     for case in result["gordon_chen"]["cases"]:
         assert case["front_ms"] > 0 and case["painter_ms"] > 0 and case["segs"] > 0
+
+
+def test_memory_benchmark_quick_reports_compile_and_first_frame_peaks():
+    result = run_quick("bench_memory.py")
+    rows = result["levels"]
+    assert [r["target_walls"] for r in rows] == [300, 1000]
+    for row in rows:
+        assert row["walls"] >= row["target_walls"] and row["segs"] >= row["walls"]
+        for step in ("compile", "frame"):
+            peak = row[step]
+            assert 0 < peak["before"] <= peak["peak"] and peak["added"] >= 0
+        assert row["frame"]["process_peak"] >= row["tree_load"]["peak"]
+    where = rows[-1]["where"]                       # the largest size is traced
+    assert where["kept_after_frame"] and all(s["mb"] >= 0 for s in where["kept_after_frame"])
+    assert result["met"] is None                    # no 200,000-wall level in a quick run
+
+
+@pytest.mark.skipif(not FREEDOOM_BOTH, reason="needs freedoom1.wad and freedoom2.wad")
+def test_compare_quick_against_this_checkout_draws_the_same_frames_and_tree():
+    result = run_quick("bench_compare.py", "--baseline", str(ROOT))
+    assert result["checkouts"]["baseline"] == result["checkouts"]["current"]
+    assert result["same_frames"] == {"320x200": True, "640x400": True}
+    assert result["same_tree"] is True
+    for name in ("baseline", "current"):
+        figures = result["figures"][name]
+        assert figures["e1m1_320x200_fps"] > 0 and figures["map12_compile_seconds"] > 0
+    assert set(result["within_10_percent"]) == {"e1m1_320x200_fps", "e1m1_640x400_fps",
+                                                "map12_compile_seconds"}

@@ -1,5 +1,5 @@
-"""What the benchmark scripts in tools/ share: the Freedoom maps, the machine, timing,
-Markdown tables, and the one writer of docs/benchmarks.md.
+"""Reporting for the benchmark scripts: the machine, Markdown tables, the options every
+script shares, and the one writer of docs/benchmarks.md.
 
 docs/benchmarks.md is made of sections, each between ``<!-- NAME:begin -->`` and
 ``<!-- NAME:end -->``. A script rewrites only its own section; the rest of the file (the intro,
@@ -14,23 +14,13 @@ import io
 import json
 import os
 import platform
-import statistics
-import sys
-import time
 from contextlib import contextmanager
 from pathlib import Path
 
-ROOT = Path(__file__).resolve().parent.parent
-sys.path.insert(0, str(ROOT))
+from wallbsp.files import write_atomically
 
-from wallbsp import wad as _wad  # noqa: E402
-from wallbsp.files import write_atomically  # noqa: E402
-from wallbsp.wad import _find_map_lumps, _open_wad, list_maps  # noqa: E402
-
+ROOT = Path(__file__).resolve().parents[2]
 DOC = ROOT / "docs" / "benchmarks.md"
-FREEDOOM = (Path("/usr/share/games/doom/freedoom1.wad"),
-            Path("/usr/share/games/doom/freedoom2.wad"))
-LINEDEF_BYTES = 14
 
 INTRO = """# Benchmarks
 
@@ -48,6 +38,8 @@ Regenerate:
     python tools/bench_maps.py        # every Freedoom map: import, compile, validate, render; fps
     python tools/bench_compile.py     # the compiler's targets (prints JSON only)
     python tools/bench_render.py      # the renderer's targets (prints JSON only)
+    python tools/bench_memory.py      # peak memory of compile and first frame, 10k-200k walls
+    python tools/bench_compare.py --baseline DIR  # this checkout against another, interleaved
 
 `--quick` on any of them is a smoke run of a few seconds; `--no-docs` prints the JSON and writes
 nothing. Plots need matplotlib (`pip install -e ".[bench]"`).
@@ -55,39 +47,7 @@ nothing. Plots need matplotlib (`pip install -e ".[bench]"`).
 
 
 # ---------------------------------------------------------------------------------------------
-# Freedoom maps
-
-def freedoom_maps() -> list[tuple[Path, str]]:
-    """(wad, map) for every map of the installed Freedoom WADs; none when they are absent."""
-    return [(wad, name) for wad in FREEDOOM if wad.exists() for name in list_maps(wad)]
-
-
-def map_lumps(wad_path: Path, map_name: str) -> dict[str, bytes]:
-    """The raw lumps of one map (THINGS ... BLOCKMAP), by name, in directory order."""
-    with _open_wad(wad_path) as wad:
-        return {name: wad.read(i) for name, i in _find_map_lumps(wad, map_name).items()}
-
-
-def linedef_count(wad_path: Path, map_name: str) -> int:
-    with _open_wad(wad_path) as wad:
-        index = _find_map_lumps(wad, map_name)["LINEDEFS"]
-        return int(wad.tables.size[index]) // LINEDEF_BYTES
-
-
-def forget_wads() -> None:
-    """Empties the importer's cache of WAD directories and texture colours, so that the next
-    import pays what a fresh process pays."""
-    _wad._CACHE.clear()
-
-
-def smallest_maps(count: int) -> list[tuple[Path, str]]:
-    """The ``count`` Freedoom maps with the fewest linedefs: the ``--quick`` runs' maps."""
-    maps = freedoom_maps()
-    return sorted(maps, key=lambda m: (linedef_count(*m), m[1]))[:count]
-
-
-# ---------------------------------------------------------------------------------------------
-# Machine and timing
+# The machine
 
 def machine() -> dict:
     return {"nproc": len(os.sched_getaffinity(0)), "cpu": cpu_model(),
@@ -111,17 +71,6 @@ def _numpy_version() -> str:
     return numpy.__version__
 
 
-def median_seconds(run, repeat: int):
-    """(the last result of ``run()``, the median of its wall-clock times over ``repeat`` runs):
-    the median, because other work on the machine only ever adds time, and not always."""
-    times, result = [], None
-    for _ in range(max(1, repeat)):
-        started = time.perf_counter()
-        result = run()
-        times.append(time.perf_counter() - started)
-    return result, statistics.median(times)
-
-
 # ---------------------------------------------------------------------------------------------
 # Markdown and the docs file
 
@@ -138,13 +87,26 @@ def machine_line(info: dict) -> str:
             f"numpy {info['numpy']}. Date: {info['date']}.")
 
 
-def script_parser(doc: str, quick_help: str) -> argparse.ArgumentParser:
-    """The options every benchmark script shares: --quick and --no-docs."""
+def positive_int(text: str) -> int:
+    """argparse type: a count of at least 1 (argparse turns the error into exit status 2)."""
+    value = int(text)
+    if value < 1:
+        raise ValueError(text)
+    return value
+
+
+def script_parser(doc: str, quick_help: str, repeat: int | None = None) -> argparse.ArgumentParser:
+    """The options every benchmark script shares: --quick and --no-docs; --repeat N (runs of
+    every timing, the median kept) when it has a ``repeat`` default."""
     parser = argparse.ArgumentParser(description=doc.splitlines()[0])
     parser.add_argument("--quick", action="store_true", help=quick_help)
     parser.add_argument("--no-docs", action="store_true",
                         help="print the JSON only; write neither docs/benchmarks.md nor a plot "
                              "(--quick never writes them either)")
+    if repeat is not None:
+        parser.add_argument("--repeat", type=positive_int, default=repeat,
+                            help=f"runs of every timing, the median kept (default {repeat}; "
+                                 "--quick 1)")
     return parser
 
 
@@ -153,9 +115,20 @@ def writes_docs(args) -> bool:
     return not (args.quick or args.no_docs)
 
 
-def report(result: dict, args, name: str, plot, section) -> None:
-    """The end of every evidence script: plot, print the JSON, rewrite the doc section."""
-    result["plot"] = plot(result) if writes_docs(args) else None
+def run_script(parser: argparse.ArgumentParser, run, name: str, section, plot=None,
+               argv=None) -> int:
+    """A benchmark script from start to end: parse the options, ``run(args)`` for the result,
+    then ``report`` it; the exit status."""
+    args = parser.parse_args(argv)
+    report(run(args), args, name, section, plot)
+    return 0
+
+
+def report(result: dict, args, name: str, section, plot=None) -> None:
+    """The end of every benchmark: plot (when it has one), print the JSON, rewrite the doc
+    section named ``name``."""
+    if plot is not None:
+        result["plot"] = plot(result) if writes_docs(args) else None
     print(json.dumps(result, sort_keys=True))
     if writes_docs(args):
         update_section(name, section(result))
@@ -167,7 +140,7 @@ def update_section(name: str, body: str, doc: Path = DOC) -> None:
     under a lock on the directory, so two scripts finishing together cannot lose each other's
     section."""
     doc.parent.mkdir(parents=True, exist_ok=True)
-    with _locked(doc.parent):
+    with locked(doc.parent):
         text = doc.read_text() if doc.exists() else INTRO
         write_atomically(doc, replace_section(text, name, body).encode())
 
@@ -182,7 +155,7 @@ def replace_section(text: str, name: str, body: str) -> str:
 
 
 @contextmanager
-def _locked(directory: Path):
+def locked(directory: Path):
     fd = os.open(directory, os.O_RDONLY)
     try:
         fcntl.flock(fd, fcntl.LOCK_EX)

@@ -1,0 +1,142 @@
+"""This checkout against another (the baseline), measured in one run: issue 9's "no slower"
+targets.
+
+    python tools/bench_compare.py --baseline DIR [--rounds N] [--quick] [--no-docs]
+
+DIR is another checkout of wallbsp (e.g. a git worktree of the starting commit). Each round
+runs compare_run.py twice in fresh processes, once with PYTHONPATH at DIR and once at this
+checkout, in alternating order (baseline first in even rounds), so that load from elsewhere
+on the machine falls on both alike. A round measures:
+
+- E1M1 (freedoom1.wad) walk: the scripted walk's cameras (walk.py, computed once here, so
+  both draw the same views) at 320x200 and 640x400, front to back; fps = 1 / the median
+  frame time over all rounds. The frames' colours are hashed: the same pixels both ways?
+- MAP12 (freedoom2.wad) compile at the default settings, several times a round; the median
+  over all rounds, and a hash of the tree's arrays: the same tree both ways?
+
+Prints one JSON object; rewrites the "compare" section of docs/benchmarks.md (not with
+--quick or --no-docs). Target: each figure within 10 % of the baseline.
+"""
+from __future__ import annotations
+
+import json
+import statistics
+from pathlib import Path
+
+from wallbsp import compile_level
+
+from . import ROOT
+from .freedoom import FREEDOOM, load_map
+from .measure import python_json
+from .report import machine, machine_line, markdown_table, positive_int, report, script_parser
+from .walk import walk_frames, walk_path
+
+COMMAND = "python tools/bench_compare.py"
+WALK_MAP = (FREEDOOM[0], "E1M1")
+COMPILE_MAP = (FREEDOOM[1], "MAP12")
+SIZES = ((320, 200), (640, 400))
+COMPILE_REPEAT = 3
+QUICK_FRAMES = 20
+TOLERANCE = 0.10
+RUNNER = Path(__file__).resolve().parent / "compare_run.py"
+
+
+def main(argv=None) -> int:
+    parser = script_parser(__doc__, "one round, a 20-frame walk, one compile")
+    parser.add_argument("--baseline", type=Path, required=True,
+                        help="the other checkout (its wallbsp/ is imported from there)")
+    parser.add_argument("--rounds", type=positive_int, default=None,
+                        help="rounds, each checkout once a round (default 5; --quick 1)")
+    args = parser.parse_args(argv)
+    if not (args.baseline / "wallbsp" / "__init__.py").is_file():
+        parser.error(f"{args.baseline}: no wallbsp/ package there")
+    missing = [str(w) for w, _ in (WALK_MAP, COMPILE_MAP) if not w.exists()]
+    if missing:
+        parser.error("needs the Freedoom WADs: " + ", ".join(missing))
+    report(run(args), args, "compare", section)
+    return 0
+
+
+def run(args) -> dict:
+    rounds = args.rounds or (1 if args.quick else 5)
+    frames = QUICK_FRAMES if args.quick else walk_frames()
+    tree = compile_level(load_map(*WALK_MAP))
+    job = {"walk": [str(WALK_MAP[0]), WALK_MAP[1]],
+           "cameras": [[c.x, c.y, c.z, c.angle] for c in walk_path(tree, frames)],
+           "sizes": [list(s) for s in SIZES],
+           "compile": [str(COMPILE_MAP[0]), COMPILE_MAP[1]],
+           "compile_repeat": 1 if args.quick else COMPILE_REPEAT}
+    checkouts = {"baseline": args.baseline.resolve(), "current": ROOT}
+    runs = {name: [] for name in checkouts}
+    for r in range(rounds):
+        order = list(checkouts) if r % 2 == 0 else list(reversed(checkouts))
+        for name in order:
+            runs[name].append(run_round(checkouts[name], job))
+    return summarise(args, checkouts, runs, rounds, frames)
+
+
+def run_round(checkout: Path, job: dict) -> dict:
+    """compare_run.py in a fresh Python whose wallbsp is ``checkout``'s."""
+    out = python_json([str(RUNNER)], [checkout], stdin=json.dumps(job))
+    expected = checkout / "wallbsp" / "__init__.py"
+    if Path(out["wallbsp"]).resolve() != expected.resolve():
+        raise RuntimeError(f"{checkout}: the round imported {out['wallbsp']}, not {expected}")
+    return out
+
+
+def summarise(args, checkouts, runs, rounds: int, frames: int) -> dict:
+    figures = {name: figures_of(rs) for name, rs in runs.items()}
+    base, cur = figures["baseline"], figures["current"]
+    ratios = {key: round(cur[key] / base[key], 4) for key in base if key.endswith(("fps", "seconds"))}
+    within = {key: (ratio >= 1 - TOLERANCE if key.endswith("fps") else ratio <= 1 + TOLERANCE)
+              for key, ratio in ratios.items()}
+    same_frames = {f"{w}x{h}": len({r["frames"][f"{w}x{h}"]["sha256"]
+                                    for rs in runs.values() for r in rs}) == 1 for w, h in SIZES}
+    same_tree = len({r["compile"]["sha256"] for rs in runs.values() for r in rs}) == 1
+    return {"command": COMMAND + f" --baseline {args.baseline}" + (" --quick" if args.quick else ""),
+            "machine": machine(), "checkouts": {k: str(v) for k, v in checkouts.items()},
+            "rounds": rounds, "walk_frames": frames, "walk": f"{WALK_MAP[0].name}:{WALK_MAP[1]}",
+            "compile": f"{COMPILE_MAP[0].name}:{COMPILE_MAP[1]}", "figures": figures,
+            "current_over_baseline": ratios, "within_10_percent": within,
+            "same_frames": same_frames, "same_tree": same_tree}
+
+
+def figures_of(rounds: list[dict]) -> dict:
+    """fps per size (1 / the median frame time over every frame of every round), the fps
+    of each round, and the median MAP12 compile seconds."""
+    out = {}
+    for w, h in SIZES:
+        key = f"{w}x{h}"
+        times = [t for r in rounds for t in r["frames"][key]["seconds"]]
+        out[f"e1m1_{key}_fps"] = round(1 / statistics.median(times), 1)
+        out[f"e1m1_{key}_fps_per_round"] = [
+            round(1 / statistics.median(r["frames"][key]["seconds"]), 1) for r in rounds]
+    seconds = [s for r in rounds for s in r["compile"]["seconds"]]
+    out["map12_compile_seconds"] = round(statistics.median(seconds), 3)
+    out["map12_segs"] = rounds[0]["compile"]["segs"]
+    return out
+
+
+def section(result: dict) -> str:
+    base, cur = result["figures"]["baseline"], result["figures"]["current"]
+    rows = [[key.replace("_", " "), base[key], cur[key], result["current_over_baseline"][key],
+             "yes" if result["within_10_percent"][key] else "**no**"]
+            for key in result["current_over_baseline"]]
+    same = ", ".join(f"{size}: {'yes' if ok else '**no**'}"
+                     for size, ok in result["same_frames"].items())
+    return "\n\n".join([
+        "## This checkout against the baseline (issue 9: no slower)",
+        f"Regenerate: `{result['command']}`. {machine_line(result['machine'])}",
+        f"Baseline: `{result['checkouts']['baseline']}`; current: "
+        f"`{result['checkouts']['current']}`. {result['rounds']} rounds, each running both "
+        "checkouts in fresh processes in alternating order. The walk: the first "
+        f"{result['walk_frames']} frames of the scripted walk on {result['walk']} (the same "
+        "cameras for both), fps = 1 / the median frame time over all rounds; "
+        f"{result['compile']} compiled at the default settings, the median over all rounds.",
+        markdown_table(["figure", "baseline", "current", "current / baseline",
+                        "within 10 %"], rows),
+        f"Same pixels on the walk: {same}. Same MAP12 tree (arrays): "
+        f"{'yes' if result['same_tree'] else '**no**'}. fps per round, baseline: "
+        + "; ".join(f"{k[5:-14]} {base[k]}" for k in base if k.endswith("_per_round"))
+        + "; current: "
+        + "; ".join(f"{k[5:-14]} {cur[k]}" for k in cur if k.endswith("_per_round")) + "."])
