@@ -347,3 +347,39 @@ def test_a_blocking_two_sided_wall_stops_the_player_but_not_sight():
                                Start(128, 128, 0)))
     assert walk(tree, 128.0, 128.0, 10.0, 0.0, 40)[0] == pytest.approx(256 - RADIUS, abs=1e-3)
     assert queries.line_of_sight(tree, (128, 128), (384, 128))
+
+
+# -- walking over and using walls ------------------------------------------------------------------
+
+def special_rooms(special_between=0, special_east=0, ceiling_b=128):
+    """two_rooms with specials on the wall between the rooms (wall 2, its front facing A)
+    and on B's east wall (wall 5)."""
+    vertices = [(0, 0), (0, 256), (256, 256), (256, 0), (512, 256), (512, 0)]
+    walls = [Wall(0, 1, 0), Wall(1, 2, 0), Wall(2, 3, 0, 1, special=special_between),
+             Wall(3, 0, 0), Wall(2, 4, 1), Wall(4, 5, 1, special=special_east), Wall(5, 3, 1)]
+    return compile_level(Level("specials", vertices, [Sector(0, 128), Sector(0, ceiling_b)],
+                               walls, Start(128, 128, 0)))
+
+
+def test_walls_crossed_name_the_wall_and_the_side_the_centre_came_from():
+    tree = special_rooms()
+    assert queries.walls_crossed(tree, (200, 128), (300, 130)) == [(2, 0)]
+    assert queries.walls_crossed(tree, (300, 130), (200, 128)) == [(2, 1)]
+    assert queries.walls_crossed(tree, (200, 128), (250, 200)) == []
+    assert queries.walls_crossed(tree, (200, 300), (300, 300)) == []    # beyond the wall's end
+
+
+def test_use_reaches_64_units_ahead_to_the_first_special():
+    tree = special_rooms(special_between=1)
+    assert queries.use_target(tree, 200, 128, 0) == (2, 0)
+    assert queries.use_target(tree, 300, 128, 180) == (2, 1)
+    assert queries.use_target(tree, 180, 128, 0) is None               # 76 units away
+    assert queries.use_target(tree, 200, 128, 90) is None              # facing a plain wall
+
+
+def test_use_passes_open_walls_and_stops_at_closed_ones():
+    tree = special_rooms(special_east=1)
+    assert queries.use_target(tree, 250, 128, 0, reach=300) == (5, 0)
+    state = WorldState(tree)
+    state.set_sector(1, ceiling=0)                                     # B shuts
+    assert queries.use_target(state, 250, 128, 0, reach=300) is None

@@ -59,11 +59,13 @@ from .segments import SKIN, closest_point, crossing, slide
 from .world import state_of
 
 __all__ = ["PLAYER_RADIUS", "MAX_STEP", "PLAYER_HEIGHT", "MAX_COORDINATE", "move",
-           "floor_z", "ceiling_z", "standing_heights", "line_of_sight"]
+           "floor_z", "ceiling_z", "standing_heights", "line_of_sight", "walls_crossed",
+           "use_target", "USE_RANGE"]
 
 PLAYER_RADIUS = 16
 MAX_STEP = 24
 PLAYER_HEIGHT = 56
+USE_RANGE = 64              # DOOM's USERANGE: how far ahead a player reaches to use a wall
 MAX_COORDINATE = 2.0 ** 24  # |x|, |y| of a query point: 16 times the largest map (SPEC §1)
 
 _GEOMETRY: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
@@ -110,6 +112,7 @@ class _Geometry:
         self.back = [-1 if w.back is None else w.back for w in level.walls]
         # a one-sided wall, or a two-sided one flagged ``blocks``, stops the player
         self.impassable = [w.back is None or w.blocks for w in level.walls]
+        self.special = [w.special for w in level.walls]
         xs = [v[0] for v in level.vertices] or [0]
         ys = [v[1] for v in level.vertices] or [0]
         self.extent = math.hypot(max(xs) - min(xs), max(ys) - min(ys))
@@ -292,3 +295,54 @@ def line_of_sight(source, a, b, za=None, zb=None) -> bool:
         if za is not None and not all(bottom < za + t * (zb - za) < top for t in where):
             return False
     return True
+
+
+# -- walking over and using walls -----------------------------------------------------------------
+
+def _side(ends, x, y) -> int:
+    """DOOM's P_PointOnLineSide: 0 on the wall's front (its right), 1 behind it or on it."""
+    x1, y1, x2, y2 = ends
+    return 0 if (x2 - x1) * (y - y1) - (y2 - y1) * (x - x1) < 0 else 1
+
+
+def _walls_met(geo, ax, ay, bx, by):
+    """``[(t, wall), ...]`` of the walls the segment a-b meets, by t along it."""
+    hits = []
+    for wall in {geo.seg_wall[seg] for seg in _segs_near(geo, ax, ay, bx, by, 0.0)}:
+        where = crossing(ax, ay, bx, by, *geo.wall_ends[wall])
+        if where is not None:
+            hits.append((min(where), wall))
+    return sorted(hits)
+
+
+def walls_crossed(source, a, b) -> list:
+    """The walls a player's centre crossed moving from ``a`` to ``b`` (DOOM's
+    P_CrossSpecialLine): ``[(wall, side it came from), ...]`` in order along the way, side
+    0 being the wall's front.  A wall counts when the two points lie on different sides of
+    it (DOOM's side test: on the line is behind) and the segment a-b meets it."""
+    (ax, ay), (bx, by) = _point("walls_crossed: a", *a), _point("walls_crossed: b", *b)
+    _tree, geo, _heights = _world(source)
+    crossed = []
+    for _t, wall in _walls_met(geo, ax, ay, bx, by):
+        before = _side(geo.wall_ends[wall], ax, ay)
+        if before != _side(geo.wall_ends[wall], bx, by):
+            crossed.append((wall, before))
+    return crossed
+
+
+def use_target(source, x, y, angle, reach=USE_RANGE):
+    """The wall a player at (x, y) facing ``angle`` uses (DOOM's P_UseLines): going
+    ``reach`` straight ahead, the first wall with a special, as ``(wall, side of the
+    player)`` (0: its front); None when a one-sided or closed wall (no opening now) comes
+    first, or nothing is in reach.  Open two-sided walls are reached through."""
+    x, y = _point("use_target: point", x, y)
+    a = math.radians(_finite("use_target: angle", angle))
+    reach = _finite("use_target: reach", reach, MAX_COORDINATE)
+    _tree, geo, heights = _world(source)
+    for _t, wall in _walls_met(geo, x, y, x + reach * math.cos(a), y + reach * math.sin(a)):
+        if geo.special[wall]:
+            return wall, _side(geo.wall_ends[wall], x, y)
+        bottom, top = heights.opening(geo, wall)
+        if top <= bottom:
+            return None
+    return None
