@@ -12,7 +12,7 @@ import numpy as np   # noqa: E402
 import pygame        # noqa: E402
 import pytest        # noqa: E402
 
-from wallbsp import app, compile_level            # noqa: E402
+from wallbsp import app, compile_level, hud       # noqa: E402
 from wallbsp.game.player import TICRATE, WALK_THRUST, spawn_player, player_tic   # noqa: E402
 from pngread import load_png                      # noqa: E402
 from wallbsp.level import Level, Sector, Start, Wall   # noqa: E402
@@ -147,7 +147,7 @@ def test_automap_readout_and_help_draw_without_error(walk):
     press(pygame.K_o)
     frames(walk, 1)
     assert not np.array_equal(screen(walk), plain)
-    assert any("nodes visited" in line for line in app.readout_lines(walk))
+    assert any("nodes visited" in line for line in hud.readout_lines(walk))
 
 
 def test_painter_toggle_renders_the_same_picture(walk):

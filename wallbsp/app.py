@@ -5,7 +5,7 @@ it loads no pygame.  It initialises the display and fonts only, never audio.  Wh
 does is ``game.player`` (pure code, tic by tic); this module turns events into the player's
 inputs and draws the view and the HUD.  One frame: ``handle_events`` -> ``update_player``
 (the tics due, 35 a second, each with the inputs held now) -> ``draw_frame`` (render at the
-internal resolution, scale into the window, then automap, readout, help, message) -> flip.
+internal resolution, scale into the window, then ``hud.draw_overlays``) -> flip.
 No ``clock.tick`` unless a frame cap (``max_fps``) is asked for.
 
 Keys: W/S or Up/Down forward/back, A/D strafe, Left/Right or the mouse (grab with M) to turn
@@ -32,8 +32,7 @@ from types import SimpleNamespace
 
 from .game.player import TICRATE, Player, player_tic, spawn_player
 from .image import save_png
-from .mapview import MapView, automap_layer, draw_marker, level_bounds, partition_pieces
-from .queries import PLAYER_RADIUS
+from .hud import draw_overlays
 from .render import render
 
 RESOLUTIONS = ((160, 100), (320, 200), (640, 400), (800, 500), (1280, 800), (1600, 1000))
@@ -46,10 +45,6 @@ MESSAGE_SECONDS = 2.0
 SHOT_NAME = "wallbsp-shot-{:03d}.png"
 NO_DISPLAY_DRIVERS = ("dummy", "offscreen")   # SDL drivers that show nothing
 
-HELP = ("WASD/arrows move   Left/Right or mouse (M grab) turn   Shift run   Esc quit",
-        "Tab map  O overlay  L lines  R stats  P painter  [ ] resolution  F fullscreen  "
-        "K shot  H help")
-TEXT, SHADOW = (235, 235, 235), (0, 0, 0)
 
 
 class NoDisplayError(RuntimeError):
@@ -385,57 +380,3 @@ def render_view(walk):
         walk.surface = pygame.Surface(walk.size, 0, walk.display)   # the window's format
     pygame.surfarray.blit_array(walk.surface, walk.frame.color_columns)
     pygame.transform.scale(walk.surface, walk.display.get_size(), walk.display)
-
-
-def draw_overlays(walk):
-    if walk.show_map:
-        draw_automap(walk)
-    if walk.show_readout:
-        _draw_text_block(walk, readout_lines(walk), (8, 8))
-    if walk.show_help:
-        height = walk.display.get_height()
-        _draw_text_block(walk, HELP, (8, height - 8 - len(HELP) * walk.font.get_linesize()))
-    if walk.message and time.perf_counter() < walk.message_until:
-        _draw_text_block(walk, [walk.message], (walk.display.get_width() // 2 - 100, 8))
-
-
-def readout_lines(walk):
-    stats, player = walk.frame.stats, walk.player
-    ms = walk.frame_ms
-    return [f"{ms:.2f} ms  {1000.0 / ms if ms else 0.0:.0f} fps  "
-            f"{walk.size[0]}x{walk.size[1]}  {walk.order}",
-            f"nodes visited {stats['nodes_visited']}  segs drawn {stats['segs_drawn']}  "
-            f"early exit {'yes' if stats['early_exit'] else 'no'}",
-            f"x {player.x:.0f}  y {player.y:.0f}  eye {player.eye:.0f}  "
-            f"angle {player.angle:.0f}"]
-
-
-def _draw_text_block(walk, lines, topleft):
-    """Text with a one-pixel shadow, readable over any part of the view."""
-    x, y = topleft
-    for line in lines:
-        walk.display.blit(walk.font.render(line, True, SHADOW), (x + 1, y + 1))
-        walk.display.blit(walk.font.render(line, True, TEXT), (x, y))
-        y += walk.font.get_linesize()
-
-
-# -- the automap ----------------------------------------------------------------------------------
-
-def draw_automap(walk):
-    """The static layer (cached per window size and mode), then the player and view cone."""
-    size = walk.display.get_size()
-    view = MapView.centred(level_bounds(walk.tree), size)
-    key = (size, walk.map_overlay, walk.show_partitions)
-    if walk.map_cache[0] != key:
-        walk.map_cache = (key, _map_layer(walk, size, view))
-    walk.display.blit(walk.map_cache[1], (0, 0))
-    player = walk.player
-    draw_marker(walk.display, view, (player.x, player.y), PLAYER_RADIUS, player.angle, walk.fov)
-
-
-def _map_layer(walk, size, view):
-    if walk.show_partitions and walk.partitions is None:
-        walk.partitions = partition_pieces(walk.tree, level_bounds(walk.tree))
-    return automap_layer(walk.tree, view, size, walk.display, walk.map_overlay,
-                         walk.partitions if walk.show_partitions else None)
-
