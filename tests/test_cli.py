@@ -239,12 +239,13 @@ def test_numbers_out_of_range_are_one_line_exit_2(tmp_path, capsys, flag, value)
 def test_numbers_at_the_edge_of_the_range_render_without_warnings(tmp_path, capsys):
     level, out = _box(tmp_path), tmp_path / "a.png"
     edge = str(2 ** 24)
-    code, _, err = _run(["render", level, "-o", out, f"--at=-{edge},{edge}", f"--z=-{edge}",
-                         "--angle=36000", "--fov=179"], capsys)
-    assert code == 0 and err == "" and out.exists()
     with warnings.catch_warnings():
         warnings.simplefilter("error")           # a numpy overflow warning would raise here
-        assert _run(["render", level, "-o", out, f"--z={edge}", "--at=128,128"], capsys)[0] == 0
+        for camera in ([f"--at=-{edge},{edge}", f"--z=-{edge}", "--angle=36000", "--fov=179"],
+                       ["--at=128,128", f"--z={edge}", "--fov=1", "--size=8192x1"],
+                       ["--at=128,128", f"--z=-{edge}", "--angle=-36000", "--painter"]):
+            code, _, err = _run(["render", level, "-o", out, *camera], capsys)
+            assert code == 0 and err == "" and out.exists(), (camera, err)
 
 
 def test_draw_size_is_capped_like_render(tmp_path, capsys):
