@@ -2,6 +2,7 @@
 
 200 seeds here keep the suite fast; tools/check_levelgen.py runs the same checks on 1,000.
 """
+import numpy as np
 import pytest
 
 from wallbsp import compile_level
@@ -9,6 +10,7 @@ from wallbsp.generate import TARGET_TYPE, generate_level, reachable_sectors, sec
 from wallbsp.generate.themes import FLATS, SKY_FLAT, WALL_TEXTURES
 from wallbsp.level import Level, Sector, Start, Wall
 from wallbsp.levelio import level_from_dict
+from wallbsp.thingtypes import thing_info
 
 SEEDS = range(200)
 
@@ -39,6 +41,18 @@ def test_compiles_with_the_start_and_things_inside(levels, seed):
     tree.validate()
     assert tree.locate(made.level.start.x, made.level.start.y) == made.start_sector
     assert all(tree.locate(t.x, t.y) is not None for t in made.level.things)
+
+
+@pytest.mark.parametrize("seed", [3, 11, 64, 100])
+def test_things_and_the_start_keep_clear_of_walls(levels, seed):
+    level = levels[seed].level
+    ends = level.segments().astype(float)
+    a, d = ends[:, :2], ends[:, 2:] - ends[:, :2]
+    spots = [(t.x, t.y, thing_info(t.type, level.thing_types).radius) for t in level.things]
+    for x, y, radius in spots + [(level.start.x, level.start.y, 16)]:
+        t = np.clip(((x - a[:, 0]) * d[:, 0] + (y - a[:, 1]) * d[:, 1]) / (d * d).sum(1), 0, 1)
+        gap = np.hypot(a[:, 0] + t * d[:, 0] - x, a[:, 1] + t * d[:, 1] - y)
+        assert gap.min() >= radius
 
 
 def test_exit_is_a_one_sided_switch_in_the_goal_sector(levels):

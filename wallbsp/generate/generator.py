@@ -12,10 +12,10 @@ import numpy as np
 
 from ..level import Level, Sector, Side, Start, Thing, ThingType, Wall
 from . import features
-from .layout import (SOLID, Plan, assign_heights, farthest_room, new_plan, paint_corridors,
-                     paint_rooms, tile_centre)
+from .layout import (SOLID, TILE, Plan, assign_heights, farthest_room, new_plan,
+                     paint_corridors, paint_rooms, tile_centre)
 from .themes import (PLANT_TYPE, SKY_FLAT, SKY_TEXTURE, TARGET_TYPE, TEXTURE_DIR, colour_of)
-from .tiles import grid_walls, texture_offsets, vertex_table
+from .tiles import bevel_corners, grid_walls, texture_offsets, vertex_table
 
 DEFAULT_WALLS = 500
 WALLS_PER_ROOM = 21          # the mean over many seeds: rooms = walls / this
@@ -58,6 +58,10 @@ def generate_level(seed: int, walls: int = DEFAULT_WALLS, goal: str = "exit") ->
 
 
 def _vary_rooms(rng, plan: Plan) -> None:
+    # some rooms get their corners cut diagonally, by one tile or two
+    for room, tiles in zip(plan.rooms, rng.integers(0, 6, len(plan.rooms)).tolist()):
+        if tiles in (1, 2):
+            plan.bevels[room.sector] = tiles * TILE
     for i, room in enumerate(plan.rooms):
         if rng.random() < 0.3:
             features.cut_corner(rng, plan, room)
@@ -96,6 +100,10 @@ def _result(level, plan, start, exits, placed) -> GeneratedLevel:
 def _level(plan: Plan, name: str, start, placed, exits) -> Level:
     doors = np.array([s.kind == "door" for s in plan.sectors] + [False], dtype=bool)
     found = grid_walls(plan.grid, doors)
+    for size in (TILE, 2 * TILE):
+        bevelled = np.zeros(len(plan.sectors) + 1, dtype=bool)
+        bevelled[[s for s, b in plan.bevels.items() if b == size]] = True
+        found = bevel_corners(found, bevelled, size)
     vertices, v1, v2 = vertex_table(found.ends)
     exit_set = {(a, b) for a, b in exits}
     front_x, back_x = texture_offsets(found.ends)

@@ -65,6 +65,7 @@ class Plan:
     corridors: list[Corridor]
     start_room: int = 0
     goal_room: int = 0
+    bevels: dict = field(default_factory=dict)     # sector → size of its cut corners
 
 
 def new_plan(rng: np.random.Generator, n_rooms: int) -> Plan:

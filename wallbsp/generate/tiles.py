@@ -96,3 +96,47 @@ def texture_offsets(ends: np.ndarray) -> tuple[np.ndarray, np.ndarray]:
     front = np.where(forward, a1, -a1) % 1024
     back = np.where(forward, -a2, a2) % 1024
     return front, back
+
+
+def bevel_corners(walls: GridWalls, bevelled: np.ndarray, size: int) -> GridWalls:
+    """Cut the convex corners of the sectors ``bevelled`` marks with a diagonal wall.
+
+    A corner qualifies where exactly two one-sided walls of such a sector meet, turning
+    right (walls run with their sector on the right, so that is a convex corner), each
+    at least three times ``size`` long: both are shortened by ``size`` and a wall joins
+    the new ends.  The new ends lie inside the old walls, where no other wall ends."""
+    ends = walls.ends.copy()
+    at = {}
+    for i, (x1, y1, x2, y2) in enumerate(ends.tolist()):
+        at.setdefault((x1, y1), []).append((i, 0))
+        at.setdefault((x2, y2), []).append((i, 1))
+    added = []
+    for point, touching in at.items():
+        corner = _convex_corner(ends, walls, bevelled, touching, size)
+        if corner is None:
+            continue
+        a, b, da, db = corner
+        ends[a, 2:] = (point[0] - size * da[0], point[1] - size * da[1])
+        ends[b, :2] = (point[0] + size * db[0], point[1] + size * db[1])
+        added.append((list(ends[a, 2:]) + list(ends[b, :2]), walls.front[a]))
+    if not added:
+        return GridWalls(ends, walls.front, walls.back)
+    new_ends = np.array([e for e, _ in added], dtype=ends.dtype)
+    new_front = np.array([f for _, f in added], dtype=walls.front.dtype)
+    return GridWalls(np.concatenate([ends, new_ends]), np.concatenate([walls.front, new_front]),
+                     np.concatenate([walls.back, np.full(len(added), SOLID, walls.back.dtype)]))
+
+
+def _convex_corner(ends, walls, bevelled, touching, size):
+    """(wall ending here, wall starting here, their unit directions) or None."""
+    if len(touching) != 2 or {end for _, end in touching} != {0, 1}:
+        return None
+    (a, _), (b, _) = sorted(touching, key=lambda t: -t[1])     # a ends here, b starts
+    if (walls.back[a] != SOLID or walls.back[b] != SOLID or walls.front[a] != walls.front[b]
+            or not bevelled[walls.front[a]]):
+        return None
+    da, db = ends[a, 2:] - ends[a, :2], ends[b, 2:] - ends[b, :2]
+    la, lb = np.abs(da).sum(), np.abs(db).sum()      # axis-aligned: the length
+    if da[0] * db[1] - da[1] * db[0] >= 0 or min(la, lb) < 3 * size:
+        return None
+    return a, b, da // la, db // lb
