@@ -229,6 +229,26 @@ class Things:
         offsets = np.cumsum(counts) - counts
         return order[np.arange(total) - np.repeat(offsets - first, counts)]
 
+    def overlapping(self, x, y, radius, flags) -> np.ndarray:
+        """Alive things with any of DOOM's mobj ``flags`` (``thingtypes.SOLID``, ``SPECIAL``)
+        whose box meets a mover of ``radius`` at (x, y): DOOM's PIT_CheckThing test,
+        ``|dx| < r + radius`` and ``|dy| < r + radius`` (boxes, not circles)."""
+        reach = self.radius + radius
+        hit = ((np.abs(self.x - x) < reach) & (np.abs(self.y - y) < reach) & self.alive
+               & ((self.flags & flags) != 0))
+        return np.flatnonzero(hit)
+
+    def box_sides(self, i) -> list:
+        """The four sides ``(x1, y1, x2, y2)`` of each thing's box (half-size its radius), as
+        a mover's blocking segments: a circle kept ``radius`` away from them stays out of
+        DOOM's blocking square but for its rounded corners."""
+        i = np.asarray(i, dtype=np.int64)
+        x, y, r = self.x[i], self.y[i], self.radius[i]
+        x0, x1, y0, y1 = x - r, x + r, y - r, y + r
+        sides = np.stack([np.stack([x0, y0, x1, y0], 1), np.stack([x1, y0, x1, y1], 1),
+                          np.stack([x1, y1, x0, y1], 1), np.stack([x0, y1, x0, y0], 1)], 1)
+        return [tuple(side) for side in sides.reshape(-1, 4).tolist()]
+
     def feet(self, i, floor, ceiling) -> np.ndarray:
         """Feet heights of things ``i`` with sector heights ``floor``/``ceiling`` now: the
         set ``z``, else the floor of their sector, or for hanging types the ceiling minus
