@@ -1,5 +1,5 @@
-"""Movement and sight over the world as it is now: DOOM's P_TryMove, P_SlideMove and
-P_CheckSight.
+"""Movement and sight over the world as it is now: DOOM's P_TryMove, P_SlideMove,
+P_CheckSight, and the walls a player crosses (P_CrossSpecialLine) or uses (P_UseLines).
 
 Every function takes a *source*: a ``BSPTree`` (the level's own heights), a
 ``WorldState`` or anything with one as ``.state`` (the game's world), resolved by
@@ -37,9 +37,10 @@ overlaps, so a player half over a ledge stands on the ledge (``ceiling_z`` is th
 floor under the centre) also works: a wall the circle already overlaps can then be moved
 along or away from, never further into.
 
-**Near segs come from the tree**, not from a scan of every wall: the search prunes a subtree
-whose ``node_bbox`` is out of reach and, at each node, the side of the partition line the
-query circle cannot touch (the node's own segs lie on the line, so they are skipped too).
+**Near segs come from the tree**, not from a scan of every wall: one range search (around
+a point or along a segment) prunes a subtree whose ``node_bbox`` is out of reach and, at
+each node, the side of the partition line the query region cannot touch (the node's own segs
+lie on the line, so they are skipped too).
 
 **Sight** (``line_of_sight``): the segment from ``a`` to ``b`` is blocked by every wall it meets
 (closed segments: touching counts) that is one-sided or closed (``max(floors) >= min(ceilings)``,
