@@ -34,7 +34,8 @@ def test_same_map_and_colours_as_the_original(path):
     assert [(s.floor, s.ceiling, s.light, s.floor_color) for s in textured.sectors] == [
         (s.floor, s.ceiling, s.light, s.floor_color) for s in original.sectors]
     for new, old in zip(textured.walls, original.walls, strict=True):
-        assert {new.v1, new.v2} == {old.v1, old.v2} and {new.front, new.back} == {old.front, old.back}
+        assert {new.v1, new.v2} == {old.v1, old.v2}
+        assert {new.front, new.back} == {old.front, old.back}
         assert (new.color, new.upper_color, new.lower_color) == (
             old.color, old.upper_color, old.lower_color)
     assert [w.split(': ', 1)[1] for w in textured.warnings] == [

@@ -72,10 +72,12 @@ def bricks(r, w, h, bw, bh, base, mortar, variation):
     col = (shifted // bw) % (w // bw)
     lx, ly = shifted % bw, ys % bh
     tone = 1 + variation * (r.random((h // bh, w // bw)) - 0.5) * 2
-    shade = tone[row, col] * bevel(lx - 2, ly - 2, bw - 2, bh - 2) * (0.85 + 0.3 * fractal(r, h, w, 8))
+    grain = 0.85 + 0.3 * fractal(r, h, w, 8)
+    shade = tone[row, col] * bevel(lx - 2, ly - 2, bw - 2, bh - 2) * grain
     is_mortar = (lx < 2) | (ly < 2)
     picture = paint(base, shade)
-    return np.where(is_mortar[..., None], paint(mortar, 0.9 + 0.2 * noise(r, h, w, 16, 16)), picture)
+    joints = paint(mortar, 0.9 + 0.2 * noise(r, h, w, 16, 16))
+    return np.where(is_mortar[..., None], joints, picture)
 
 
 def blocks(r, w, h, row_height, base, mortar):
@@ -148,7 +150,8 @@ def falling_water(r, w, h, base):
 
 def riser(r, w, h, base):
     ys, xs = grid(h, w)
-    shade = (0.85 + 0.3 * fractal(r, h, w, 4)) * np.where(ys < 2, 1.35, np.where(ys >= h - 2, 0.6, 1.0))
+    edges = np.where(ys < 2, 1.35, np.where(ys >= h - 2, 0.6, 1.0))
+    shade = (0.85 + 0.3 * fractal(r, h, w, 4)) * edges
     return paint(base, shade + 0 * xs)
 
 
@@ -175,7 +178,8 @@ def grate(r, w, h, base):
     rails = (ys < 6) | (ys >= h - 6) | (np.abs(ys - h // 2) < 3)
     solid = bars | rails
     lx = np.where(rails, ys % 6, xs % 16 - 6)
-    shade = np.where(lx == 0, 1.3, np.where(lx == 3, 0.65, 1.0)) * (0.9 + 0.2 * noise(r, h, w, 8, 4))
+    edges = np.where(lx == 0, 1.3, np.where(lx == 3, 0.65, 1.0))
+    shade = edges * (0.9 + 0.2 * noise(r, h, w, 8, 4))
     out = np.zeros((h, w, 4))
     out[..., :3] = paint(base, shade)
     out[..., 3] = np.where(solid, 255.0, 0.0)
@@ -202,8 +206,8 @@ def switch_panel(r, w, h, base, on):
     picture[sy - 2:sy + sign.shape[0] + 2, sx - 2:sx + sign.shape[1] + 2] = 20.0
     picture[sy:sy + sign.shape[0], sx:sx + sign.shape[1]][sign] = [220.0, 40.0, 30.0]
     box = (xs >= 20) & (xs < 44) & (ys >= 48) & (ys < 84)
-    picture = np.where(box[..., None], paint([60.0, 60.0, 64.0], bevel(xs - 20, ys - 48, 24, 36, 2, 0.6, 1.4)),
-                       picture)
+    sunken = paint([60.0, 60.0, 64.0], bevel(xs - 20, ys - 48, 24, 36, 2, 0.6, 1.4))
+    picture = np.where(box[..., None], sunken, picture)
     lever_y = (52, 66) if on else (66, 80)
     lever = (np.abs(xs - 32) < 2) & (ys >= lever_y[0]) & (ys < lever_y[1])
     knob = np.hypot(xs - 32, ys - (lever_y[0] if on else lever_y[1] - 1)) < 3.5
@@ -234,7 +238,8 @@ def tiles(r, size, tile, base, grout):
     ys, xs = grid(size, size)
     lx, ly = xs % tile, ys % tile
     tone = (0.85 + 0.3 * r.random((size // tile, size // tile)))[ys // tile, xs // tile]
-    shade = tone * (0.9 + 0.2 * fractal(r, size, size, 8)) * bevel(lx - 1, ly - 1, tile - 1, tile - 1)
+    grain = 0.9 + 0.2 * fractal(r, size, size, 8)
+    shade = tone * grain * bevel(lx - 1, ly - 1, tile - 1, tile - 1)
     return np.where(((lx == 0) | (ly == 0))[..., None], paint(grout, np.ones((size, size))),
                     paint(base, shade))
 

@@ -174,8 +174,8 @@ def assign_heights(rng, plan: Plan) -> list[int]:
                 reach = MAX_STEP * (min(corridor_length(plan, c) - c.door, 3) + 1)
                 floors[b] = floors[a] + 8 * int(rng.integers(-reach // 8, reach // 8 + 1))
                 queue.append(b)
-    plan.corridors = [c for c in plan.corridors
-                      if bands_needed(floors[c.b] - floors[c.a]) <= corridor_length(plan, c) - c.door]
+    plan.corridors = [c for c in plan.corridors if bands_needed(floors[c.b] - floors[c.a])
+                      <= corridor_length(plan, c) - c.door]
     for room in plan.rooms:
         room.links = []
     for c in plan.corridors:
