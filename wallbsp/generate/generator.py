@@ -2,7 +2,12 @@
 milliseconds — rooms, corridors, doors, stairs, platforms, pools, things, and an exit
 switch (or a target thing) as far from the start as the corridors go.
 
-The same seed and options give the same level on any machine (numpy's PCG64 stream).
+The same seed and options give the same level, byte for byte, on any machine with the same
+numpy (its PCG64 stream; numpy keeps the right to change a Generator's streams between
+versions).  The level's ``resources`` name the shipped texture folder relative to
+``source_dir`` (the package's data folder), so its content hash does not depend on where
+wallbsp is installed; to save a generated level elsewhere and keep its textures, point
+``resources`` at ``themes.TEXTURE_DIR``.
 """
 from __future__ import annotations
 
