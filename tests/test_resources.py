@@ -299,7 +299,7 @@ def test_patch_whose_columns_share_one_long_column_stays_small():
 
 def test_texture_placing_a_patch_many_times_stays_small():
     big = patch(256, 128, [[(0, [RED] * 128)]] * 256)
-    placements = [(x % 7, x % 5, 0) for x in range(400)]
+    placements = [(x % 3, x % 2, 0) for x in range(400)]     # 6 places, each many times
     res = ResourceSet([wad(PSOLID=big, TEXTURE1=texture_lump([("RED", 64, 64, placements)]))])
     picture = None
 
@@ -308,6 +308,15 @@ def test_texture_placing_a_patch_many_times_stays_small():
         picture = res.wall("RED")
     assert peak_bytes(composite) < 2_000_000      # the patch (64 KB) and the canvas, not 560 MB
     assert picture.mask.all()
+
+
+def test_texture_painting_its_patches_over_and_over_is_refused():
+    big = patch(256, 128, [[(0, [RED] * 128)]] * 256)
+    placements = [(x % 20, x // 20, 0) for x in range(400)]      # 400 distinct placements
+    res = ResourceSet([wad(PSOLID=big, TEXTURE1=texture_lump([("RED", 64, 64, placements)]))])
+    with pytest.raises(ResourceError, match=r"^res\.wad: TEXTURE1: RED: its patches cover it "
+                                            r"more than 16 times over; refused$"):
+        res.wall("RED")
 
 
 def test_refused_sizes_cover_what_one_lump_could_ask_for():

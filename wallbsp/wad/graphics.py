@@ -9,7 +9,8 @@ from PNG files — with ``mask[x, y]`` True where the picture is opaque, and DOO
 The cost of decoding is bounded by the picture's own width × height, whatever the bytes say:
 columns that share posts are decoded once; a column stops at the bottom of the canvas or when
 it has drawn as many rows as the picture has; patches are clipped to the texture; a placement
-repeated in a texture is painted once. Sizes beyond ``MAX_SIDE`` a side or ``MAX_TEXELS`` in
+repeated in a texture is painted once, and patches covering a texture more than
+``MAX_OVERDRAW`` times over are refused. Sizes beyond ``MAX_SIDE`` a side or ``MAX_TEXELS`` in
 all are refused. Damage is one ``ResourceError`` line naming the lump:
 ``freedoom2.wad: TEXTURE1: BIGDOOR2: patch 3 uses PNAMES entry 999 (350 names)``.
 """
@@ -28,6 +29,7 @@ MAX_TEXELS = 1 << 21       # 2 M texels (2048 × 1024): 16 times the largest Fre
 FLAT_SIDE = 64
 FLAT_BYTES = FLAT_SIDE * FLAT_SIDE
 PALETTE_BYTES = 768
+MAX_OVERDRAW = 16          # patches may cover a texture this many times over (Freedoom: < 4)
 LIGHT_LEVELS = 32          # COLORMAP rows 0..31 are light levels; 32 invulnerability, 33 black
 COLORMAP_ROWS = 34
 POST_END = 0xFF
@@ -248,6 +250,7 @@ def composite(tdef: TextureDef, pnames: list[str],
     check_size(tdef.where, tdef.width, tdef.height)
     pixels = np.zeros((tdef.width, tdef.height), np.uint8)
     mask = np.zeros((tdef.width, tdef.height), bool)
+    budget = MAX_OVERDRAW * tdef.width * tdef.height   # texels pasted: the cost stays W × H
     for k, (ox, oy, p) in _last_of_each_placement(tdef.patches):
         if not 0 <= p < len(pnames):
             raise ResourceError(f"{tdef.where}: patch {k} uses PNAMES entry {p} "
@@ -255,7 +258,10 @@ def composite(tdef: TextureDef, pnames: list[str],
         picture = patch(pnames[p])
         if picture is None:
             raise ResourceError(f"{tdef.where}: patch {k} ({pnames[p]}) is not in the WAD")
-        _paste(pixels, mask, picture, ox, oy)
+        budget -= _paste(pixels, mask, picture, ox, oy)
+        if budget < 0:
+            raise ResourceError(f"{tdef.where}: its patches cover it more than {MAX_OVERDRAW} "
+                                f"times over; refused")
     return Picture(pixels, mask)
 
 
@@ -271,13 +277,15 @@ def _last_of_each_placement(rows: np.ndarray) -> list[tuple[int, tuple[int, int,
     return kept[::-1]
 
 
-def _paste(pixels: np.ndarray, mask: np.ndarray, picture: Picture, ox: int, oy: int) -> None:
+def _paste(pixels: np.ndarray, mask: np.ndarray, picture: Picture, ox: int, oy: int) -> int:
+    """Paints ``picture``'s opaque texels at (ox, oy), clipped; returns the texels covered."""
     width, height = pixels.shape
     x0, x1 = max(ox, 0), min(ox + picture.width, width)
     y0, y1 = max(oy, 0), min(oy + picture.height, height)
     if x0 >= x1 or y0 >= y1:
-        return
+        return 0
     opaque = picture.mask[x0 - ox:x1 - ox, y0 - oy:y1 - oy]
     np.copyto(pixels[x0:x1, y0:y1], picture.pixels[x0 - ox:x1 - ox, y0 - oy:y1 - oy],
               where=opaque)
     mask[x0:x1, y0:y1] |= opaque
+    return (x1 - x0) * (y1 - y0)

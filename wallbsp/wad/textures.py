@@ -20,6 +20,7 @@ from typing import Iterator
 import numpy as np
 
 from ..files import InputError, open_regular
+from ..level import LevelError
 from .archive import Wad, open_wad
 from .graphics import (Picture, ResourceError, TextureDef, composite, decode_colormap,
                        decode_flat, decode_palette, decode_picture, decode_pnames,
@@ -160,5 +161,10 @@ class WadTextures:
                 self._wad = Wad(self.label, open_regular(self.path), self.directory, self.path)
             except InputError as e:
                 raise ResourceError(f"{self.label}: cannot read: {e.reason}") from None
-        yield self._wad
+        try:
+            yield self._wad
+        except ResourceError:
+            raise
+        except LevelError as e:     # the archive's errors (a lump outside the file) name it
+            raise ResourceError(str(e)) from None
 
