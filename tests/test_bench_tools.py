@@ -120,3 +120,14 @@ def test_compare_quick_against_this_checkout_draws_the_same_frames_and_tree():
         assert figures["e1m1_320x200_fps"] > 0 and figures["map12_compile_seconds"] > 0
     assert set(result["within_10_percent"]) == {"e1m1_320x200_fps", "e1m1_640x400_fps",
                                                 "map12_compile_seconds"}
+
+
+def test_resources_quick_loads_e1m1_textures_and_a_bounded_bomb():
+    result = run_quick("bench_resources.py")
+    if not FREEDOOM_BOTH:
+        assert "skipped" in result
+        return
+    rows = result["results"]
+    assert set(rows) == {"e1m1", "bombs"}
+    assert all(row["seconds"] > 0 and row["peak_mb"] > 0 for row in rows.values())
+    assert rows["bombs"]["wad_kb"] > 0 and isinstance(rows["bombs"]["met"], bool)

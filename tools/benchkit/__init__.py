@@ -9,13 +9,15 @@ Shared parts:
   freedoom   the Freedoom maps: which there are, their lumps, importing them
   walk       where a camera stands, and the scripted walk through a map
 One module per experiment: table1, builders, gordon_chen, maps, compile_targets,
-render_targets, memory, compare.
+render_targets, memory, resources, compare (compare_run: one round of it, in the other
+checkout).
 """
 import importlib.util
 import sys
 from pathlib import Path
 
 ROOT = Path(__file__).resolve().parents[2]
+TOOLS = ROOT / "tools"
 # the scripts run from a checkout: its wallbsp when none is installed or on PYTHONPATH
 if importlib.util.find_spec("wallbsp") is None:
     sys.path.insert(1, str(ROOT))

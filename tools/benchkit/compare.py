@@ -87,13 +87,15 @@ def run_round(checkout: Path, job: dict) -> dict:
 def summarise(args, checkouts, runs, rounds: int, frames: int) -> dict:
     figures = {name: figures_of(rs) for name, rs in runs.items()}
     base, cur = figures["baseline"], figures["current"]
-    ratios = {key: round(cur[key] / base[key], 4) for key in base if key.endswith(("fps", "seconds"))}
+    ratios = {key: round(cur[key] / base[key], 4)
+              for key in base if key.endswith(("fps", "seconds"))}
     within = {key: (ratio >= 1 - TOLERANCE if key.endswith("fps") else ratio <= 1 + TOLERANCE)
               for key, ratio in ratios.items()}
     same_frames = {f"{w}x{h}": len({r["frames"][f"{w}x{h}"]["sha256"]
                                     for rs in runs.values() for r in rs}) == 1 for w, h in SIZES}
     same_tree = len({r["compile"]["sha256"] for rs in runs.values() for r in rs}) == 1
-    return {"command": COMMAND + f" --baseline {args.baseline}" + (" --quick" if args.quick else ""),
+    command = COMMAND + f" --baseline {args.baseline}" + (" --quick" if args.quick else "")
+    return {"command": command,
             "machine": machine(), "checkouts": {k: str(v) for k, v in checkouts.items()},
             "rounds": rounds, "walk_frames": frames, "walk": f"{WALK_MAP[0].name}:{WALK_MAP[1]}",
             "compile": f"{COMPILE_MAP[0].name}:{COMPILE_MAP[1]}", "figures": figures,

@@ -371,7 +371,8 @@ def section(result: dict) -> str:
         "`stats['pixels_written']` (interpolate 1/depth, derive the light level, scale the "
         "colour, round to bytes: about ten numpy passes over n pixels, into buffers "
         f"allocated once; {result['shading_ns_per_pixel']} ns a pixel in this run) and adds "
-        "its time to the frame's. Front to back writes each visible pixel once (n ≤ W·H); the painter "
+        "its time to the frame's. Front to back writes each visible pixel once (n ≤ W·H); "
+        "the painter "
         "writes every piece of every seg in view, n = W·H × its overdraw. Nothing is added "
         "to the package.", "",
         "![time per frame against N](gordon_chen.png)", "",

@@ -231,8 +231,9 @@ def frames_section(lines: list[dict]) -> str:
         "## Frames per second on a walk through E1M1 and MAP01", "",
         f"Regenerate: `{s['command']}`. {machine_line(s['machine'])}", "",
         f"From the player start, a scripted walk of {walks[0]['frames']} frames, each a turn "
-        f"then a move through the tree's collision (the player's move, standing on the floor under it), "
-        f"eye {EYE} above the floor: {steps} (map units and degrees per frame). Where the way "
+        "then a move through the game's collision (the player's step, standing on the floor "
+        "under it), "
+        f"eye {EYE:g} above the floor: {steps} (map units and degrees per frame). Where the way "
         f"ahead is open for less than {LOOK_AHEAD} units the walker also steers, at most "
         f"{STEER}° a frame, toward the freest of the headings {list(STEER_CANDIDATES)}° "
         f"around (each probed with a {PROBE}-unit move), so it explores rather than "

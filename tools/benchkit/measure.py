@@ -11,6 +11,8 @@ import time
 
 import numpy as np
 
+from . import ROOT, TOOLS
+
 MIB = 2 ** 20
 
 
@@ -65,6 +67,12 @@ def python_json(arguments: list[str], path: list, stdin: str | None = None) -> d
     if done.returncode != 0:
         raise RuntimeError(f"{' '.join(arguments)} failed: {done.stderr.strip()[-2000:]}")
     return json.loads(done.stdout)
+
+
+def fresh_step(module: str, *arguments) -> dict:
+    """``python -m module arguments...`` in a fresh Python over this checkout: one step of
+    an experiment whose memory or cold start must be its own."""
+    return python_json(["-m", module, *map(str, arguments)], [ROOT, TOOLS])
 
 
 def first_difference(front, back):

@@ -28,7 +28,7 @@ from pathlib import Path
 
 from . import ROOT
 from .levels import large_level_text
-from .measure import python_json
+from .measure import fresh_step
 from .report import machine, machine_line, markdown_table, positive_int, run_script, script_parser
 
 COMMAND = "python tools/bench_memory.py"
@@ -37,7 +37,6 @@ QUICK_SIZES = (300, 1_000)
 FRAME = (640, 400)
 TARGET_FIRST_FRAME_MB = 600          # the 200,000-wall level's first frame
 TOP_SITES = 10
-TOOLS = Path(__file__).resolve().parents[1]
 
 
 def main(argv=None) -> int:
@@ -73,7 +72,7 @@ def run(args) -> dict:
 
 def child(step: str, *paths: Path) -> dict:
     """Runs one step in a fresh Python (this checkout's wallbsp) and returns its JSON."""
-    return python_json(["-m", "benchkit.memory", step, *map(str, paths)], [ROOT, TOOLS])
+    return fresh_step("benchkit.memory", step, *paths)
 
 
 # ---------------------------------------------------------------------------------------------

@@ -129,7 +129,8 @@ def section(report) -> str:
                 c["nodes_visited_median"]] for c in report["gordon_chen"]["cases"]]
     return "\n\n".join([
         "## The renderer's targets",
-        f"Regenerate: `python tools/bench_render.py`. {machine_line(report['machine'])} fps = 1 / the "
+        f"Regenerate: `python tools/bench_render.py`. {machine_line(report['machine'])} "
+        "fps = 1 / the "
         f"median frame time over a full turn, 1° a frame, front to back with shaded floors "
         f"and ceilings; per size the median over three positions (and the slowest position).",
         markdown_table(["level", "nodes", "size", "fps (median)", "fps (slowest position)",

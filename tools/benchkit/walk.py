@@ -48,7 +48,8 @@ def open_spots(tree, count: int, seed: int = 0) -> list[Camera]:
     while len(cameras) < count:
         x, y = (float(v) for v in rng.uniform(corners.min(axis=0), corners.max(axis=0)))
         sector = tree.locate(x, y)
-        if sector is not None and level.sectors[sector].ceiling - level.sectors[sector].floor > EYE + 8:
+        room = sector is not None and level.sectors[sector].ceiling - level.sectors[sector].floor
+        if room and room > EYE + 8:
             cameras.append(standing_camera(tree, x, y, 0.0))
     return cameras
 
