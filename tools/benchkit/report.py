@@ -24,11 +24,12 @@ DOC = ROOT / "docs" / "benchmarks.md"
 
 INTRO = """# Benchmarks
 
-Measured numbers, written by the scripts in `tools/`. Each script prints one JSON object and
-rewrites only its own section below (between its `<!-- NAME:begin -->` / `<!-- NAME:end -->`
-markers), with the command that regenerates it, the machine and the date. Timings depend on
-the machine and on what else it was doing; tree sizes do not (same level, candidates and seed,
-same tree).
+Measured numbers, written by the scripts in `tools/`. Each script is a thin entry point over
+one module of `tools/benchkit/` (the shared scenarios — levels, Freedoom maps, the scripted
+walk — measurement and this file's writer live there too). Each prints JSON and rewrites only
+its own section below (between its `<!-- NAME:begin -->` / `<!-- NAME:end -->` markers), with
+the command that regenerates it, the machine and the date. Timings depend on the machine and
+on what else it was doing; tree sizes do not (same level, candidates and seed, same tree).
 
 Regenerate:
 
@@ -36,10 +37,11 @@ Regenerate:
     python tools/bench_builders.py    # wallbsp beside zdbsp, glbsp and the WADs' own nodes
     python tools/bench_gordon_chen.py # Gordon & Chen's experiment in 2-D: front-to-back / painter's
     python tools/bench_maps.py        # every Freedoom map: import, compile, validate, render; fps
-    python tools/bench_compile.py     # the compiler's targets (prints JSON only)
-    python tools/bench_render.py      # the renderer's targets (prints JSON only)
-    python tools/bench_memory.py      # peak memory of compile and first frame, 10k-200k walls
-    python tools/bench_compare.py --baseline DIR  # this checkout against another, interleaved
+    python tools/bench_compile.py     # the compiler's targets
+    python tools/bench_render.py      # the renderer's targets
+    python tools/bench_memory.py      # peak memory of compiling and of the first frame, 10k-200k walls
+    python tools/bench_resources.py   # loading textures; bomb WADs
+    python tools/bench_compare.py --baseline DIR  # this checkout against another, in one run
 
 `--quick` on any of them is a smoke run of a few seconds; `--no-docs` prints the JSON and writes
 nothing. Plots need matplotlib (`pip install -e ".[bench]"`).
