@@ -297,6 +297,23 @@ def test_patch_whose_columns_share_one_long_column_stays_small():
     assert picture.mask.all() and (picture.pixels == RED).all()
 
 
+def test_columns_starting_along_a_chain_of_empty_posts_stay_small():
+    # 1,000 columns, each starting one post further along a chain of 7,000 empty posts
+    width, height, chain = 1000, 128, 7000
+    first = 8 + 4 * width
+    raw = struct.pack("<hhhh", width, height, 0, 0) + \
+        struct.pack(f"<{width}I", *[first + 4 * k for k in range(width)]) + \
+        bytes([0, 0, 0, 0]) * chain + b"\xff"
+    assert len(raw) < 40_000
+    picture = None
+
+    def decode():
+        nonlocal picture
+        picture = decode_picture(raw, "CHAIN")
+    assert peak_bytes(decode) < 64 * width * height
+    assert not picture.mask.any()
+
+
 def test_texture_placing_a_patch_many_times_stays_small():
     big = patch(256, 128, [[(0, [RED] * 128)]] * 256)
     placements = [(x % 3, x % 2, 0) for x in range(400)]     # 6 places, each many times

@@ -107,8 +107,9 @@ def decode_picture(raw: bytes, where: str) -> Picture:
 
 def _decode_columns(buf: np.ndarray, starts: np.ndarray, height: int, where: str):
     """The columns starting at ``starts``, all walked together one post per step. A column
-    stops at its end mark, at the bottom of the canvas, or after drawing ``height`` rows, so
-    the work is at most len(starts) × height whatever the posts say."""
+    stops at its end mark, at the bottom of the canvas, after drawing ``height`` rows or
+    after ``height + 1`` posts, so the work is at most len(starts) × (height + 1) whatever
+    the posts say."""
     n = len(buf)
     pixels = np.zeros((len(starts), height), np.uint8)
     mask = np.zeros((len(starts), height), bool)
@@ -117,7 +118,9 @@ def _decode_columns(buf: np.ndarray, starts: np.ndarray, height: int, where: str
     end_prev = np.zeros(len(starts), np.int64)
     budget = np.full(len(starts), height, np.int64)
     posts, overlap = [], False
-    while cols.size:
+    for _ in range(height + 1):     # a column has at most one post per row
+        if not cols.size:
+            break
         if pos.max() >= n:
             raise _truncated(where, buf, pos, "has no end mark")
         delta = buf[pos].astype(np.int64)
@@ -135,7 +138,8 @@ def _decode_columns(buf: np.ndarray, starts: np.ndarray, height: int, where: str
         top = np.where(delta <= top_prev, top_prev + delta, delta)
         count = np.maximum(np.minimum(np.minimum(height - top, length), budget), 0)
         overlap = overlap or bool(((top < end_prev) & (count > 0)).any())
-        posts.append((cols * height + top, pos + 3, count))
+        drawn = count > 0
+        posts.append((cols[drawn] * height + top[drawn], pos[drawn] + 3, count[drawn]))
         budget -= count
         top_prev, end_prev, pos = top, np.maximum(end_prev, top + count), pos + 4 + length
         go = (top < height) & (budget > 0)   # tops never go back up: the rest is off the canvas
