@@ -2,14 +2,18 @@
 
 200 seeds here keep the suite fast; tools/check_levelgen.py runs the same checks on 1,000.
 """
+import json
+import sys
+from pathlib import Path
+
 import numpy as np
 import pytest
 
 from wallbsp import compile_level
 from wallbsp.generate import TARGET_TYPE, generate_level, reachable_sectors, sector_links
-from wallbsp.generate.themes import FLATS, SKY_FLAT, WALL_TEXTURES
+from wallbsp.generate.themes import FLATS, SKY_FLAT, TEXTURE_DIR, WALL_TEXTURES
 from wallbsp.level import Level, Sector, Start, Wall
-from wallbsp.levelio import level_from_dict
+from wallbsp.levelio import level_from_dict, load_level
 from wallbsp.thingtypes import thing_info
 
 SEEDS = range(200)
@@ -148,3 +152,18 @@ def test_reachable_sectors_follow_the_players_limits(second_floor, blocks, speci
     level = corridor_level(second_floor, blocks, special, middle_ceiling)
     assert reachable_sectors(level, 0) == reached
     assert set(sector_links(level)) == {0, 1, 2}
+
+
+def test_the_script_writes_a_level_whose_textures_resolve(tmp_path, capsys):
+    sys.path.insert(0, str(Path(__file__).resolve().parent.parent / "tools"))
+    try:
+        import gen_procedural
+    finally:
+        sys.path.pop(0)
+    out = tmp_path / "sub" / "gen.json"
+    out.parent.mkdir()
+    assert gen_procedural.main(["--seed", "3", "--goal", "thing", "-o", str(out)]) == 0
+    level = load_level(out, strict=True)
+    assert level.resource_paths()[0].resolve() == TEXTURE_DIR
+    assert level.walls == generate_level(3, goal="thing").level.walls
+    assert json.loads(capsys.readouterr().out)["target"] is not None
