@@ -261,8 +261,10 @@ def _sector_dicts(where: str, colours: WadColours, sectors: np.ndarray,
 
 def _names(raw: np.ndarray) -> list[str | None]:
     """Texture names as the level writes them: upper case, None for "-" (no texture)."""
-    names = [lump_name(n) for n in raw.tolist()]
-    return [None if n in ("-", "") else n for n in names]
+    unique, inverse = np.unique(raw, return_inverse=True)     # a map uses few distinct names
+    names = [lump_name(n) for n in unique.tolist()]
+    names = [None if n in ("-", "") else n for n in names]
+    return [names[i] for i in inverse.ravel().tolist()]
 
 
 def _either(first: np.ndarray, second) -> np.ndarray:
