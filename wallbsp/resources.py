@@ -10,6 +10,7 @@ order, each read lazily (only the pictures asked for) and cached per source.
     res.sky(level)            # the level's sky texture: level.sky, else DOOM's for the map name
     res.palette               # 256 × 3 uint8: PLAYPAL palette 0 of the first WAD that has one
     res.colormap              # 34 × 256 uint8: COLORMAP of the first WAD that has one, or None
+    res.has("flat", "NUKAGE1")          # a name looked up without decoding anything
     res.missing(level)        # warnings for the texture and flat names no source holds
 
 Every picture is a ``Picture`` (``wallbsp.wad.graphics``): ``pixels[x, y]`` column-major
@@ -24,7 +25,8 @@ Sources
   patches (transparent where no patch covers a texel), flats between F_START..F_END or
   FF_START..FF_END (nested F1_/F2_ markers included), sprites between S_START..S_END or
   SS_START..SS_END, PLAYPAL, COLORMAP. A set with no PLAYPAL at all has no colours for WAD
-  pictures: they count as missing.
+  pictures: they count as missing. A texture's patches are looked up in its own WAD (a PWAD
+  whose TEXTURE1 uses the IWAD's patches must carry them).
 - A folder: ``NAME.png`` files are wall textures, ``flats/NAME.png`` flats (64 × 64),
   ``sprites/NAME.png`` sprites (offsets: left = width // 2, top = height: centred, feet at the
   bottom). Alpha below 128 is transparent. Read with ``pygame.image.load`` (no window needed),
