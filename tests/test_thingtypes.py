@@ -7,24 +7,20 @@ import pytest
 
 from wallbsp.thingtypes import (DOOM_THING_TYPES, NOSECTOR, SOLID, SPAWNCEILING,
                                 own_thing_info, thing_info)
+from wallbsp.wad import list_maps, map_lump_indices, open_wad
 
 FREEDOOM = Path(os.environ.get("FREEDOOM_DIR", "/usr/share/games/doom"))
 SKILL_BITS = 0x7
 
 
 def wad_things(path: Path) -> dict[str, list[tuple[int, int]]]:
-    """Each map's THINGS as (type, flags), read straight from the WAD's directory."""
-    data = path.read_bytes()
-    count, offset = struct.unpack_from("<ii", data, 4)
-    maps, current = {}, None
-    for k in range(count):
-        pos, size, raw = struct.unpack_from("<ii8s", data, offset + 16 * k)
-        name = raw.rstrip(b"\0").decode("ascii")
-        if size == 0 and (name.startswith("MAP") or name[:1] == "E" and name[2:3] == "M"):
-            current = name
-        elif name == "THINGS":
-            records = struct.iter_unpack("<hhhhh", data[pos:pos + size - size % 10])
-            maps[current] = [(t, flags) for _x, _y, _a, t, flags in records]
+    """Each map's THINGS as (type, flags)."""
+    maps = {}
+    with open_wad(path) as wad:
+        for name in list_maps(path):
+            raw = wad.read(map_lump_indices(wad, name)["THINGS"])
+            records = struct.iter_unpack("<hhhhh", raw[:len(raw) - len(raw) % 10])
+            maps[name] = [(t, flags) for _x, _y, _a, t, flags in records]
     return maps
 
 
