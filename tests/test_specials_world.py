@@ -114,6 +114,7 @@ def test_exits(special, how, expected):
     else:
         rules.cross_line(wall, 0)
     assert rules.exit == expected
+    assert rules.status()["exit"] == expected
 
 
 def test_secrets_count_once_and_damaging_floors_hurt_every_32_tics():
@@ -121,6 +122,8 @@ def test_secrets_count_once_and_damaging_floors_hurt_every_32_tics():
     rules, _ = rules_for(level)
     assert rules.secrets_total == 1
     assert rules.player_in_sector(0).secret and rules.secrets_found == 1
+    assert rules.status() == {"tic": 0, "active_movers": 0, "secrets_found": 1,
+                              "secrets_total": 1, "exit": None}
     assert not rules.player_in_sector(0).secret and rules.secrets_found == 1
     hurts = []
     for _ in range(64):

@@ -225,6 +225,12 @@ class Rules:
     def active_movers(self) -> int:
         return len(self.movers)
 
+    def status(self) -> dict:
+        """What a readout or ``play --json`` shows of the rules, as plain JSON values."""
+        return {"tic": self.tic_count, "active_movers": len(self.movers),
+                "secrets_found": self.secrets_found, "secrets_total": self.secrets_total,
+                "exit": self.exit}
+
     # --- the level's start ------------------------------------------------------------------
 
     def _spawn_sector_special(self, s: int, special: int) -> None:
