@@ -57,7 +57,8 @@ MAX_NOTED = 20          # warnings of one kind per map, then "... and N more"
 NO_SIDE = 0xFFFF        # vanilla's -1 sidedef, read unsigned so big maps may use 32768..65534
 ML_BLOCKING, ML_DONTPEGTOP, ML_DONTPEGBOTTOM = 1, 8, 16
 
-_THING = np.dtype([("x", "<i2"), ("y", "<i2"), ("angle", "<i2"), ("type", "<u2"), ("flags", "<u2")])
+_THING = np.dtype([("x", "<i2"), ("y", "<i2"), ("angle", "<i2"), ("type", "<u2"),
+                   ("flags", "<u2")])
 _LINEDEF = np.dtype([("v1", "<u2"), ("v2", "<u2"), ("flags", "<u2"), ("special", "<u2"),
                      ("tag", "<u2"), ("right", "<u2"), ("left", "<u2")])
 _SIDEDEF = np.dtype([("xoff", "<i2"), ("yoff", "<i2"), ("upper", "S8"), ("lower", "S8"),
@@ -156,9 +157,9 @@ def _check_indices(where: str, lines, sides, n_vertices: int, n_sectors: int) ->
 # The level dict
 
 def import_wad(wad_path, map_name: str, *, warnings: list[str] | None = None) -> dict:
-    """The SPEC §2b (version 2) level dict of map ``map_name`` in the WAD at ``wad_path``. Wall
-    ``i`` is the ``i``-th linedef kept. Warnings (dropped linedefs, missing textures) are appended to
-    ``warnings`` when given; errors raise ``LevelError`` as one line."""
+    """The SPEC §2b (version 2) level dict of map ``map_name`` in the WAD at ``wad_path``.
+    Wall ``i`` is the ``i``-th linedef kept. Warnings (dropped linedefs, missing textures) are
+    appended to ``warnings`` when given; errors raise ``LevelError`` as one line."""
     notes = warnings if warnings is not None else []
     map_name = map_name.upper()
     with open_wad(wad_path) as wad:
