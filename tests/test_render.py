@@ -12,9 +12,12 @@ import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
 
-from wallbsp.image import load_png, png_bytes, save_png
+from pngread import load_png
+from wallbsp.image import png_bytes, save_png
 from wallbsp.level import Level, Sector, Start, Wall
-from wallbsp.rendering import Camera, ClosedColumns, render
+from wallbsp.camera import Camera
+from wallbsp.render import render
+from wallbsp.render.columns import ClosedColumns
 
 ROOT = Path(__file__).resolve().parent.parent
 GOLDEN = ROOT / "tests" / "golden"
@@ -224,11 +227,11 @@ def test_painter_equals_front_to_back_on_random_views(compiled_levels):
 
 
 def test_painter_gives_the_same_frame_in_small_chunks(compiled_levels, monkeypatch):
-    import wallbsp.rendering as render_module
+    from wallbsp.render import painter
     tree = compiled_levels["multi"]
     camera = Camera(256, 112, 41, 60)
     whole = render(tree, camera, 96, 60, order="back_to_front")
-    monkeypatch.setattr(render_module, "_PAINTER_CHUNK", 500)
+    monkeypatch.setattr(painter, "PAINTER_CHUNK", 500)
     chunked = render(tree, camera, 96, 60, order="back_to_front")
     assert_same_frames(whole, chunked)
     assert_same_frames(whole, render(tree, camera, 96, 60))

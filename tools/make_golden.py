@@ -16,7 +16,7 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from wallbsp.rendering import Camera  # noqa: E402
+from wallbsp.camera import Camera  # noqa: E402
 
 # (name, level in levels/, x, y, angle, fov, (width, height)); the eye is EYE above the
 # floor of the sector at (x, y)
@@ -41,7 +41,7 @@ def camera(tree, x, y, angle, fov) -> Camera:
 
 def golden_frames(trees):
     """``(name, frame)`` for every view; ``trees`` maps a level's stem to its tree."""
-    from wallbsp.rendering import render
+    from wallbsp.render import render
     for name, level, x, y, angle, fov, (width, height) in VIEWS:
         yield name, render(trees[level], camera(trees[level], x, y, angle, fov), width, height)
 

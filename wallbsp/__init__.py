@@ -11,7 +11,8 @@ os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
 from .build import DEFAULT_CANDIDATES, compile_level
 from .level import Level, LevelError
 from .levelio import load_level
-from .rendering import Camera, Frame, render
+from .camera import Camera
+from .render import Frame, render
 from .tree import BSPTree, TreeError, load_tree
 
 __all__ = ["BSPTree", "Camera", "DEFAULT_CANDIDATES", "Frame", "Level", "LevelError",

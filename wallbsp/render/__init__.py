@@ -1,0 +1,74 @@
+"""The renderer: a world and a camera in, one frame out (SPEC §4–§5).
+
+Two renderers share every piece of arithmetic and give the same pixels:
+
+- ``order="front_to_back"`` (the default) walks the tree nearest first, as DOOM's
+  ``R_RenderBSPNode`` does, keeping a sorted list of closed columns (``walk``);
+- ``order="back_to_front"`` is the painter's algorithm (``painter``).
+
+Only the walks are Python, touching each visited node and seg once; they record the drawn
+pieces, and all pixel work is batched in numpy: ``rows`` turns pieces into per-column rows,
+``fill`` the rows into runs and the runs into pixels, ``shading`` gives light levels and
+colours, ``layers`` the id and depth buffers on demand.  Heights and light come from the
+``WorldState`` of the source each frame (``tables``).
+
+Modules: ``tables`` (what the tree and the world give), ``project`` (segs and boxes to
+columns), ``columns`` (the closed-column list), ``walk``, ``painter``, ``rows``, ``fill``,
+``shading``, ``layers``, ``frame``.
+"""
+from __future__ import annotations
+
+from ..camera import Camera, Projection
+from ..world import state_of
+from .fill import drawsegs, fill_flat
+from .frame import Frame, save_ids
+from .layers import RunLayers
+from .painter import fill_back_to_front, walk_back_to_front
+from .rows import Entries
+from .tables import height_tables, tree_tables
+from .walk import walk_front_to_back
+
+__all__ = ["render", "Frame", "save_ids"]
+
+ORDERS = ("front_to_back", "back_to_front")
+
+
+class _FrontToBackLayers(RunLayers):
+    """Front to back also keeps the drawsegs, made from the entries' windows on demand."""
+
+    def __init__(self, view, heights, tables, e, runs, windows):
+        super().__init__(view, heights, tables, e, runs, lengths=runs.lengths)
+        self._windows = windows
+
+    def drawsegs(self):
+        return drawsegs(self.e, self._windows)
+
+
+def render(source, camera: Camera, width: int, height: int, order: str = "front_to_back",
+           light: bool = True) -> Frame:
+    """Render one ``width × height`` frame of ``source`` (a tree, a ``WorldState`` or
+    anything with one as ``.state``) seen by ``camera`` (SPEC §4–§5), with the source's
+    current sector heights and light.
+
+    ``order="front_to_back"`` (default) is the column-list renderer with early out;
+    ``order="back_to_front"`` the painter's algorithm.  Both give the same color, kind,
+    index and depth; their ``stats`` differ (the painter writes pixels many times).
+    ``light=False`` draws every surface full bright."""
+    if order not in ORDERS:
+        raise ValueError(f"order must be 'front_to_back' or 'back_to_front', got {order!r}")
+    view = Projection(camera, width, height)
+    state = state_of(source)
+    tables = tree_tables(state.tree)
+    heights = height_tables(tables, state)
+    if order == "front_to_back":
+        walk = walk_front_to_back(tables, heights.key_solid, view)
+        e = Entries(tables, heights, view, walk.pieces)
+        colour, runs, windows, written = fill_flat(tables, state, view, e, light)
+        layers = _FrontToBackLayers(view, heights, tables, e, runs, windows)
+    else:
+        walk = walk_back_to_front(tables, view)
+        e = Entries(tables, heights, view, walk.pieces)
+        colour, runs, pixel_run, written = fill_back_to_front(tables, state, view, e, light)
+        layers = RunLayers(view, heights, tables, e, runs, pixel_run=pixel_run)
+    walk.stats["pixels_written"] = written
+    return Frame(view.width, view.height, colour, walk.stats, layers, walk.leaves)

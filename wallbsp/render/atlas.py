@@ -1,0 +1,151 @@
+"""The pictures drawn over the frame (sprites, masked middle textures) packed into flat arrays,
+so one numpy gather fetches the texels of every sprite column of a frame at once.
+
+A picture gets a *slot*: its texels are ``texels[offset + x*height + y]`` (column-major,
+like ``Picture.pixels``), with ``opaque`` beside them.  A WAD picture's texel is a palette
+index, lit through the WAD's COLORMAP (level ``k`` of 32 reads row ``31 - k``: DOOM's 0 is
+its brightest); a PNG picture's texel is packed rgb, scaled by ``(k + 1) / 32`` (SPEC §4b).
+A thing with no picture is drawn as a flat-colour box (``box_slot``).  Slots are kept while
+the atlas lives: the renderer keeps one atlas per resource set.
+"""
+from __future__ import annotations
+
+import weakref
+
+import numpy as np
+
+from .shading import LIGHT_LEVELS
+
+__all__ = ["Atlas", "atlas_for", "pack_rgb"]
+
+
+def pack_rgb(rgb) -> np.ndarray:
+    """``(..., 3)`` uint8 colours as little-endian packed uint32 (a uint8 view reads r, g, b)."""
+    rgb = np.asarray(rgb, dtype=np.uint32)
+    return (rgb[..., 0] | (rgb[..., 1] << 8) | (rgb[..., 2] << 16)).astype("<u4")
+
+
+def _unpack(packed):
+    return np.stack([packed & 255, (packed >> 8) & 255, (packed >> 16) & 255], axis=-1)
+
+
+class Atlas:
+    """Slots of pictures for one resource set (``None``: only flat-colour boxes)."""
+
+    def __init__(self, resources=None):
+        self.resources = resources
+        self.offset, self.width, self.height = [], [], []
+        self.left, self.top, self.paletted = [], [], []
+        self._texels, self._opaque = [], []
+        self._packed = None                      # the arrays above as numpy, made on demand
+        self._slots: dict = {}
+        # per Things: (type, rotation) -> (slot, mirrored), as the sprite pass chose them
+        self.chosen: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+        self._size = 0
+        self.lit_palette = self._lit_palette()
+
+    def _lit_palette(self):
+        """``(32, 256)`` packed rgb of every palette index at every light level, or None."""
+        res = self.resources
+        palette = None if res is None else res.palette
+        if palette is None:
+            return None
+        colormap = res.colormap
+        if colormap is not None and len(colormap) >= LIGHT_LEVELS:
+            rows = colormap[LIGHT_LEVELS - 1 - np.arange(LIGHT_LEVELS)]      # (32, 256)
+            return pack_rgb(palette[rows])
+        return _scaled(pack_rgb(palette)[None, :], np.arange(LIGHT_LEVELS)[:, None])
+
+    # -- slots ---------------------------------------------------------------------------------
+    def add_picture(self, picture) -> int:
+        """A new slot holding ``picture`` (a ``Picture``)."""
+        pixels = picture.pixels if picture.paletted else pack_rgb(picture.pixels)
+        return self._add(pixels.astype(np.uint32), picture.mask, picture.left, picture.top,
+                         picture.paletted)
+
+    def sprite_slot(self, sprite: str, frame: str, rotation: int):
+        """``(slot, mirrored)`` of a sprite frame seen from ``rotation`` (0: the one for
+        every side), or None when no source has it (``ResourceSet.sprite_frame``)."""
+        key = ("sprite", sprite, frame, rotation)
+        if key not in self._slots:
+            found = None if self.resources is None else self.resources.sprite_frame(
+                sprite, frame, rotation)
+            self._slots[key] = None if found is None else (self.add_picture(found[0]),
+                                                           found[1])
+        return self._slots[key]
+
+    def wall_slot(self, name: str):
+        """The slot of wall texture ``name``, or None when no source has it."""
+        key = ("wall", name.upper())
+        if key not in self._slots:
+            picture = None if self.resources is None else self.resources.wall(name)
+            self._slots[key] = None if picture is None else self.add_picture(picture)
+        return self._slots[key]
+
+    def box_slot(self, width: int, height: int, rgb) -> int:
+        """A ``width × height`` opaque box of one colour, feet at its bottom, centred."""
+        key = ("box", width, height, tuple(rgb))
+        if key not in self._slots:
+            pixels = np.full((width, height), pack_rgb(np.array(rgb)), dtype=np.uint32)
+            self._slots[key] = self._add(pixels, np.ones((width, height), dtype=bool),
+                                         width // 2, height, False)
+        return self._slots[key]
+
+    def _add(self, texels, opaque, left, top, paletted) -> int:
+        if paletted and self.lit_palette is None:
+            raise ValueError("a paletted picture needs the palette of its WAD")
+        slot = len(self.offset)
+        self.offset.append(self._size)
+        self.width.append(texels.shape[0])
+        self.height.append(texels.shape[1])
+        self.left.append(int(left))
+        self.top.append(int(top))
+        self.paletted.append(bool(paletted))
+        self._texels.append(texels.reshape(-1))
+        self._opaque.append(np.asarray(opaque, dtype=bool).reshape(-1))
+        self._size += texels.size
+        self._packed = None
+        return slot
+
+    # -- the flat arrays -----------------------------------------------------------------------
+    def arrays(self):
+        """``(texels, opaque, offset, width, height, left, top, paletted)`` as numpy arrays."""
+        if self._packed is None:
+            empty = [np.zeros(0, dtype=np.uint32)], [np.zeros(0, dtype=bool)]
+            self._packed = (np.concatenate(self._texels or empty[0]),
+                            np.concatenate(self._opaque or empty[1]),
+                            *(np.array(v, dtype=np.int64) for v in (
+                                self.offset, self.width, self.height, self.left, self.top)),
+                            np.array(self.paletted, dtype=bool))
+        return self._packed
+
+    def colours(self, texels, paletted, level) -> np.ndarray:
+        """Packed rgb of ``texels`` at light ``level`` (0-31), per texel."""
+        out = np.empty(len(texels), dtype="<u4")
+        if self.lit_palette is not None and paletted.any():
+            out[paletted] = self.lit_palette[level[paletted], texels[paletted]]
+        rgb = ~paletted
+        if rgb.any():
+            out[rgb] = _scaled(texels[rgb], level[rgb])
+        return out
+
+
+def _scaled(packed, level):
+    """Packed rgb at level ``k``: ``rgb * (k + 1) / 32``, rounded (as the flat colours)."""
+    scale = (np.asarray(level, dtype=np.float64) + 1.0) / LIGHT_LEVELS
+    rgb = np.rint(_unpack(np.asarray(packed, dtype=np.uint32)) * scale[..., None])
+    return pack_rgb(rgb.astype(np.uint32))
+
+
+_ATLASES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+_NO_RESOURCES = Atlas(None)
+
+
+def atlas_for(resources) -> Atlas:
+    """The atlas of a resource set (one per set while it lives); boxes only for None."""
+    if resources is None:
+        return _NO_RESOURCES
+    atlas = _ATLASES.get(resources)
+    if atlas is None:
+        atlas = _ATLASES[resources] = Atlas(resources)
+    return atlas

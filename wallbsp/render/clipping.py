@@ -1,0 +1,105 @@
+"""What hides a sprite or a masked wall: the windows the front-to-back walk left open (DOOM's
+drawsegs), and the column slices the masked pass draws.
+
+Along one column the walk meets the drawn pieces in order of depth (a BSP's front-to-back
+order is the order a ray crosses its lines), and each piece leaves a window of rows open
+behind it.  Something at depth ``d`` in that column is seen only through the window of the
+last piece nearer than ``d`` (SPEC §4b: nearer walls, and the floors and ceilings drawn in
+front of them, hide it pixel by pixel).  Beyond that piece the ray is in the piece's far
+sector ``X``; when ``X`` is not the thing's own sector, ``X``'s floor and ceiling between
+the piece and ``d`` are nearer too and close the window further; the thing's own sector
+never does (DOOM lets a sprite's feet reach below its floor).
+"""
+from __future__ import annotations
+
+from dataclasses import dataclass
+
+import numpy as np
+
+__all__ = ["ClipWindows", "Slices", "texture_rows", "clipped"]
+
+
+@dataclass
+class Slices:
+    """Columns of pictures to draw over the frame, one per (thing or wall piece, column):
+    rows ``[top, bottom)``, picture ``slot`` and its column ``tx``; the texture row of frame
+    row ``r`` is ``floor(t0 + r * tstep)``; light ``level``; what the pixels report
+    (``kind``, ``index``, ``depth``)."""
+    col: np.ndarray
+    top: np.ndarray
+    bottom: np.ndarray
+    slot: np.ndarray
+    tx: np.ndarray
+    t0: np.ndarray
+    tstep: np.ndarray
+    level: np.ndarray
+    kind: np.ndarray
+    index: np.ndarray
+    depth: np.ndarray
+
+    @staticmethod
+    def join(parts) -> "Slices":
+        return Slices(*(np.concatenate([getattr(p, name) for p in parts])
+                        for name in Slices.__dataclass_fields__))
+
+    def __len__(self) -> int:
+        return len(self.col)
+
+
+def texture_rows(view, top_height, texture_height, depth):
+    """Rows ``[r1, r2)`` whose centres see heights in ``(top_height - texture_height,
+    top_height]`` at ``depth``, and ``(t0, tstep)`` of the texture row ``floor(top_height -
+    h)`` at the height ``h`` each row sees (SPEC §4)."""
+    scale = view.f / depth
+    r1 = np.ceil(view.y0 - (top_height - view.z) * scale)
+    r2 = np.ceil(view.y0 - (top_height - texture_height - view.z) * scale)
+    tstep = depth / view.f
+    t0 = top_height - view.z - view.y0 * tstep
+    return r1, r2, t0, tstep
+
+
+class ClipWindows:
+    """Per column the drawn pieces, nearest first, with the window each left open, from
+    the frame's ``DrawSegs`` and each piece's far sector (``piece_far``)."""
+
+    def __init__(self, drawsegs, piece_far, view, floor, ceiling, eye_sector):
+        self.view, self.floor, self.ceiling = view, floor, ceiling
+        self.eye_sector = -1 if eye_sector is None else int(eye_sector)
+        self.col = drawsegs.col
+        # one sorted key: column, then depth (1/(1+w) grows with depth, stays in [0, 1))
+        key = drawsegs.col + 1.0 / (1.0 + drawsegs.w)
+        self.key = np.maximum.accumulate(key) if len(key) else key
+        self.open_top, self.open_bottom = drawsegs.open_top, drawsegs.open_bottom
+        self.far = piece_far[drawsegs.piece] if len(drawsegs.piece) else drawsegs.piece
+
+    def windows(self, col, depth, own_sector):
+        """Rows ``[top, bottom)`` through which something at ``depth`` in column ``col``
+        belonging to ``own_sector`` is seen (module docstring)."""
+        height = self.view.height
+        top = np.zeros(len(col), dtype=np.int64)
+        bottom = np.full(len(col), height, dtype=np.int64)
+        beyond = np.full(len(col), self.eye_sector, dtype=np.int64)
+        if len(self.key):
+            last = np.searchsorted(self.key, col + depth / (1.0 + depth), side="left") - 1
+            found = last >= 0
+            found[found] = self.col[last[found]] == col[found]
+            at = last[found]
+            top[found], bottom[found] = self.open_top[at], self.open_bottom[at]
+            beyond[found] = self.far[at]
+        other = (beyond >= 0) & (beyond != own_sector)
+        if other.any():
+            sector, d = beyond[other], depth[other]
+            scale = self.view.f / d
+            floor_row = np.ceil(self.view.y0 - (self.floor[sector] - self.view.z) * scale)
+            ceiling_row = np.ceil(self.view.y0 - (self.ceiling[sector] - self.view.z) * scale)
+            bottom[other] = np.minimum(bottom[other], np.clip(floor_row, 0, height))
+            top[other] = np.maximum(top[other], np.clip(ceiling_row, 0, height))
+        return top, bottom
+
+
+def clipped(view, r1, r2, top, bottom):
+    """``[max(r1, top), min(r2, bottom))`` as int64, within the frame."""
+    lo = np.maximum(np.clip(r1, 0, view.height).astype(np.int64), top)
+    hi = np.minimum(np.clip(r2, 0, view.height).astype(np.int64), bottom)
+    return lo, np.maximum(hi, lo)
+

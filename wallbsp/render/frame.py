@@ -1,0 +1,69 @@
+"""The rendered frame (SPEC §5) and saving its id buffers."""
+from __future__ import annotations
+
+import io
+
+import numpy as np
+
+from ..files import write_atomically
+
+__all__ = ["Frame", "save_ids", "KIND_NOTHING", "KIND_WALL", "KIND_FLOOR", "KIND_CEILING",
+           "KIND_THING"]
+
+KIND_NOTHING, KIND_WALL, KIND_FLOOR, KIND_CEILING, KIND_THING = 0, 1, 2, 3, 4
+
+
+class Frame:
+    """A rendered frame (SPEC §5).
+
+    ``color`` is ``(height, width, 3)`` uint8, a transposed view of the column-major buffer
+    ``color_columns`` ``(width, height, 3)`` that ``pygame.surfarray.blit_array`` takes as is.
+    ``kind`` (uint8), ``index`` (int32) and ``depth`` (float32) are ``(height, width)`` and
+    computed on first use by ``layers.columns(name)`` (column-major arrays), so a frame that
+    is only looked at pays for none of them.  ``leaves`` are the leaves the front-to-back
+    walk entered, in order; ``drawsegs`` the drawn pieces' per-column windows and depths.
+    """
+
+    def __init__(self, width, height, color_columns, stats, layers, leaves=()):
+        self.width, self.height = width, height
+        self.color_columns = color_columns
+        self.stats = stats
+        self.leaves = leaves
+        self._layers = layers
+        self._columns = {}
+        self._drawsegs = None
+
+    @property
+    def color(self) -> np.ndarray:
+        return self.color_columns.transpose(1, 0, 2)
+
+    def _layer(self, name):
+        if name not in self._columns:
+            self._columns[name] = self._layers.columns(name)
+        return self._columns[name].T
+
+    @property
+    def kind(self) -> np.ndarray:
+        return self._layer("kind")
+
+    @property
+    def index(self) -> np.ndarray:
+        return self._layer("index")
+
+    @property
+    def depth(self) -> np.ndarray:
+        return self._layer("depth")
+
+    @property
+    def drawsegs(self):
+        """The front-to-back walk's ``DrawSegs`` (None for the painter)."""
+        if self._drawsegs is None and hasattr(self._layers, "drawsegs"):
+            self._drawsegs = self._layers.drawsegs()
+        return self._drawsegs
+
+
+def save_ids(path, frame: Frame) -> None:
+    """Save ``kind`` and ``index`` as a ``.npz`` (arrays ``kind``, ``index``), atomically."""
+    buf = io.BytesIO()
+    np.savez(buf, kind=np.ascontiguousarray(frame.kind), index=np.ascontiguousarray(frame.index))
+    write_atomically(path, buf.getvalue())

@@ -1,0 +1,73 @@
+"""The id and depth buffers of a frame (SPEC §5), computed only when asked for.
+
+Both renderers describe their frame as *runs* (a surface over consecutive rows of one
+column) plus, per pixel, which run shows: front to back by run lengths (each pixel is
+written once, in order), the painter by a per-pixel run number (the last write wins).  Per
+run the depth is ``a + b / |y0 - row|``: a wall's ``1/w`` (its column's depth), a plane's
+``|f*(h - z)|`` over its row's distance from the horizon, ``inf`` for sky and nothing.
+Heights are read from the frame's ``HeightTables`` (a copy per world version), so a later
+change to the ``WorldState`` cannot change a frame already drawn.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from .frame import KIND_CEILING, KIND_FLOOR, KIND_WALL
+
+__all__ = ["RunLayers"]
+
+
+class RunLayers:
+    """``columns(name)`` for ``kind``, ``index`` and ``depth`` of a frame given as runs.
+
+    ``runs``: per run ``kinds``, ``indices``, ``entries`` (entry of ``e`` each run belongs
+    to, ``>= len(e.col)`` for none); exactly one of ``lengths`` (front to back: runs in
+    pixel order) or ``pixel_run`` (per pixel, column-major, the run it shows) is given."""
+
+    def __init__(self, view, heights, tables, e, runs, lengths=None, pixel_run=None):
+        self.width, self.height = view.width, view.height
+        self.runs, self.e = runs, e
+        self.lengths, self.pixel_run = lengths, pixel_run
+        self.y0, self.f, self.z = view.y0, view.f, view.z
+        self.floor, self.ceiling = heights.floor, heights.ceiling
+        self.sky = tables.sector_sky
+
+    def _expand(self, values):
+        if self.lengths is not None:
+            return np.repeat(values, self.lengths)
+        return values.take(self.pixel_run)
+
+    def columns(self, name):
+        shape = (self.width, self.height)
+        if name == "kind":
+            return self._expand(self.runs.kinds).reshape(shape)
+        if name == "index":
+            return self._expand(self.runs.indices).reshape(shape)
+        if name == "depth":
+            return self._depth().reshape(shape)
+        raise KeyError(name)
+
+    def _depth(self):
+        runs, e = self.runs, self.e
+        kinds = runs.kinds
+        entry = np.minimum(runs.entries, max(len(e.col) - 1, 0))
+        near = runs.indices.astype(np.int64)
+        wall, ceiling = kinds == KIND_WALL, kinds == KIND_CEILING
+        plane = ceiling | (kinds == KIND_FLOOR)
+        a = np.full(len(kinds), np.inf)
+        if len(e.col):
+            a[wall] = 1.0 / e.w[entry[wall]]
+        b = np.zeros(len(kinds))
+        h = np.where(ceiling, self.ceiling[np.where(ceiling, near, 0)],
+                     self.floor[np.where(plane, near, 0)])
+        b[plane] = np.abs(self.f * (h[plane] - self.z))
+        sky = ceiling & self.sky[np.where(ceiling, near, 0)]
+        a[plane & ~sky] = 0.0
+        b[sky] = 0.0
+        with np.errstate(divide="ignore"):
+            inverse_row = 1.0 / np.abs(self.y0 - np.arange(self.height, dtype=np.float64))
+        depth = self._expand(a)
+        scale = self._expand(b)
+        has_plane = scale > 0
+        depth[has_plane] += scale[has_plane] * np.tile(inverse_row, self.width)[has_plane]
+        return depth.astype(np.float32)

@@ -1,0 +1,117 @@
+"""Masked middle textures: the see-through middle of two-sided walls (grates, fences, bars).
+
+DOOM draws them after the walls, in depth order with the sprites (R_DrawMasked): a
+column of the texture inside the window its own piece left open (so nearer walls and
+planes hide it, and it never spills over its upper and lower parts), drawn once — not
+repeated vertically — with transparent texels showing what lies behind (SPEC §4b).
+
+- texture column: ``floor(x_offset + |P - S|) mod width``, S the wall's start seen from
+  that side (v1 from the front, v2 from behind), P where the column's ray meets the wall;
+- texture row at height h: ``floor(top - h + y_offset)``, drawn where it lies in
+  ``[0, height)``; ``top`` is ``min(ceilings)``, or ``max(floors) + height`` when the wall
+  is lower-unpegged;
+- light as the wall's own (its side's sector, DOOM's fake contrast, depth).
+"""
+from __future__ import annotations
+
+import weakref
+
+import numpy as np
+
+from .clipping import Slices, clipped, texture_rows
+from .frame import KIND_WALL
+from .shading import FULL_BRIGHT, light_levels
+from .tables import key_light
+
+__all__ = ["masked_slices"]
+
+
+class _MaskedKeys:
+    """Per side key: the atlas slot of its middle texture now (-1: none), where the
+    texture starts and runs, and its offsets and pegging."""
+
+    def __init__(self, tables, state, atlas):
+        level = state.tree.level
+        n_keys = len(tables.key_wall)
+        self.texture_version = state.texture_version
+        self.slot = np.full(n_keys, -1, dtype=np.int64)
+        self.start = np.zeros((n_keys, 2))
+        self.direction = np.zeros((n_keys, 2))
+        self.x_offset = np.zeros(n_keys)
+        self.y_offset = np.zeros(n_keys)
+        self.unpegged = np.zeros(n_keys, dtype=bool)
+        for key in np.flatnonzero(tables.key_far >= 0).tolist():
+            wall, side = int(tables.key_wall[key]), key & 1
+            name = state.wall_texture(wall, side, "middle")
+            slot = None if name is None else atlas.wall_slot(name)
+            if slot is None:
+                continue
+            w = level.walls[wall]
+            a, b = level.vertices[w.v1], level.vertices[w.v2]
+            if side:
+                a, b = b, a
+            length = max(np.hypot(b[0] - a[0], b[1] - a[1]), 1e-12)
+            textures = w.back_side if side else w.front_side
+            self.slot[key] = slot
+            self.start[key] = a
+            self.direction[key] = ((b[0] - a[0]) / length, (b[1] - a[1]) / length)
+            self.x_offset[key] = textures.x_offset
+            self.y_offset[key] = textures.y_offset
+            self.unpegged[key] = w.lower_unpegged
+        self.any = bool((self.slot >= 0).any())
+
+
+_KEYS: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+
+
+def _masked_keys(tables, state, atlas) -> _MaskedKeys:
+    per_state = _KEYS.setdefault(atlas, weakref.WeakKeyDictionary())
+    cached = per_state.get(state)
+    if cached is None or cached.texture_version != state.texture_version \
+            or cached.slot.shape[0] != len(tables.key_wall):
+        cached = per_state[state] = _MaskedKeys(tables, state, atlas)
+    return cached
+
+
+def masked_slices(view, state, tables, piece_keys, drawsegs, atlas, light=True):
+    """``Slices`` of the masked middle textures of the drawn pieces (None when none):
+    ``piece_keys`` are the side keys of the walk's pieces, ``drawsegs`` their entries."""
+    keys = _masked_keys(tables, state, atlas)
+    if not len(drawsegs.col) or not keys.any:
+        return None
+    entry_key = piece_keys[drawsegs.piece]
+    chosen = keys.slot[entry_key] >= 0
+    if not chosen.any():
+        return None
+    key = entry_key[chosen]
+    col, w = drawsegs.col[chosen], drawsegs.w[chosen]
+    depth = 1.0 / w
+    slot = keys.slot[key]
+    _, _, _, width, height, _, _, _ = atlas.arrays()
+    width, height = width[slot], height[slot]
+    tx = _texture_columns(view, state, tables, keys, key, col, depth, width)
+    near, far = tables.key_near[key], tables.key_far[key]
+    floors = np.maximum(state.floor[near], state.floor[far])
+    ceilings = np.minimum(state.ceiling[near], state.ceiling[far])
+    top = np.where(keys.unpegged[key], floors + height, ceilings) + keys.y_offset[key]
+    r1, r2, t0, tstep = texture_rows(view, top, height, depth)
+    row1, row2 = clipped(view, r1, r2, drawsegs.open_top[chosen], drawsegs.open_bottom[chosen])
+    if light:
+        level = light_levels(key_light(tables, state)[key], w)
+    else:
+        level = np.full(len(key), FULL_BRIGHT, dtype=np.int64)
+    seen = row2 > row1
+    return Slices(*(v[seen] for v in (col, row1, row2, slot, tx, t0, tstep, level,
+                                      np.full(len(col), KIND_WALL, np.uint8),
+                                      tables.key_wall[key], depth)))
+
+
+def _texture_columns(view, state, tables, keys, key, col, depth, width):
+    """``floor(x_offset + |P - S|) mod width`` per entry (the front side's scrolling too)."""
+    u = view.u[col]
+    px = view.x + depth * (view.fx + u * view.rx)
+    py = view.y + depth * (view.fy + u * view.ry)
+    start, direction = keys.start[key], keys.direction[key]
+    along = (px - start[:, 0]) * direction[:, 0] + (py - start[:, 1]) * direction[:, 1]
+    offset = keys.x_offset[key] + np.where(key & 1, 0.0, state.wall_x_offset[tables.key_wall[key]])
+    return np.floor(offset + along).astype(np.int64) % width

@@ -1,0 +1,54 @@
+"""Per-column row math, shared by both renderers: the single place that turns a drawn piece
+and a column into rows.
+
+For a height ``h`` and inverse depth ``w = 1/d`` the boundary is the first row whose centre
+is at or below ``h``: ``ceil(y0 - f*(h - z)*w)`` clamped to ``[0, H]``.  A column of a seg
+seen from sector N (into sector B for a portal) is, top to bottom: N's ceiling, the upper
+wall (above B's ceiling), the opening, the lower wall (below B's floor), N's floor.
+Boundaries are clamped so the parts never overlap: the ceiling wins over the floor, the
+upper wall over the lower wall (a sector drawn closed, like DOOM).
+"""
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["Entries", "boundary_rows", "W_MIN"]
+
+W_MIN = 1e-12                  # inverse depth floor, so rounding never flips a boundary
+
+
+def boundary_rows(view, fz, w):
+    """Boundary row of heights with ``fz = f*(h - z)`` at inverse depth ``w``, as floats."""
+    return np.clip(np.ceil(view.y0 - fz * w), 0, view.height)
+
+
+class Entries:
+    """Pieces expanded to one entry per (piece, column), in piece order, with the piece's
+    unclipped boundaries in that column: ceiling ``[0, p1)``, upper wall ``[p1, u)``,
+    opening ``[u, l)``, lower wall ``[l, fl)``, floor ``[fl, H)`` (int64), its inverse
+    depth ``w``, near sector and wall."""
+
+    def __init__(self, tables, heights, view, pieces: list):
+        table = np.array(pieces, dtype=np.float64).reshape(-1, 5)
+        keys = table[:, 0].astype(np.int64)
+        c1 = table[:, 3].astype(np.int64)
+        counts = table[:, 4].astype(np.int64) - c1
+        first = np.cumsum(counts) - counts
+        n = int(counts.sum())
+        self.keys, self.counts, self.first = keys, counts, first
+        self.col = np.arange(n, dtype=np.int64) - np.repeat(first - c1, counts)
+        w = np.repeat(table[:, 1], counts) + np.repeat(table[:, 2], counts) * view.u[self.col]
+        self.w = w = np.maximum(w, W_MIN)
+        fz = view.f * (heights.key_heights[:, keys] - view.z)          # (4, pieces)
+        ceil_n, floor_n, ceil_b, floor_b = boundary_rows(view, np.repeat(fz, counts, axis=1), w)
+        p1 = ceil_n
+        fl = np.maximum(p1, floor_n)
+        u = np.minimum(np.maximum(ceil_b, p1), fl)
+        lo = np.minimum(np.maximum(floor_b, u), fl)
+        self.p1, self.u, self.l, self.fl = (x.astype(np.int64) for x in (p1, u, lo, fl))
+        self.near = np.repeat(tables.key_near[keys], counts)
+        self.wall = np.repeat(tables.key_wall[keys], counts)
+
+    def piece_values(self, per_key):
+        """A per-key table's value for every entry."""
+        return np.repeat(per_key[self.keys], self.counts)

@@ -1,0 +1,92 @@
+"""Shading: DOOM's light diminishing in 32 levels, and the flat-colour tables.
+
+Far away a surface sinks to the level its sector's light gives, ``far = 31 - 4*(15 -
+light//16)`` (DOOM's ``startmap``), and it brightens in inverse proportion to depth:
+``level = floor(far + bias + 1280/depth)`` clamped to ``[0, 31]`` (1280 = DOOM's 160-pixel
+projection × 16 scale steps / 2 per colormap, so it is independent of the resolution).
+Walls use the depth of their column and ``bias`` +1 for north–south walls, -1 for east–west
+ones (DOOM's fake contrast); floors and ceilings use the depth of each row,
+``d = f*(h - z) / (y0 - row)``.  A sky ceiling, and the upper part between two sky sectors,
+is always full bright.  Without light (``light=False``) every surface is at level 31.
+
+A flat colour at level ``k`` is ``rgb * (k + 1) / 32``, rounded.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["LIGHT_LEVELS", "LIGHT_DISTANCE", "FULL_BRIGHT", "far_level", "light_levels",
+           "colour_table", "plane_stripes", "wall_codes"]
+
+LIGHT_LEVELS = 32
+FULL_BRIGHT = LIGHT_LEVELS - 1
+LIGHT_DISTANCE = 1280.0        # levels gained = LIGHT_DISTANCE / depth (DOOM's scalelight)
+
+
+def far_level(light):
+    """The level a sector's light leaves a surface at at infinite depth (DOOM's startmap)."""
+    return LIGHT_LEVELS - 1 - 4.0 * (15 - np.floor(light / 16.0))
+
+
+def light_levels(far, inverse_depth):
+    """``floor(far + LIGHT_DISTANCE / depth)`` clamped to the 32 levels, int64."""
+    level = np.floor(far + LIGHT_DISTANCE * inverse_depth)
+    return np.clip(level, 0, LIGHT_LEVELS - 1).astype(np.int64)
+
+
+def _rgb(color: str):
+    return int(color[1:3], 16), int(color[3:5], 16), int(color[5:7], 16)
+
+
+def colour_table(walls, sectors) -> np.ndarray:
+    """Packed little-endian rgb (a uint8 view of a pixel reads r, g, b, 0) of every colour
+    code ``32*surface + level``; surfaces: wall w -> 3w (color), 3w+1 (upper), 3w+2 (lower),
+    then sector s -> 3*walls + 2s (floor), + 2s+1 (ceiling)."""
+    colours = []
+    for w in walls:
+        colours += [_rgb(w.color), _rgb(w.drawn_upper_color), _rgb(w.drawn_lower_color)]
+    for s in sectors:
+        colours += [_rgb(s.floor_color), _rgb(s.ceiling_color)]
+    base = np.array(colours, dtype=np.float64).reshape(-1, 1, 3)
+    scale = (np.arange(LIGHT_LEVELS, dtype=np.float64) + 1.0) / LIGHT_LEVELS
+    rgb = np.rint(base * scale[None, :, None]).astype(np.uint32).reshape(-1, 3)
+    return (rgb[:, 0] | (rgb[:, 1] << 8) | (rgb[:, 2] << 16)).astype("<u4")
+
+
+def plane_stripes(tables, state, view, keys, light=True):
+    """Colour stripes for the distinct run keys: ``(stripes (n, H) packed rgb, inverse)``.
+    A wall key (a colour code) is one colour down the stripe; a plane key (``plane_key_base
+    + 2*sector + is_ceiling``) is shaded per row; the "nothing" key is black."""
+    uniq, inverse = np.unique(keys, return_inverse=True)
+    height = view.height
+    stripes = np.zeros((len(uniq), height), dtype="<u4")
+    walls = uniq < tables.n_codes
+    stripes[walls] = tables.rgb32[uniq[walls]][:, None]
+    planes = (uniq >= tables.plane_key_base) & (uniq < tables.nothing_key)
+    if planes.any():
+        plane = uniq[planes] - tables.plane_key_base
+        sector = plane >> 1
+        if light:
+            h = np.where(plane & 1, state.ceiling[sector], state.floor[sector])
+            fz = np.abs(view.f * (h - view.z))
+            den = np.abs(view.y0 - np.arange(height, dtype=np.float64))
+            inverse_depth = den[None, :] / np.maximum(fz, 1e-9)[:, None]
+            level = light_levels(far_level(state.light[sector])[:, None], inverse_depth)
+            level[(plane & 1).astype(bool) & tables.sector_sky[sector]] = FULL_BRIGHT
+        else:
+            level = np.full((len(plane), height), FULL_BRIGHT, dtype=np.int64)
+        codes = (tables.plane_base_surface + plane)[:, None] * LIGHT_LEVELS + level
+        stripes[planes] = tables.rgb32[codes]
+    return stripes, inverse.reshape(-1)
+
+
+def wall_codes(tables, key_light, entries, light=True):
+    """Colour codes ``(upper, lower)`` of every entry's wall parts at its column's level
+    (a one-sided wall's middle is both); ``key_light``: the far level of every key."""
+    if light:
+        level = light_levels(entries.piece_values(key_light), entries.w)
+        upper_level = np.where(entries.piece_values(tables.key_upper_sky), FULL_BRIGHT, level)
+    else:
+        level = upper_level = FULL_BRIGHT
+    return (entries.piece_values(tables.key_upper_surface) + upper_level,
+            entries.piece_values(tables.key_lower_surface) + level)

@@ -1,0 +1,128 @@
+"""What the renderer reads from a tree and from the world, in the form each loop wants it.
+
+``TreeTables`` holds what never changes for a tree — node and seg lists for the Python walks,
+numpy tables per *side key* — and is built once per tree.  ``HeightTables`` holds what follows
+from the current sector heights (the parts' heights per side key, and which two-sided walls
+are closed this frame, DOOM's ``R_AddLine``); it is rebuilt when the ``WorldState``'s
+``version`` changes.  Light is read from the state every frame (lights flicker without
+touching ``version``).
+
+A *side key* ``2*seg + back`` names a seg seen from one side (``back`` = 1: from behind its
+wall); per key, N is the near sector (on the eye's side) and B the far one (-1: none).
+"""
+from __future__ import annotations
+
+import weakref
+
+import numpy as np
+
+from .shading import LIGHT_LEVELS, colour_table, far_level
+
+__all__ = ["TreeTables", "HeightTables", "tree_tables", "height_tables", "key_light"]
+
+
+class TreeTables:
+    """Per-tree constants: node and seg lists (Python lists, so per-node work never touches
+    numpy scalars) and per-key numpy tables."""
+
+    def __init__(self, tree):
+        level = tree.level
+        walls, sectors = level.walls, level.sectors
+        self.root = int(tree.root)
+        self.node_count = len(tree.node_line)
+        self.node_lines = np.asarray(tree.node_line, dtype=np.float64).tolist()
+        self.node_kids = np.asarray(tree.node_child).tolist()
+        self.node_boxes = np.asarray(tree.node_bbox, dtype=np.float64).tolist()
+        self.node_segs = np.asarray(tree.node_segs).tolist()
+        self.leaf_inside = (np.asarray(tree.leaf_sector) >= 0).tolist()
+        seg_wall = np.asarray(tree.seg_wall, dtype=np.int64)
+        self.seg_xy = np.asarray(tree.seg_xy, dtype=np.float64).reshape(-1, 4)
+        self.seg_ends = self.seg_xy.tolist()
+        self.seg_flip = np.asarray(tree.seg_flip, dtype=np.int64).tolist()
+        self.back_of = np.array([-1 if w.back is None else w.back for w in walls],
+                                dtype=np.int64)
+        self.front_of = np.array([w.front for w in walls], dtype=np.int64)
+        self.seg_wall = seg_wall
+        self.seg_one_sided = (self.back_of[seg_wall] < 0).tolist()
+        self.n_sectors = len(sectors)
+        self.sector_sky = np.array([s.sky for s in sectors], dtype=bool)
+        self._key_tables(level, seg_wall)
+        self.rgb32 = colour_table(walls, sectors)
+        self.n_codes = len(self.rgb32)
+        self.plane_base_surface = 3 * len(walls)
+        self.plane_key_base = self.n_codes                       # run keys: codes, planes,
+        self.nothing_key = self.n_codes + 2 * len(sectors)       # then "nothing"
+        self.heights = weakref.WeakKeyDictionary()               # state -> HeightTables
+        self.lights = weakref.WeakKeyDictionary()                # state -> (light, per key)
+
+    def _key_tables(self, level, seg_wall):
+        wall = np.repeat(seg_wall, 2)
+        back = np.tile(np.array([0, 1], dtype=np.int64), len(seg_wall))
+        near = np.where(back == 0, self.front_of[wall], self.back_of[wall])
+        far = np.where(back == 0, self.back_of[wall], self.front_of[wall])
+        self.key_wall = wall
+        self.key_near = np.maximum(near, 0)   # one-sided walls seen from behind: never drawn
+        self.key_far = far
+        one_sided = far < 0
+        ends = np.array(level.segments(), dtype=np.int64).reshape(-1, 4)
+        north_south, east_west = ends[:, 0] == ends[:, 2], ends[:, 1] == ends[:, 3]
+        # DOOM's fake contrast: north-south walls a level brighter, east-west ones darker
+        self.key_bias = np.where(north_south, 1.0, np.where(east_west, -1.0, 0.0))[wall]
+        # DOOM leaves the upper part between two skies open: it shows sky, never dimmed
+        self.key_upper_sky = (~one_sided & self.sector_sky[self.key_near]
+                              & self.sector_sky[np.maximum(far, 0)])
+        # surfaces: wall w -> 3w (color), 3w+1 (upper), 3w+2 (lower); sector planes after
+        self.key_upper_surface = (3 * wall + np.where(one_sided, 0, 1)) * LIGHT_LEVELS
+        self.key_lower_surface = (3 * wall + np.where(one_sided, 0, 2)) * LIGHT_LEVELS
+
+
+class HeightTables:
+    """What the current sector heights give: per key the heights ``(N.ceiling, N.floor,
+    B.ceiling, B.floor)`` of its column (a one-sided wall's opening is empty: B's heights
+    are N's ceiling), and whether the key closes its columns (DOOM's ``R_AddLine``: a
+    one-sided wall, or a two-sided one whose opening is shut now, like a closed door)."""
+
+    def __init__(self, tables: TreeTables, state):
+        floor, ceil = state.floor, state.ceiling
+        near, far = tables.key_near, tables.key_far
+        one_sided = far < 0
+        far_c = np.where(one_sided, ceil[near], ceil[np.maximum(far, 0)])
+        far_f = np.where(one_sided, ceil[near], floor[np.maximum(far, 0)])
+        self.version = state.version
+        self.floor, self.ceiling = floor.copy(), ceil.copy()   # as they were for this version
+        self.key_heights = np.stack([ceil[near], floor[near], far_c, far_f])   # (4, keys)
+        closed = (far_f >= far_c) | (far_c <= floor[near]) | (far_f >= ceil[near])
+        self.key_solid = (one_sided | closed).tolist()
+
+
+_CACHE: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+
+
+def tree_tables(tree) -> TreeTables:
+    """The tree's tables, built on first use and kept while the tree lives."""
+    try:
+        return _CACHE[tree]
+    except KeyError:
+        tables = _CACHE[tree] = TreeTables(tree)
+        return tables
+    except TypeError:                          # an unhashable stand-in: no caching
+        return TreeTables(tree)
+
+
+def height_tables(tables: TreeTables, state) -> HeightTables:
+    """The tables of ``state``'s current heights, rebuilt only when its version changes."""
+    cached = tables.heights.get(state)
+    if cached is None or cached.version != state.version:
+        cached = tables.heights[state] = HeightTables(tables, state)
+    return cached
+
+
+def key_light(tables: TreeTables, state) -> np.ndarray:
+    """Per key, the far light level of its wall (``far_level`` of N's light now, plus the
+    fake contrast), rebuilt only when a sector's light has changed."""
+    cached = tables.lights.get(state)
+    now = state.light.tobytes()
+    if cached is None or cached[0] != now:
+        per_key = far_level(state.light[tables.key_near]) + tables.key_bias
+        cached = tables.lights[state] = (now, per_key)
+    return cached[1]
