@@ -213,6 +213,7 @@ def assert_same_frames(a, b):
     assert np.array_equal(a.color, b.color)
     assert np.array_equal(a.kind, b.kind)
     assert np.array_equal(a.index, b.index)
+    assert np.array_equal(a.depth, b.depth)
 
 
 def test_painter_equals_front_to_back_on_random_views(compiled_levels):
