@@ -264,3 +264,17 @@ def test_walk_with_a_driver_that_shows_nothing_is_no_display(tmp_path, capsys, m
 def test_walk_checks_its_screenshot_path_before_walking(tmp_path, capsys):
     _one_line_exit_2(["walk", _box(tmp_path), "--frames", "2", "--screenshot",
                       tmp_path / "nodir" / "s.png"], capsys, "nodir")
+
+
+def test_render_saves_the_depth_buffer_and_draws_fullbright(tmp_path, capsys):
+    level = _box(tmp_path)
+    argv = ["render", level, "--size", "32x20", "--depth", tmp_path / "d.npy"]
+    assert _run(argv + ["-o", tmp_path / "lit.png"], capsys)[0] == 0
+    assert _run(argv[:-2] + ["-o", tmp_path / "bright.png", "--fullbright"], capsys)[0] == 0
+    depth = np.load(tmp_path / "d.npy")
+    assert depth.shape == (20, 32) and depth.dtype == np.float32
+    assert np.isfinite(depth).any() and (depth[np.isfinite(depth)] > 0).all()
+    assert (tmp_path / "lit.png").read_bytes() != (tmp_path / "bright.png").read_bytes()
+    _one_line_exit_2(argv[:-1] + [tmp_path / "nodir" / "d.npy", "-o", tmp_path / "x.png"],
+                     capsys, "nodir")
+    assert not (tmp_path / "x.png").exists()

@@ -255,17 +255,28 @@ def _ids_bytes(frame) -> bytes:
     return buf.getvalue()
 
 
+def _depth_bytes(frame) -> bytes:
+    import io
+    import numpy as np
+    buf = io.BytesIO()
+    np.save(buf, np.ascontiguousarray(frame.depth), allow_pickle=False)
+    return buf.getvalue()
+
+
 def cmd_render(args):
     from .image import png_bytes
     from .render import render
-    check_outputs("render", [args.output, args.ids], [args.source])
+    check_outputs("render", [args.output, args.ids, args.depth], [args.source])
     tree = load_any(args.source, args, strict=args.strict)
     width, height = args.size
     frame = render(tree, camera_for(tree, args), width, height,
-                   order="back_to_front" if args.painter else "front_to_back")
+                   order="back_to_front" if args.painter else "front_to_back",
+                   light=not args.fullbright)
     outputs = {args.output: png_bytes(frame.color)}
     if args.ids:
         outputs[args.ids] = _ids_bytes(frame)
+    if args.depth:
+        outputs[args.depth] = _depth_bytes(frame)
     write_outputs(outputs)
     if args.json:
         print(json.dumps(frame.stats, sort_keys=True))
@@ -353,6 +364,8 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--painter", action="store_true", help="use the back-to-front renderer")
     p.add_argument("-o", "--output", required=True, metavar="PNG", help="PNG to write")
     p.add_argument("--ids", metavar="NPZ", help="also save kind and index arrays to this .npz")
+    p.add_argument("--depth", metavar="NPY", help="also save the depth buffer (float32) to this .npy")
+    p.add_argument("--fullbright", action="store_true", help="no light diminishing")
     p.add_argument("--json", action="store_true", help="print the frame's stats as JSON")
     _add_build_options(p), _add_strict(p)
     p.set_defaults(func=cmd_render)
