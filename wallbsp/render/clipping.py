@@ -60,12 +60,19 @@ def texture_rows(view, top_height, texture_height, depth):
 
 class ClipWindows:
     """Per column the drawn pieces, nearest first, with the window each left open, from
-    the frame's ``DrawSegs`` and each piece's far sector (``piece_far``)."""
+    the frame's ``DrawSegs`` and each piece's near and far sectors."""
 
-    def __init__(self, drawsegs, piece_far, view, floor, ceiling, eye_sector):
+    def __init__(self, drawsegs, piece_near, piece_far, view, floor, ceiling, eye_sector):
         self.view, self.floor, self.ceiling = view, floor, ceiling
-        self.eye_sector = -1 if eye_sector is None else int(eye_sector)
         self.col = drawsegs.col
+        # where a column's ray starts: the near sector of its first piece (an eye on a
+        # sector's edge is in one sector or the other depending on the column), else the
+        # eye's own
+        self.start = np.full(view.width, -1 if eye_sector is None else int(eye_sector))
+        first = np.searchsorted(drawsegs.col, np.arange(view.width))
+        has = first < len(drawsegs.col)
+        has[has] = drawsegs.col[first[has]] == np.flatnonzero(has)
+        self.start[has] = piece_near[drawsegs.piece[first[has]]]
         # one sorted key: column, then depth (1/(1+w) grows with depth, stays in [0, 1))
         key = drawsegs.col + 1.0 / (1.0 + drawsegs.w)
         self.key = np.maximum.accumulate(key) if len(key) else key
@@ -78,7 +85,7 @@ class ClipWindows:
         height = self.view.height
         top = np.zeros(len(col), dtype=np.int64)
         bottom = np.full(len(col), height, dtype=np.int64)
-        beyond = np.full(len(col), self.eye_sector, dtype=np.int64)
+        beyond = self.start[col]
         if len(self.key):
             last = np.searchsorted(self.key, col + depth / (1.0 + depth), side="left") - 1
             found = last >= 0

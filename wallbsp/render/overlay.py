@@ -92,11 +92,11 @@ def draw_masked(view, state, tables, walk, entries, drawsegs, colour_columns, re
     atlas = atlas_for(resources)
     things = state.things
     ids = things.things_in_leaves(walk.leaves)
-    eye_sector = state.tree.locate(view.x, view.y)
-    clip = ClipWindows(drawsegs, tables.key_far[entries.keys], view, state.floor,
-                       state.ceiling, eye_sector)
     parts, stats = [], {"things_considered": len(ids), "things_drawn": 0, "masked_columns": 0}
     if len(ids):
+        clip = ClipWindows(drawsegs, tables.key_near[entries.keys],
+                           tables.key_far[entries.keys], view, state.floor, state.ceiling,
+                           state.tree.locate(view.x, view.y))
         sprites, _, drawn = sprite_slices(view, state, things, ids, clip, atlas, light)
         stats["things_drawn"] = drawn
         if sprites is not None:
