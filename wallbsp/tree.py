@@ -127,14 +127,21 @@ class BSPTree:
         gives the exact reverse order (the painter's: far side first)."""
         lines, child, _, _ = self.node_lists()
         tol = self.side_tolerance(x, y)
+        # stack items: a subtree (a node < n, or a leaf code < 0), or a node's own turn
+        # coded by the side: node + n (in front), + 2n (on the line), + 3n (behind)
         n = len(lines)
+        on_line, behind = 2 * n, 3 * n
         stack = [self.root]
         pop, push = stack.pop, stack.append
         while stack:
             item = pop()
-            if item >= n:                   # a node's own turn: item = node + n * (side + 2)
-                side, node = divmod(item, n)
-                yield node, side - 2
+            if item >= n:
+                if item >= behind:
+                    yield item - behind, 1
+                elif item >= on_line:
+                    yield item - on_line, 0
+                else:
+                    yield item - n, -1
             elif item >= 0:
                 if keep is not None and not keep(item):
                     continue
@@ -142,12 +149,19 @@ class BSPTree:
                 s = a * x + b * y + c
                 if not (s < -tol or s > tol):           # too close to call in floats
                     s = exact_side(a, b, c, x, y)
-                near, far = child[item] if s <= 0 else child[item][::-1]
-                side = -1 if s < 0 else (1 if s > 0 else 0)
-                first, last = (far, near) if reverse else (near, far)
-                push(last)
-                push(item + n * (side + 2))
-                push(first)
+                near, far = child[item]
+                if s < 0:
+                    turn = item + n
+                elif s == 0:
+                    turn = item + on_line
+                else:
+                    turn = item + behind
+                    near, far = far, near
+                if reverse:
+                    near, far = far, near
+                push(far)
+                push(turn)
+                push(near)
             elif leaves:
                 yield item, 0
 
