@@ -36,13 +36,13 @@ WALK_MAP = (FREEDOOM[0], "E1M1")
 COMPILE_MAP = (FREEDOOM[1], "MAP12")
 SIZES = ((320, 200), (640, 400))
 COMPILE_REPEAT = 3
-QUICK_FRAMES = 20
+QUICK_FRAMES = 10
 TOLERANCE = 0.10
 RUNNER = Path(__file__).resolve().parent / "compare_run.py"
 
 
 def main(argv=None) -> int:
-    parser = script_parser(__doc__, "one round, a 20-frame walk, one compile")
+    parser = script_parser(__doc__, "one round, a 10-frame walk, one compile")
     parser.add_argument("--baseline", type=Path, required=True,
                         help="the other checkout (its wallbsp/ is imported from there)")
     parser.add_argument("--rounds", type=positive_int, default=None,

@@ -7,7 +7,7 @@ Prints one JSON object, plots time against N to docs/gordon_chen.png and rewrite
 
     python tools/bench_gordon_chen.py [--quick] [--no-docs] [--views N] [--repeat N]
 
---quick: N <= 500, S = 500 and parallel, 3 viewpoints, one run each, 320x200 only.
+--quick: N <= 500, S = 500 and parallel, 2 viewpoints, one run each, 320x200 only.
 
 The levels come from levels.py (``random_walls_level``): a wall of length S with a uniform
 random direction, centred uniformly in the 1000 x 1000 universe, made of two opposite
@@ -61,9 +61,9 @@ def main(argv=None) -> int:
 
 
 def options():
-    parser = script_parser(__doc__, "N <= 500, S = 500 and parallel, 3 views, one run each")
+    parser = script_parser(__doc__, "N <= 500, S = 500 and parallel, 2 views, one run each")
     parser.add_argument("--views", type=positive_int, default=None,
-                        help="random viewpoints per case (default 7; --quick 3)")
+                        help="random viewpoints per case (default 7; --quick 2)")
     parser.add_argument("--repeat", type=positive_int, default=None,
                         help="renders of every frame, the median kept (default 3; --quick 1)")
     parser.add_argument("--seed", type=int, default=1, help="levels and viewpoints (default 1)")
@@ -214,7 +214,7 @@ def measure_case(tree, cameras, size, repeat: int, shade) -> dict:
 # The run
 
 def run(args) -> dict:
-    views = args.views or (3 if args.quick else 7)
+    views = args.views or (2 if args.quick else 7)
     repeat = args.repeat or (1 if args.quick else 3)
     cases, skipped = grid(args.quick)
     cameras = viewpoints(views, args.seed)

@@ -7,7 +7,7 @@ Prints JSON lines: one per map ("kind": "map"), one per walked map and frame siz
 
     python tools/bench_maps.py [--quick] [--no-docs] [--repeat N]
 
---quick: E1M1 and MAP01 only, one pass, a 60-frame walk. Without the WADs it prints one
+--quick: E1M1 and MAP01 only, one pass, a 30-frame walk. Without the WADs it prints one
 summary line saying so and exits 0.
 """
 from __future__ import annotations
@@ -34,7 +34,7 @@ WALKED_MAPS = ("E1M1", "MAP01")
 TIMED_MAP = "MAP12"                   # the largest map, 10,884 linedefs
 TARGETS = {"map12_compile_seconds": 0.5, "total_import_compile_seconds": 20.0,
            "median_side_split_ratio": 1.05}
-QUICK_FRAMES = 60                     # --quick walks the first 60 frames of walk.WALK
+QUICK_FRAMES = 30                     # --quick walks the first 30 frames of walk.WALK
 PAINTER_EVERY = 5                     # the painter is 10-30x slower: a sample of the walk
 
 
@@ -51,7 +51,7 @@ def main(argv=None) -> int:
 
 
 def parse_args(argv=None):
-    parser = script_parser(__doc__, "E1M1 and MAP01 only, one pass, a 60-frame walk")
+    parser = script_parser(__doc__, "E1M1 and MAP01 only, one pass, a 30-frame walk")
     parser.add_argument("--repeat", type=positive_int, default=None,
                         help="passes of every timing, the median kept (default 5; --quick 1)")
     return parser.parse_args(argv)
