@@ -13,8 +13,8 @@ import sys
 import time
 
 from .build import DEFAULT_CANDIDATES
-from .files import write_atomically
 from .level import LevelError
+from .outputs import OutputError, check_outputs, write_outputs
 
 MAX_COORDINATE = 2 ** 24  # --at and --z: 16 times the largest map (SPEC §1)
 MAX_ANGLE = 36000         # --angle: a hundred turns either way
@@ -153,43 +153,6 @@ def _size(text):
     return w, h
 
 
-# -- outputs: all or none ----------------------------------------------------------------------
-def check_outputs(command, outputs, inputs=()):
-    """Refuse, before anything is read or computed, output paths that cannot be written:
-    a missing or read-only folder, a directory, one path named twice, an input file."""
-    seen = {os.path.realpath(p): "the input" for p in inputs if p and p != "-"}
-    for path in filter(None, outputs):
-        full = os.path.realpath(path)
-        folder = os.path.dirname(full)
-        if full in seen:
-            raise UsageError(f"{path}: named as {seen[full]} of wallbsp {command} too")
-        seen[full] = "another output"
-        if os.path.isdir(full):
-            raise UsageError(f"{path}: is a directory")
-        if not os.path.isdir(folder):
-            raise UsageError(f"{path}: folder {os.path.dirname(path) or '.'} does not exist")
-        if not os.access(folder, os.W_OK):
-            raise UsageError(f"{path}: folder {os.path.dirname(path) or '.'} is not writable")
-
-
-def write_outputs(outputs: dict) -> None:
-    """Write ``{path: bytes}`` together: each file is staged beside its target first and
-    only when every one is complete are they all renamed into place."""
-    staged = []
-    try:
-        for path, data in outputs.items():
-            folder, name = os.path.split(os.fspath(path))
-            stage = os.path.join(folder, f".{name}.{os.getpid()}.partial")
-            write_atomically(stage, data)
-            staged.append((stage, path))
-        for stage, path in staged:
-            os.replace(stage, path)
-    finally:
-        for stage, _ in staged:
-            if os.path.lexists(stage):
-                os.unlink(stage)
-
-
 def _default_output(level_path: str, suffix: str) -> str:
     """Beside the level; for ``WAD:MAP``, ``WADNAME-MAP`` in the current folder (a WAD
     often lives in a system folder)."""
@@ -247,24 +210,9 @@ def camera_for(tree, args):
     return eye_camera(state_of(tree), x, y, angle, args.fov)
 
 
-def _ids_bytes(frame) -> bytes:
-    import io
-    import numpy as np
-    buf = io.BytesIO()
-    np.savez(buf, kind=np.ascontiguousarray(frame.kind), index=np.ascontiguousarray(frame.index))
-    return buf.getvalue()
-
-
-def _depth_bytes(frame) -> bytes:
-    import io
-    import numpy as np
-    buf = io.BytesIO()
-    np.save(buf, np.ascontiguousarray(frame.depth), allow_pickle=False)
-    return buf.getvalue()
-
-
 def cmd_render(args):
     from .image import png_bytes
+    from .outputs import depth_bytes, ids_bytes
     from .render import render
     check_outputs("render", [args.output, args.ids, args.depth], [args.source])
     tree = load_any(args.source, args, strict=args.strict)
@@ -274,9 +222,9 @@ def cmd_render(args):
                    light=not args.fullbright)
     outputs = {args.output: png_bytes(frame.color)}
     if args.ids:
-        outputs[args.ids] = _ids_bytes(frame)
+        outputs[args.ids] = ids_bytes(frame)
     if args.depth:
-        outputs[args.depth] = _depth_bytes(frame)
+        outputs[args.depth] = depth_bytes(frame)
     write_outputs(outputs)
     if args.json:
         print(json.dumps(frame.stats, sort_keys=True))
@@ -397,7 +345,7 @@ def main(argv=None) -> int:
     try:
         args = build_parser().parse_args(argv)
         args.func(args)
-    except UsageError as err:
+    except (UsageError, OutputError) as err:
         print(str(err), file=sys.stderr)
         return 2
     except LevelError as err:                        # TreeError is a LevelError too
