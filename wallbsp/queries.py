@@ -61,7 +61,7 @@ from .world import state_of
 
 __all__ = ["PLAYER_RADIUS", "MAX_STEP", "PLAYER_HEIGHT", "MAX_COORDINATE", "move",
            "floor_z", "ceiling_z", "standing_heights", "line_of_sight", "walls_crossed",
-           "use_target", "USE_RANGE"]
+           "use_target", "USE_RANGE", "segs_near"]
 
 PLAYER_RADIUS = 16
 MAX_STEP = 24
@@ -180,6 +180,21 @@ def _segs_near(geo, ax, ay, bx, by, reach):
     return found
 
 
+def _walls_along(geo, ax, ay, bx, by) -> set:
+    """Walls with a seg that may meet the segment a-b (the caller tests exactly)."""
+    return {geo.seg_wall[seg] for seg in _segs_near(geo, ax, ay, bx, by, 0.0)}
+
+
+def segs_near(source, x, y, reach) -> list:
+    """Seg ids that may come within ``reach`` of (x, y): every seg that does, and few that
+    do not (the tree search that moves and floors use)."""
+    x, y = _point("segs_near: point", x, y)
+    if not _finite("segs_near: reach", reach, MAX_COORDINATE) >= 0:
+        raise ValueError(f"segs_near: reach must not be negative, not {reach!r}")
+    _tree, geo, _heights = _world(source)
+    return _segs_near(geo, x, y, x, y, reach)
+
+
 # -- movement -------------------------------------------------------------------------------------
 
 def move(source, x, y, dx, dy, z_floor, radius=PLAYER_RADIUS, step=MAX_STEP,
@@ -286,7 +301,7 @@ def line_of_sight(source, a, b, za=None, zb=None) -> bool:
     if za is not None:
         za, zb = _finite("line_of_sight: za", za), _finite("line_of_sight: zb", zb)
     _tree, geo, heights = _world(source)
-    for wall in {geo.seg_wall[seg] for seg in _segs_near(geo, ax, ay, bx, by, 0.0)}:
+    for wall in _walls_along(geo, ax, ay, bx, by):
         where = crossing(ax, ay, bx, by, *geo.wall_ends[wall])
         if where is None:
             continue
@@ -309,7 +324,7 @@ def _side(ends, x, y) -> int:
 def _walls_met(geo, ax, ay, bx, by):
     """``[(t, wall), ...]`` of the walls the segment a-b meets, by t along it."""
     hits = []
-    for wall in {geo.seg_wall[seg] for seg in _segs_near(geo, ax, ay, bx, by, 0.0)}:
+    for wall in _walls_along(geo, ax, ay, bx, by):
         where = crossing(ax, ay, bx, by, *geo.wall_ends[wall])
         if where is not None:
             hits.append((min(where), wall))
