@@ -165,11 +165,11 @@ def test_python_dash_m_and_help_work():
 
 
 def test_builds_longer_than_a_second_show_progress_on_stderr(capsys):
-    from wallbsp.cli import _Progress
-    quick = _Progress()
+    from wallbsp.cli import BuildProgress
+    quick = BuildProgress()
     quick(1, 10, 500)
     assert capsys.readouterr().err == ""                  # under a second: silent
-    slow = _Progress()
+    slow = BuildProgress()
     slow.started -= 2.0
     slow(3, 40, 1200)
     slow(4, 90, 0)

@@ -69,10 +69,10 @@ def load_any(spec: str, args, strict=False):
             return load_tree(spec)
         level = _warned(level_from_input(data, spec, strict=strict))
     return compile_level(level, getattr(args, "candidates", None),
-                         getattr(args, "seed", 0), progress=_Progress())
+                         getattr(args, "seed", 0), progress=BuildProgress())
 
 
-class _Progress:
+class BuildProgress:
     """Shows the build's progress on stderr once it has taken more than a second."""
 
     def __init__(self):
@@ -179,7 +179,7 @@ def cmd_compile(args):
     out = args.output or _default_output(args.level, ".wbsp")
     check_outputs("compile", [out], [args.level])
     level = load_source(args.level, strict=args.strict)
-    tree = compile_level(level, args.candidates, args.seed, progress=_Progress())
+    tree = compile_level(level, args.candidates, args.seed, progress=BuildProgress())
     tree.save(out)
     stats = tree.stats()
     stats["output"] = out
