@@ -26,6 +26,8 @@ from .layers import RunLayers
 from .painter import fill_back_to_front, walk_back_to_front
 from .rows import Entries
 from .tables import height_tables, tree_tables
+from .texfill import fill_textured, paint_textured
+from .textures import level_textures
 from .walk import walk_front_to_back
 
 __all__ = ["render", "Frame", "save_ids"]
@@ -45,7 +47,7 @@ class _FrontToBackLayers(RunLayers):
 
 
 def render(source, camera: Camera, width: int, height: int, order: str = "front_to_back",
-           light: bool = True) -> Frame:
+           light: bool = True, textures: bool = True) -> Frame:
     """Render one ``width × height`` frame of ``source`` (a tree, a ``WorldState`` or
     anything with one as ``.state``) seen by ``camera`` (SPEC §4–§5), with the source's
     current sector heights and light.
@@ -53,22 +55,32 @@ def render(source, camera: Camera, width: int, height: int, order: str = "front_
     ``order="front_to_back"`` (default) is the column-list renderer with early out;
     ``order="back_to_front"`` the painter's algorithm.  Both give the same color, kind,
     index and depth; their ``stats`` differ (the painter writes pixels many times).
-    ``light=False`` draws every surface full bright."""
+    ``light=False`` draws every surface full bright.  A level that names resources is
+    drawn textured (SPEC §4b) unless ``textures=False`` (flat colours)."""
     if order not in ORDERS:
         raise ValueError(f"order must be 'front_to_back' or 'back_to_front', got {order!r}")
     view = Projection(camera, width, height)
     state = state_of(source)
     tables = tree_tables(state.tree)
     heights = height_tables(tables, state)
+    tex = level_textures(tables, state) if textures else None
     if order == "front_to_back":
         walk = walk_front_to_back(tables, heights.key_solid, view)
         e = Entries(tables, heights, view, walk.pieces)
-        colour, runs, windows, written = fill_flat(tables, state, view, e, light)
+        if tex is None:
+            colour, runs, windows, written = fill_flat(tables, state, view, e, light)
+        else:
+            colour, runs, windows, written = fill_textured(tables, tex, heights, state, view,
+                                                           e, light)
         layers = _FrontToBackLayers(view, heights, tables, e, runs, windows)
     else:
         walk = walk_back_to_front(tables, view)
         e = Entries(tables, heights, view, walk.pieces)
-        colour, runs, pixel_run, written = fill_back_to_front(tables, state, view, e, light)
+        if tex is None:
+            colour, runs, pixel_run, written = fill_back_to_front(tables, state, view, e, light)
+        else:
+            colour, runs, pixel_run, written = paint_textured(tables, tex, heights, state, view,
+                                                              e, light)
         layers = RunLayers(view, heights, tables, e, runs, pixel_run=pixel_run)
     walk.stats["pixels_written"] = written
     return Frame(view.width, view.height, colour, walk.stats, layers, walk.leaves)

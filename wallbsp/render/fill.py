@@ -74,14 +74,16 @@ def column_windows(col, u, lo, height):
     return top, np.maximum(bottom, top)
 
 
-def front_to_back_runs(tables, view, e, codes):
+def front_to_back_runs(tables, view, e, codes, parts=None):
     """``(Runs, windows)``: the runs of the frame and the windows of every entry (for
     ``drawsegs``).
 
     Each column gets a closing sentinel entry that paints "nothing" over whatever window is
     left.  A column with n entries holds 4n runs: the tops (ceiling, upper wall) in walk
     order, then the bottoms (lower wall, floor) in reverse walk order; empty runs dropped.
-    ``codes`` are the entries' ``(upper, lower)`` wall keys."""
+    ``codes`` are the entries' ``(upper, lower)`` wall keys; or ``parts`` gives each of the
+    four parts' ``(keys, kinds, indices)`` as ``(4, entries)`` arrays (the sentinels' key is
+    then 4)."""
     width, height = view.width, view.height
     n_entries = len(e.col)
     col = np.concatenate([e.col, np.arange(width, dtype=np.int64)])
@@ -101,13 +103,20 @@ def front_to_back_runs(tables, view, e, codes):
     top_slot = 4 * group + 2 * (np.arange(len(col), dtype=np.int64) - group)
     bottom_slot = 8 * group + 4 * per_col[col] - 2 - top_slot
     slots = np.stack([top_slot, top_slot + 1, bottom_slot, bottom_slot + 1])
-    floor_key = tables.plane_key_base + 2 * e.near
-    upper_code, lower_code = codes
-    keys = np.concatenate([np.stack([floor_key + 1, upper_code, lower_code, floor_key]),
-                           np.full((4, width), tables.nothing_key, dtype=np.int64)], axis=1)
-    indices = np.concatenate([np.stack([e.near, e.wall, e.wall, e.near]),
-                              np.full((4, width), -1, dtype=np.int64)], axis=1)
-    kinds = _PART_KINDS * (order < n_entries)
+    if parts is None:
+        floor_key = tables.plane_key_base + 2 * e.near
+        upper_code, lower_code = codes
+        keys = np.stack([floor_key + 1, upper_code, lower_code, floor_key])
+        indices = np.stack([e.near, e.wall, e.wall, e.near])
+        kinds = _PART_KINDS * (order < n_entries)
+        nothing = tables.nothing_key
+    else:
+        keys, part_kinds, indices = parts
+        kinds = np.concatenate([part_kinds, np.zeros((4, width), dtype=np.uint8)],
+                               axis=1).take(order, axis=1)
+        nothing = 4
+    keys = np.concatenate([keys, np.full((4, width), nothing, dtype=np.int64)], axis=1)
+    indices = np.concatenate([indices, np.full((4, width), -1, dtype=np.int64)], axis=1)
     runs = _scatter_runs(slots, order, lengths, keys.take(order, axis=1), kinds,
                          indices.take(order, axis=1))
     return runs, (order, top, bottom, u, lo)

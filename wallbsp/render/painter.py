@@ -17,7 +17,8 @@ from .shading import plane_stripes, wall_codes
 from .tables import key_light
 from .walk import Walk
 
-__all__ = ["PAINTER_CHUNK", "walk_back_to_front", "fill_back_to_front", "PainterRuns"]
+__all__ = ["PAINTER_CHUNK", "walk_back_to_front", "fill_back_to_front", "paint_runs",
+           "PainterRuns"]
 
 PAINTER_CHUNK = 1 << 22        # pixels expanded at once
 
@@ -69,35 +70,50 @@ def walk_back_to_front(tables, view) -> Walk:
 
 class PainterRuns:
     """The painter's runs, entry-major, four per entry (ceiling, upper wall, lower wall,
-    floor), then one "nothing" run: ``kinds``, ``indices``, ``entries``."""
+    floor), then one "nothing" run: ``kinds``, ``indices``, ``entries``, ``parts`` (0-3, 4
+    nothing).  ``parts`` may give the four parts' ``(keys, kinds, indices)`` per entry as
+    ``front_to_back_runs`` takes them (the keys are the part numbers)."""
 
-    def __init__(self, e, n_entries):
-        self.kinds = np.append(np.tile(np.array([KIND_CEILING, KIND_WALL, KIND_WALL, KIND_FLOOR],
-                                                dtype=np.uint8), n_entries), np.uint8(0))
-        self.indices = np.append(np.stack([e.near, e.wall, e.wall, e.near], axis=1).reshape(-1),
-                                 -1).astype(np.int32)
+    def __init__(self, e, n_entries, parts=None):
+        if parts is None:
+            kinds = np.tile(np.array([KIND_CEILING, KIND_WALL, KIND_WALL, KIND_FLOOR],
+                                     dtype=np.uint8), n_entries)
+            indices = np.stack([e.near, e.wall, e.wall, e.near], axis=1).reshape(-1)
+        else:
+            kinds, indices = parts[1].T.reshape(-1), parts[2].T.reshape(-1)
+        self.kinds = np.append(kinds, np.uint8(0)).astype(np.uint8)
+        self.indices = np.append(indices, -1).astype(np.int32)
         self.entries = np.repeat(np.arange(n_entries + 1, dtype=np.int64), 4)[:4 * n_entries + 1]
+        self.parts = np.append(np.tile(np.arange(4, dtype=np.int64), n_entries), 4)
+
+
+def paint_runs(view, e):
+    """Every entry's four unclipped runs written far to near: ``(per-pixel run numbers,
+    pixels written)``; pixels no run covers hold the "nothing" run ``4*entries``."""
+    width, height = view.width, view.height
+    n_entries = len(e.col)
+    zero = np.zeros(n_entries, dtype=np.int64)
+    # four unclipped runs per entry, entry-major: ceiling, upper wall, lower wall, floor
+    start = np.stack([zero, e.p1, e.l, e.fl], axis=1).reshape(-1)
+    length = np.stack([e.p1, e.u - e.p1, e.fl - e.l, height - e.fl], axis=1).reshape(-1)
+    pixel_run = np.full(width * height, 4 * n_entries, dtype=np.int64)
+    written = _paint(start, length, np.repeat(e.col, 4), 4 * (e.first + e.counts), height,
+                     pixel_run)
+    return pixel_run, written
 
 
 def fill_back_to_front(tables, state, view, e, light=True):
     """``(colour columns, PainterRuns, per-pixel run numbers, pixels written)``."""
     width, height = view.width, view.height
-    n_entries = len(e.col)
-    zero = np.zeros(n_entries, dtype=np.int64)
     upper_code, lower_code = wall_codes(tables, key_light(tables, state), e, light)
     floor_key = tables.plane_key_base + 2 * e.near
-    # four unclipped runs per entry, entry-major: ceiling, upper wall, lower wall, floor
-    start = np.stack([zero, e.p1, e.l, e.fl], axis=1).reshape(-1)
-    length = np.stack([e.p1, e.u - e.p1, e.fl - e.l, height - e.fl], axis=1).reshape(-1)
     keys = np.stack([floor_key + 1, upper_code, lower_code, floor_key], axis=1).reshape(-1)
     stripes, stripe = plane_stripes(tables, state, view, np.append(keys, tables.nothing_key),
                                     light)
-    pixel_run = np.full(width * height, 4 * n_entries, dtype=np.int64)
-    written = _paint(start, length, np.repeat(e.col, 4), 4 * (e.first + e.counts), height,
-                     pixel_run)
+    pixel_run, written = paint_runs(view, e)
     pixel = stripe.take(pixel_run) * height + row_numbers(width, height)
     colour = colour_columns(stripes, pixel, width, height)
-    return colour, PainterRuns(e, n_entries), pixel_run, written
+    return colour, PainterRuns(e, len(e.col)), pixel_run, written
 
 
 def _paint(start, length, col, piece_run_end, height, pixel_run) -> int:

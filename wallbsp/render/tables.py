@@ -54,6 +54,7 @@ class TreeTables:
         self.nothing_key = self.n_codes + 2 * len(sectors)       # then "nothing"
         self.heights = weakref.WeakKeyDictionary()               # state -> HeightTables
         self.lights = weakref.WeakKeyDictionary()                # state -> (light, per key)
+        self.textures = weakref.WeakKeyDictionary()              # state -> LevelTextures
 
     def _key_tables(self, level, seg_wall):
         wall = np.repeat(seg_wall, 2)

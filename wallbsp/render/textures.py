@@ -1,0 +1,211 @@
+"""The textures of a level packed for the per-texel fill: one atlas, one lit colour table.
+
+Every texel is a *colour index* (uint16 when there are fewer than 65,536 colours): WAD
+pictures keep their palette index (0-255), PNG texels and the fallback colours get indices
+after them.  ``lut[level, index]`` is packed rgb (a uint8 view reads r, g, b, 0) at light
+level 0-31 — the WAD's COLORMAP row ``31 - level`` for palette indices, ``rgb * (level +
+1) / 32`` rounded for the others (SPEC §4b) — and row 32 is the texel's own colour
+(``light=False``).  A frame's colour is then ``lut[level, atlas[address]]``.
+
+Textures sit in ``atlas`` column-major, like ``Picture.pixels``: texel ``(u, t)`` of texture
+``i`` is ``atlas[base[i] + u*height[i] + t]``.  A flat is 64 × 64 with ``u`` its world x and
+``t`` its world -y.  A surface whose texture no resource holds is drawn in its colour: a
+1 × 1 texture for wall parts, a 64 × 64 block for planes.
+
+Per side key (``2*seg + back``) and part (0 upper, 1 middle, 2 lower) ``key_texture`` names
+the texture (-1: none: the part shows the plane behind it), with where the side's texture
+starts (S: v1 seen from the front, v2 from behind) and runs, its offsets and pegging.
+"""
+from __future__ import annotations
+
+import weakref
+
+import numpy as np
+
+from ..resources import ResourceSet
+from .shading import LIGHT_LEVELS
+
+__all__ = ["LevelTextures", "UNLIT", "FLAT_SIDE", "side_geometry", "level_textures",
+           "level_resources"]
+
+UNLIT = LIGHT_LEVELS          # lut row of a texel's own colour
+FLAT_SIDE = 64
+PARTS = ("upper", "middle", "lower")
+
+
+def _packed(rgb) -> np.ndarray:
+    rgb = np.asarray(rgb, dtype=np.uint32)
+    return (rgb[..., 0] | (rgb[..., 1] << 8) | (rgb[..., 2] << 16)).astype("<u4")
+
+
+def _hex(color: str):
+    return int(color[1:3], 16), int(color[3:5], 16), int(color[5:7], 16)
+
+
+def side_geometry(tables, level):
+    """Per side key: ``start`` (S, (keys, 2)), unit ``direction`` along the wall from S,
+    the side's ``x_offset``, ``y_offset`` (0 without a side) and ``has_side``."""
+    ends = level.segments().astype(np.float64)[tables.key_wall]
+    back = (np.arange(len(tables.key_wall)) & 1).astype(bool)
+    start = np.where(back[:, None], ends[:, 2:], ends[:, :2])
+    other = np.where(back[:, None], ends[:, :2], ends[:, 2:])
+    along = other - start
+    direction = along / np.maximum(np.hypot(along[:, 0], along[:, 1]), 1e-12)[:, None]
+    sides = [(w.front_side, w.back_side) for w in level.walls]
+    side = [sides[wall][b] for wall, b in zip(tables.key_wall.tolist(), back.tolist())]
+    x_offset = np.array([0 if s is None else s.x_offset for s in side], dtype=np.float64)
+    y_offset = np.array([0 if s is None else s.y_offset for s in side], dtype=np.float64)
+    has_side = np.array([s is not None for s in side], dtype=bool)
+    return start, direction, x_offset, y_offset, has_side
+
+
+class _Packer:
+    """Collects pictures and colours into colour indices and an atlas."""
+
+    def __init__(self, palette, colormap):
+        self.palette, self.colormap = palette, colormap
+        self.first_rgb = 0 if palette is None else 256
+        self.rgb: dict[int, int] = {}               # packed rgb -> colour index
+        self.pieces, self.size = [], 0
+        self.base, self.width, self.height = [], [], []
+
+    def rgb_indices(self, packed: np.ndarray) -> np.ndarray:
+        uniq, inverse = np.unique(packed, return_inverse=True)
+        index = np.array([self.rgb.setdefault(int(p), self.first_rgb + len(self.rgb))
+                          for p in uniq.tolist()], dtype=np.int64)
+        return index[inverse.reshape(packed.shape)]
+
+    def add(self, texels: np.ndarray) -> int:
+        """A texture of colour indices ``(width, height)``; returns its id."""
+        self.base.append(self.size)
+        self.width.append(texels.shape[0])
+        self.height.append(texels.shape[1])
+        self.pieces.append(texels.reshape(-1))
+        self.size += texels.size
+        return len(self.base) - 1
+
+    def add_picture(self, picture) -> int:
+        if picture.paletted:
+            return self.add(picture.pixels.astype(np.int64))
+        return self.add(self.rgb_indices(_packed(picture.pixels)))
+
+    def add_colour(self, color: str, side: int = 1) -> int:
+        index = self.rgb_indices(_packed(np.array(_hex(color))))
+        return self.add(np.full((side, side), index, dtype=np.int64))
+
+    def lut(self) -> np.ndarray:
+        """``(33, colours)`` packed rgb (see the module doc)."""
+        levels = np.arange(LIGHT_LEVELS, dtype=np.float64)
+        rgb = np.array(sorted(self.rgb, key=self.rgb.get), dtype=np.uint32)
+        rgb = np.stack([rgb & 255, (rgb >> 8) & 255, (rgb >> 16) & 255], axis=-1)
+        scaled = np.rint(rgb[None] * ((levels + 1.0) / LIGHT_LEVELS)[:, None, None])
+        rows = np.concatenate([_packed(scaled.astype(np.uint32)), _packed(rgb)[None]])
+        if self.palette is None:
+            return rows
+        palette = self.palette.astype(np.uint32)
+        if self.colormap is not None and len(self.colormap) >= LIGHT_LEVELS:
+            lit = palette[self.colormap[LIGHT_LEVELS - 1 - np.arange(LIGHT_LEVELS)]]
+        else:
+            lit = np.rint(palette[None] * ((levels + 1.0) / LIGHT_LEVELS)[:, None, None])
+        wad = np.concatenate([_packed(lit.astype(np.uint32)), _packed(palette)[None]])
+        return np.concatenate([wad, rows], axis=1)
+
+    def atlas(self) -> np.ndarray:
+        n_colours = self.first_rgb + len(self.rgb)
+        dtype = np.uint16 if n_colours <= 1 << 16 else np.int32
+        return np.concatenate(self.pieces).astype(dtype) if self.pieces else np.zeros(1, dtype)
+
+
+class LevelTextures:
+    """The textures of one tree's level, as the world names them now (``texture_version``)."""
+
+    def __init__(self, tables, state, resources):
+        level = state.tree.level
+        self.texture_version = state.texture_version
+        self.packer = packer = _Packer(resources.palette, resources.colormap)
+        walls: dict = {}
+        flats: dict = {}
+
+        def wall_texture(name):
+            if name not in walls:
+                picture = resources.wall(name)
+                walls[name] = -1 if picture is None else packer.add_picture(picture)
+            return walls[name]
+
+        self._key_textures(tables, state, wall_texture)
+        self.black = packer.add_colour("#000000")
+        self.wall_colour = np.array([[packer.add_colour(c) for c in (
+            w.drawn_upper_color, w.color, w.drawn_lower_color)] for w in level.walls],
+            dtype=np.int64).reshape(-1, 3)
+        plane = np.full((len(level.sectors), 2), -1, dtype=np.int64)
+        for s, sector in enumerate(level.sectors):
+            names = (state.floor_texture(s), sector.ceiling_texture)
+            colours = (sector.floor_color, sector.ceiling_color)
+            for k in (0, 1):
+                name = names[k]
+                if name is not None and name not in flats:
+                    picture = resources.flat(name)
+                    flats[name] = -1 if picture is None else packer.add_picture(picture)
+                found = -1 if name is None else flats[name]
+                plane[s, k] = found if found >= 0 else packer.add_colour(colours[k], FLAT_SIDE)
+        self.plane_texture = plane                       # (sectors, floor/ceiling)
+        sky = resources.sky(level) if hasattr(resources, "sky") else None
+        self.sky = -1 if sky is None else packer.add_picture(sky)
+        self.sky_colour = np.array([packer.add_colour(s.ceiling_color) for s in level.sectors],
+                                   dtype=np.int64)
+        self.atlas = packer.atlas()
+        self.lut = packer.lut()
+        self.n_colours = self.lut.shape[1]
+        self.lut_flat = self.lut.reshape(-1)
+        self.base = np.array(packer.base, dtype=np.int64)
+        self.width = np.array(packer.width, dtype=np.int64)
+        self.height = np.array(packer.height, dtype=np.int64)
+        (self.start, self.direction, self.x_offset, self.y_offset,
+         self.has_side) = side_geometry(tables, level)
+        walls_ = level.walls
+        self.upper_unpegged = np.array([w.upper_unpegged for w in walls_], dtype=bool)
+        self.lower_unpegged = np.array([w.lower_unpegged for w in walls_], dtype=bool)
+
+    def _key_textures(self, tables, state, wall_texture):
+        """``key_texture`` (3, keys): the texture of each part of each side key, -1 none."""
+        n_keys = len(tables.key_wall)
+        found = np.full((3, n_keys), -1, dtype=np.int64)
+        named = np.zeros((3, n_keys), dtype=bool)
+        for key, wall in enumerate(tables.key_wall.tolist()):
+            for p, part in enumerate(PARTS):
+                name = state.wall_texture(wall, key & 1, part)
+                if name is not None:
+                    named[p, key] = True
+                    found[p, key] = wall_texture(name)
+        self.key_texture, self.key_named = found, named
+
+
+_RESOURCES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+
+
+def level_resources(tree):
+    """The level's ``ResourceSet`` (None for a level with no resources), opened once per
+    tree; pictures are decoded when first asked for."""
+    try:
+        return _RESOURCES[tree]
+    except KeyError:
+        found = _RESOURCES[tree] = _open_resources(tree.level)
+        return found
+    except TypeError:                          # an unhashable stand-in: no caching
+        return _open_resources(tree.level)
+
+
+def _open_resources(level):
+    return ResourceSet.from_level(level) if getattr(level, "resources", ()) else None
+
+
+def level_textures(tables, state):
+    """The ``LevelTextures`` of ``state`` (None when its level names no resources), rebuilt
+    when a texture changes (``texture_version``)."""
+    resources = level_resources(state.tree)
+    if resources is None:
+        return None
+    cached = tables.textures.get(state)
+    if cached is None or cached.texture_version != state.texture_version:
+        cached = tables.textures[state] = LevelTextures(tables, state, resources)
+    return cached
