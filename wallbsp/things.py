@@ -37,6 +37,10 @@ __all__ = ["Things", "level_things", "spawned_at", "locate_leaves", "MULTIPLAYER
 
 MULTIPLAYER_ONLY = 16              # THINGS flag bit 4
 _MARKERS = frozenset(PLAYER_STARTS) | {DEATHMATCH_START}
+# how far a sprite may reach from its thing, for culling: most pictures are about two radii
+# wide; a wider one may be cut where its leaf's subtree is out of view, as DOOM's may
+SPRITE_REACH = 2.0
+SPRITE_MARGIN = 16.0
 
 
 def skill_bit(skill: int) -> int:
@@ -64,6 +68,23 @@ class _TreeLines:
         self.front, self.back = np.ascontiguousarray(child[:, 0]), np.ascontiguousarray(child[:, 1])
         self.exact = np.asarray(tree.node_line).reshape(-1, 3).tolist()   # ints for exact_side
         self.leaf_sector = np.asarray(tree.leaf_sector, dtype=np.int64)
+        self._ancestors = None
+
+    @property
+    def ancestors(self) -> np.ndarray:
+        """``(leaves, depth)``: the nodes above each leaf, nearest first, -1 padded."""
+        if self._ancestors is None:
+            parent = np.full(len(self.front) + len(self.leaf_sector), -1, dtype=np.int64)
+            n_nodes = len(self.front)
+            for side in (self.front, self.back):    # a child's slot: node, or n + leaf
+                parent[np.where(side >= 0, side, n_nodes + ~side)] = np.arange(n_nodes)
+            chain = [parent[n_nodes:]]
+            while (chain[-1] >= 0).any():
+                up = chain[-1]
+                chain.append(np.where(up >= 0, parent[np.maximum(up, 0)], -1))
+            self._ancestors = np.stack(chain[:-1], axis=1) if len(chain) > 1 else \
+                np.full((len(self.leaf_sector), 0), -1, dtype=np.int64)
+        return self._ancestors
 
 
 _LINES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
@@ -134,6 +155,7 @@ class Things:
         self.version = 0                 # incremented by every change
         self._infos: dict = {}
         self._grouped = None             # (thing ids by leaf, start of each leaf)
+        self._boxes = None               # (version, subtree_boxes)
 
     def __len__(self) -> int:
         return len(self.x)
@@ -228,6 +250,31 @@ class Things:
             return order[:0]
         offsets = np.cumsum(counts) - counts
         return order[np.arange(total) - np.repeat(offsets - first, counts)]
+
+    def subtree_boxes(self) -> np.ndarray:
+        """The tree's ``node_bbox`` (the box of a subtree's segs) grown to hold the drawn
+        things of the subtree with their sprites' reach (``SPRITE_REACH``), so a view walk
+        that culls subtrees by box never skips a leaf whose things it could see: a leaf's
+        open floor often reaches far beyond the segs of its subtree.  Made once per
+        ``version``."""
+        if self._boxes is not None and self._boxes[0] == self.version:
+            return self._boxes[1]
+        boxes = np.array(self.tree.node_bbox, dtype=np.float64).reshape(-1, 4)
+        linked = np.flatnonzero(self.alive & self.drawn)
+        if linked.size and len(boxes):
+            above = _tree_lines(self.tree).ancestors[self.leaf[linked]]
+            thing, depth = np.nonzero(above >= 0)
+            node, thing = above[thing, depth], linked[thing]
+            reach = SPRITE_REACH * self.radius[thing] + SPRITE_MARGIN
+            x, y = self.x[thing], self.y[thing]
+            columns = [boxes[:, k].copy() for k in range(4)]
+            np.minimum.at(columns[0], node, x - reach)
+            np.minimum.at(columns[1], node, y - reach)
+            np.maximum.at(columns[2], node, x + reach)
+            np.maximum.at(columns[3], node, y + reach)
+            boxes = np.stack(columns, axis=1)
+        self._boxes = (self.version, boxes)
+        return boxes
 
     def overlapping(self, x, y, radius, flags) -> np.ndarray:
         """Alive things with any of DOOM's mobj ``flags`` (``thingtypes.SOLID``, ``SPECIAL``)

@@ -23,6 +23,7 @@ from ..world import state_of
 from .fill import drawsegs, fill_flat
 from .frame import Frame, save_ids
 from .layers import RunLayers
+from .overlay import draw_overlay, walk_boxes
 from .painter import fill_back_to_front, walk_back_to_front
 from .rows import Entries
 from .tables import height_tables, tree_tables
@@ -65,7 +66,7 @@ def render(source, camera: Camera, width: int, height: int, order: str = "front_
     heights = height_tables(tables, state)
     tex = level_textures(tables, state) if textures else None
     if order == "front_to_back":
-        walk = walk_front_to_back(tables, heights.key_solid, view)
+        walk = walk_front_to_back(tables, heights.key_solid, view, walk_boxes(state))
         e = Entries(tables, heights, view, walk.pieces)
         if tex is None:
             colour, runs, windows, written = fill_flat(tables, state, view, e, light)
@@ -73,6 +74,7 @@ def render(source, camera: Camera, width: int, height: int, order: str = "front_
             colour, runs, windows, written = fill_textured(tables, tex, heights, state, view,
                                                            e, light)
         layers = _FrontToBackLayers(view, heights, tables, e, runs, windows)
+        front = (walk, e, windows)
     else:
         walk = walk_back_to_front(tables, view)
         e = Entries(tables, heights, view, walk.pieces)
@@ -82,5 +84,8 @@ def render(source, camera: Camera, width: int, height: int, order: str = "front_
             colour, runs, pixel_run, written = paint_textured(tables, tex, heights, state, view,
                                                               e, light)
         layers = RunLayers(view, heights, tables, e, runs, pixel_run=pixel_run)
+        front = None                     # the things are clipped by a front-to-back walk
     walk.stats["pixels_written"] = written
+    # sprites and masked middle textures, far to near, over the finished frame
+    layers = draw_overlay(view, state, tables, heights, colour, layers, walk.stats, light, front)
     return Frame(view.width, view.height, colour, walk.stats, layers, walk.leaves)

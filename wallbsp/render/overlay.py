@@ -10,48 +10,88 @@ pixels written over them (``OverlayLayers``).
 """
 from __future__ import annotations
 
+import weakref
+
 import numpy as np
 
+from ..resources import ResourceSet
 from .atlas import atlas_for
 from .clipping import ClipWindows, Slices
+from .fill import drawsegs, front_to_back_runs
 from .masked import masked_slices
+from .rows import Entries
 from .sprites import sprite_slices
+from .walk import walk_front_to_back
 
-__all__ = ["Overlay", "OverlayLayers", "draw_masked", "composite"]
+__all__ = ["Overlay", "OverlayLayers", "draw_masked", "draw_overlay", "composite", "walk_boxes",
+           "level_resources"]
 
 
 class Overlay:
     """Pixels the masked pass wrote: flat column-major ``pixel`` numbers (``col * H +
-    row``) with their ``kind``, ``index`` and ``depth``."""
+    row``) and the slice each shows (``which``); ``kind``, ``index`` and ``depth`` per
+    pixel are read from the slices when asked for."""
 
-    def __init__(self, pixel, kind, index, depth):
-        self.pixel, self.kind, self.index, self.depth = pixel, kind, index, depth
+    def __init__(self, pixel, which, slices):
+        self.pixel, self.which, self.slices = pixel, which, slices
+
+    @property
+    def kind(self):
+        return self.slices.kind[self.which]
+
+    @property
+    def index(self):
+        return self.slices.index[self.which]
+
+    @property
+    def depth(self):
+        return self.slices.depth[self.which].astype(np.float32)
 
 
 def composite(slices: Slices, atlas, colour_columns, height) -> Overlay:
     """Draw ``slices`` into ``colour_columns`` (``width × height × 3`` uint8) and return
-    the pixels written; the nearest opaque texel of each pixel wins."""
+    the pixels written; the nearest opaque texel of each pixel wins.  Per-slice numbers are
+    made first, so each pixel costs a handful of gathers."""
     counts = slices.bottom - slices.top
-    total = int(counts.sum())
     texels, opaque, offset, _, tex_height, _, _, paletted = atlas.arrays()
+    last_row = tex_height[slices.slot] - 1
+    base = offset[slices.slot] + slices.tx * (last_row + 1)
+    first_pixel = slices.col * height
     # one entry per pixel, slices in their order
     which = np.repeat(np.arange(len(counts)), counts)
-    row = np.arange(total, dtype=np.int64) - np.repeat(np.cumsum(counts) - counts
-                                                       - slices.top, counts)
-    slot = slices.slot[which]
-    ty = np.floor(slices.t0[which] + row * slices.tstep[which]).astype(np.int64)
-    ty = np.clip(ty, 0, tex_height[slot] - 1)       # a hair outside by rounding
-    texel = offset[slot] + slices.tx[which] * tex_height[slot] + ty
-    solid = opaque[texel]
-    which, row, slot, texel = which[solid], row[solid], slot[solid], texel[solid]
-    pixel = slices.col[which] * height + row
-    nearest = _nearest(pixel, which, slices.depth, colour_columns.shape[0] * height)
-    which, pixel, slot, texel = which[nearest], pixel[nearest], slot[nearest], texel[nearest]
-    packed = atlas.colours(texels[texel], paletted[slot], slices.level[which])
+    row = np.arange(len(which), dtype=np.int64) - (np.cumsum(counts) - counts - slices.top)[which]
+    ty = (slices.t0[which] + row * slices.tstep[which]).astype(np.int64)   # >= 0: trunc = floor
+    texel = base[which] + np.minimum(ty, last_row[which])                    # rounding at the foot
+    keep = opaque[texel]
+    pixel = first_pixel[which] + row
+    if _overlapping(slices, height):                        # among the opaque texels
+        solid = np.flatnonzero(keep)
+        keep[solid] = _nearest(pixel[solid], which[solid], slices.depth,
+                               colour_columns.shape[0] * height)
+    which, pixel, texel = which[keep], pixel[keep], texels[texel[keep]]
+    packed = _lit(atlas, paletted[slices.slot], slices.level, which, texel)
     flat = colour_columns.reshape(-1, 3)
     flat[pixel] = packed.view(np.uint8).reshape(-1, 4)[:, :3]
-    return Overlay(pixel, slices.kind[which], slices.index[which],
-                   slices.depth[which].astype(np.float32))
+    return Overlay(pixel, which, slices)
+
+
+def _lit(atlas, paletted, level, which, texel):
+    """Packed colours of the texels at their slices' light levels."""
+    if paletted.all():                                      # a WAD's pictures only
+        return atlas.lit_palette[level[which], texel]
+    return atlas.colours(texel, paletted[which], level[which])
+
+
+def _overlapping(slices, height) -> bool:
+    """Whether two slices share a pixel: sorted by column and top row, a slice overlaps
+    when it starts above the lowest bottom of the column's earlier slices."""
+    if len(slices.col) < 2:
+        return False
+    order = np.lexsort((slices.top, slices.col))
+    col, top, bottom = slices.col[order], slices.top[order], slices.bottom[order]
+    span = height + 1
+    lowest = np.maximum.accumulate(col * span + bottom)[:-1] - col[1:] * span
+    return bool((top[1:] < lowest).any())
 
 
 def _nearest(pixel, which, slice_depth, n_pixels):
@@ -106,7 +146,61 @@ def draw_masked(view, state, tables, walk, entries, drawsegs, colour_columns, re
         stats["masked_columns"] = len(walls)
         parts.append(walls)
     if not parts or not sum(len(p) for p in parts):
-        return Overlay(*(np.zeros(0, dtype=t) for t in (np.int64, np.uint8, np.int32,
-                                                          np.float32))), stats
+        return _NOTHING, stats
     overlay = composite(Slices.join(parts), atlas, colour_columns, view.height)
     return overlay, stats
+
+
+_NOTHING = Overlay(np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64), None)
+_BOXES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+_RESOURCES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+
+
+def walk_boxes(state):
+    """Node boxes for the front-to-back walk grown to hold the drawn things
+    (``Things.subtree_boxes``), as the walk's Python lists; None when no thing is drawn."""
+    things = state.things
+    cached = _BOXES.get(things)
+    if cached is None or cached[0] != things.version:
+        drawn = bool((things.alive & things.drawn).any())
+        cached = _BOXES[things] = (things.version,
+                                   things.subtree_boxes().tolist() if drawn else None)
+    return cached[1]
+
+
+def level_resources(tree):
+    """The level's ``ResourceSet`` (None for a level with no resources), opened once per
+    tree."""
+    if tree in _RESOURCES:
+        return _RESOURCES[tree]
+    found = _open_resources(tree.level)
+    try:
+        _RESOURCES[tree] = found
+    except TypeError:                          # a stand-in without weak references
+        pass
+    return found
+
+
+def _open_resources(level):
+    return ResourceSet.from_level(level) if level.resources else None
+
+
+def draw_overlay(view, state, tables, heights, colour_columns, layers, stats, light=True,
+                 front=None, resources=None):
+    """The masked pass of a frame: ``front`` is the front-to-back ``(walk, entries,
+    windows)`` (the painter passes None, and a front-to-back walk is made for the windows
+    it clips against); ``resources`` default to the level's.  Adds the pass's counts to
+    ``stats`` and returns the frame's layers (the overlay written over ``layers``)."""
+    if front is None:
+        walk = walk_front_to_back(tables, heights.key_solid, view, walk_boxes(state))
+        entries = Entries(tables, heights, view, walk.pieces)
+        zeros = np.zeros(len(entries.col), dtype=np.int64)
+        windows = front_to_back_runs(tables, view, entries, (zeros, zeros))[1]
+    else:
+        walk, entries, windows = front
+    if resources is None:
+        resources = level_resources(state.tree)
+    overlay, counts = draw_masked(view, state, tables, walk, entries,
+                                  drawsegs(entries, windows), colour_columns, resources, light)
+    stats.update(counts)
+    return OverlayLayers(layers, overlay) if len(overlay.pixel) else layers

@@ -33,11 +33,12 @@ class Walk:
     leaves: list = field(default_factory=list)
 
 
-def walk_front_to_back(tables, solid, view) -> Walk:
+def walk_front_to_back(tables, solid, view, boxes=None) -> Walk:
     """Near subtree, node segs, far subtree; every subtree's box is checked when it is
     reached, against the columns closed so far.  Stack items: a node ``n`` (>= 0), a leaf
     to enter ``n_nodes + leaf``, or a node's segs ``~(2*node + eye_behind)``."""
-    lines, kids, boxes = tables.node_lines, tables.node_kids, tables.node_boxes
+    lines, kids = tables.node_lines, tables.node_kids
+    boxes = tables.node_boxes if boxes is None else boxes    # the things' grown boxes
     seg_ranges, inside, n_nodes = tables.node_segs, tables.leaf_inside, tables.node_count
     ends, flips, one_sided = tables.seg_ends, tables.seg_flip, tables.seg_one_sided
     project, box_columns = make_projector(view), make_box_check(view)
