@@ -77,7 +77,7 @@ def vertex_table(ends: np.ndarray):
     """Distinct wall ends (sorted by x, then y) and each wall's v1, v2 indices into them."""
     points = ends.reshape(-1, 2)
     # one int64 key per point: a 1-D unique is much faster than unique(axis=0)
-    keys = (points[:, 0] << 32) + points[:, 1]
+    keys = (points[:, 0].astype(np.int64) << 32) + points[:, 1]
     unique, first, inverse = np.unique(keys, return_index=True, return_inverse=True)
     vertices = list(zip(points[first, 0].tolist(), points[first, 1].tolist()))
     inverse = inverse.reshape(-1, 2)
@@ -105,38 +105,40 @@ def bevel_corners(walls: GridWalls, bevelled: np.ndarray, size: int) -> GridWall
     right (walls run with their sector on the right, so that is a convex corner), each
     at least three times ``size`` long: both are shortened by ``size`` and a wall joins
     the new ends.  The new ends lie inside the old walls, where no other wall ends."""
-    ends = walls.ends.copy()
-    at = {}
-    for i, (x1, y1, x2, y2) in enumerate(ends.tolist()):
-        at.setdefault((x1, y1), []).append((i, 0))
-        at.setdefault((x2, y2), []).append((i, 1))
-    added = []
-    for point, touching in at.items():
-        corner = _convex_corner(ends, walls, bevelled, touching, size)
-        if corner is None:
+    old = walls.ends
+    starts, stops = _point_keys(old[:, :2]), _point_keys(old[:, 2:])
+    keys, counts = np.unique(np.concatenate([starts, stops]), return_counts=True)
+    candidates = np.flatnonzero((walls.back == SOLID) & bevelled[walls.front]).tolist()
+    starting_at = {starts[b]: b for b in candidates}
+    ends, added, fronts = old.copy(), [], []
+    for a in candidates:
+        b = starting_at.get(stops[a])
+        if b is None or counts[np.searchsorted(keys, stops[a])] != 2:
             continue
-        a, b, da, db = corner
-        ends[a, 2:] = (point[0] - size * da[0], point[1] - size * da[1])
-        ends[b, :2] = (point[0] + size * db[0], point[1] + size * db[1])
-        added.append((list(ends[a, 2:]) + list(ends[b, :2]), walls.front[a]))
+        turn = _convex_turn(old[a], old[b], size)
+        if turn is None or walls.front[a] != walls.front[b]:
+            continue
+        ends[a, 2:] = old[a, 2:] - size * turn[0]
+        ends[b, :2] = old[b, :2] + size * turn[1]
+        added.append(np.concatenate([ends[a, 2:], ends[b, :2]]))
+        fronts.append(walls.front[a])
     if not added:
-        return GridWalls(ends, walls.front, walls.back)
-    new_ends = np.array([e for e, _ in added], dtype=ends.dtype)
-    new_front = np.array([f for _, f in added], dtype=walls.front.dtype)
-    return GridWalls(np.concatenate([ends, new_ends]), np.concatenate([walls.front, new_front]),
+        return walls
+    return GridWalls(np.concatenate([ends, np.array(added, dtype=ends.dtype)]),
+                     np.concatenate([walls.front, np.array(fronts, dtype=walls.front.dtype)]),
                      np.concatenate([walls.back, np.full(len(added), SOLID, walls.back.dtype)]))
 
 
-def _convex_corner(ends, walls, bevelled, touching, size):
-    """(wall ending here, wall starting here, their unit directions) or None."""
-    if len(touching) != 2 or {end for _, end in touching} != {0, 1}:
-        return None
-    (a, _), (b, _) = sorted(touching, key=lambda t: -t[1])     # a ends here, b starts
-    if (walls.back[a] != SOLID or walls.back[b] != SOLID or walls.front[a] != walls.front[b]
-            or not bevelled[walls.front[a]]):
-        return None
-    da, db = ends[a, 2:] - ends[a, :2], ends[b, 2:] - ends[b, :2]
-    la, lb = np.abs(da).sum(), np.abs(db).sum()      # axis-aligned: the length
+def _point_keys(points: np.ndarray) -> list[int]:
+    """One integer per map point (coordinates here are 0..2**31)."""
+    return ((points[:, 0].astype(np.int64) << 32) + points[:, 1]).tolist()
+
+
+def _convex_turn(a: np.ndarray, b: np.ndarray, size: int):
+    """The unit directions of axis-aligned walls a and b (b starting where a ends) when a
+    turns right into b and both are at least 3 * size long; else None."""
+    da, db = a[2:] - a[:2], b[2:] - b[:2]
+    la, lb = np.abs(da).sum(), np.abs(db).sum()
     if da[0] * db[1] - da[1] * db[0] >= 0 or min(la, lb) < 3 * size:
         return None
-    return a, b, da // la, db // lb
+    return da // la, db // lb
