@@ -114,11 +114,12 @@ def _level(plan: Plan, name: str, start, placed, exits) -> Level:
     front_x, back_x = texture_offsets(found.ends)
     sides = _SideCache()
     walls = []
-    for i, (x1, y1, x2, y2) in enumerate(found.ends.tolist()):
-        f, b = int(found.front[i]), int(found.back[i])
+    # plain lists: reading numpy scalars one by one costs more than the walls themselves
+    rows = zip(found.ends.tolist(), found.front.tolist(), found.back.tolist(), v1.tolist(),
+               v2.tolist(), front_x.tolist(), back_x.tolist())
+    for (x1, y1, x2, y2), f, b, a, z, fx, bx in rows:
         is_exit = ((x1, y1), (x2, y2)) in exit_set
-        walls.append(_wall(plan, sides, (int(v1[i]), int(v2[i])), f, None if b == SOLID else b,
-                           (int(front_x[i]), int(back_x[i])), is_exit))
+        walls.append(_wall(plan, sides, (a, z), f, None if b == SOLID else b, (fx, bx), is_exit))
     sectors = [_sector(s) for s in plan.sectors]
     things = tuple(Thing(*tile_centre(p.x, p.y), p.angle, p.type) for p in placed)
     return Level(name, vertices, sectors, walls, Start(*start), version=2,
