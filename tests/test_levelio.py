@@ -13,7 +13,8 @@ from hypothesis import strategies as st
 from conftest import DELETE, edited
 from levelcases import LIMIT, SOURCE, level_with_walls, only_warnings, square_room
 from wallbsp.level import Level, LevelError, Sector, Start, Wall
-from wallbsp.levelio import MAX_REPORTED, dumps_level, level_from_dict, load_level
+from wallbsp.levelio import (MAX_REPORTED, content_hash, dumps_level, level_from_dict, load_level,
+                             save_level)
 
 
 # ---------------------------------------------------------------------------------------
@@ -233,7 +234,7 @@ def test_a_level_round_trips_unchanged(data):
     again = level_from_dict(json.loads(text))
     assert again == level
     assert dumps_level(again) == text
-    assert again.content_hash() == level.content_hash()
+    assert content_hash(again) == content_hash(level)
 
 
 @settings(max_examples=15, deadline=None,
@@ -243,7 +244,7 @@ def test_loading_then_saving_gives_equivalent_data(tmp_path, data):
     path = tmp_path / "level.json"
     path.write_text(json.dumps(data))
     level = load_level(path)
-    level.save(path)
+    save_level(level, path)
     saved = json.loads(path.read_text())
     assert level_from_dict(saved, source=str(path)) == level
     for key in ("format", "version", "vertices"):
@@ -255,7 +256,7 @@ def test_saving_writes_defaults_explicitly(tmp_path):
     data = square_room(sectors=[{"floor": 0, "ceiling": 128}])
     del data["start"]
     path = tmp_path / "room.json"
-    level_from_dict(data, source=str(path)).save(path)
+    save_level(level_from_dict(data, source=str(path)), path)
     saved = json.loads(path.read_text())
     assert saved["name"] == "Square"
     assert saved["sectors"] == [{"floor": 0, "ceiling": 128, "light": 160,
@@ -283,10 +284,10 @@ def test_equal_levels_have_equal_hashes_and_a_change_changes_the_hash():
     level = level_from_dict(square_room())
     same = Level(level.name, list(level.vertices), list(level.sectors), list(level.walls),
                  Start(256.0, 256.0, 90.0), source="elsewhere.json", warnings=["w"])
-    assert same == level and same.content_hash() == level.content_hash()
-    assert len(level.content_hash()) == 64
+    assert same == level and content_hash(same) == content_hash(level)
+    assert len(content_hash(level)) == 64
     moved = level_from_dict(edited(square_room(), ("vertices", 2), [512, 511]))
-    assert moved.content_hash() != level.content_hash()
+    assert content_hash(moved) != content_hash(level)
 
 
 def test_save_replaces_the_file_atomically(tmp_path, monkeypatch):
@@ -298,7 +299,7 @@ def test_save_replaces_the_file_atomically(tmp_path, monkeypatch):
         raise OSError(28, "No space left on device")
     monkeypatch.setattr(os, "replace", broken_replace)
     with pytest.raises(OSError, match="No space left on device"):
-        level.save(path)
+        save_level(level, path)
     assert path.read_text() == "old contents"
     assert os.listdir(tmp_path) == ["room.json"]
 
@@ -307,7 +308,7 @@ def test_saving_an_invalid_level_writes_nothing(tmp_path):
     path = tmp_path / "bad.json"
     level = Level("bad", [(0, 0), (0, 0)], [Sector(0, 128)], [Wall(0, 1, 0)], Start(0, 0))
     with pytest.raises(LevelError, match=r"bad\.json: walls\[0\]: zero-length"):
-        level.save(path)
+        save_level(level, path)
     assert os.listdir(tmp_path) == []
 
 
@@ -315,7 +316,7 @@ def test_save_keeps_the_permissions_of_the_file_it_replaces(tmp_path):
     path = tmp_path / "room.json"
     path.write_text("{}")
     path.chmod(0o640)
-    level_from_dict(square_room()).save(path)
+    save_level(level_from_dict(square_room()), path)
     assert path.stat().st_mode & 0o777 == 0o640
     assert load_level(path) == level_from_dict(square_room())
 

@@ -16,7 +16,7 @@ import time
 
 from wallbsp import compile_level
 from wallbsp.generate import generate_level, reachable_sectors
-from wallbsp.levelio import level_from_dict
+from wallbsp.levelio import level_from_dict, level_to_dict
 
 
 def check_seed(seed: int, goal: str) -> tuple[float, float, float, int]:
@@ -28,7 +28,7 @@ def check_seed(seed: int, goal: str) -> tuple[float, float, float, int]:
     tree = compile_level(made.level)
     t2, c2 = time.perf_counter(), time.process_time()
     level = made.level
-    level_from_dict(level.to_dict(), source=f"seed {seed}", strict=True)
+    level_from_dict(level_to_dict(level), source=f"seed {seed}", strict=True)
     if made.goal_sector not in reachable_sectors(level, made.start_sector):
         raise AssertionError(f"seed {seed}: the goal is not reachable from the start")
     tree.validate()

@@ -18,6 +18,7 @@ from pathlib import Path
 
 from wallbsp.generate import DEFAULT_WALLS, GOALS, generate_level
 from wallbsp.generate.themes import TEXTURE_DIR
+from wallbsp.levelio import save_level
 
 
 def main(argv=None) -> int:
@@ -31,7 +32,7 @@ def main(argv=None) -> int:
     folder = args.output.resolve().parent
     level = dataclasses.replace(made.level, resources=(os.path.relpath(TEXTURE_DIR, folder),),
                                 source_dir=folder)
-    level.save(args.output)
+    save_level(level, args.output)
     print(json.dumps({"output": str(args.output), "walls": len(level.walls),
                       "start_sector": made.start_sector, "goal_sector": made.goal_sector,
                       "goal_walls": list(made.goal_walls), "target": made.target}))

@@ -17,7 +17,7 @@ from pathlib import Path
 
 from wallbsp.generate.generator import THING_TYPES
 from wallbsp.generate.themes import PLANT_TYPE, SKY_FLAT, SKY_TEXTURE
-from wallbsp.levelio import level_from_dict
+from wallbsp.levelio import level_from_dict, save_level
 
 ROOT = Path(__file__).resolve().parent.parent
 LAMP, BARREL, MEDIKIT, STIMPACK, RED_CARD, DOOR_SPECIAL = 2028, 2035, 2012, 2011, 13, 1
@@ -97,7 +97,7 @@ def main() -> int:
     for spec in (SMALL, MULTI):
         target = ROOT / spec["target"]
         level = level_from_dict(textured(spec), source=str(target))
-        level.save(target)
+        save_level(level, target)
         print(f"{spec['target']}: {len(level.walls)} walls, {len(level.things)} things, "
               f"{len(level.warnings)} warnings", file=sys.stderr)
     return 0

@@ -249,12 +249,12 @@ def cmd_walk(args):
 
 
 def cmd_import_wad(args):
-    from . import wad
+    from . import levelio, wad
     check_outputs("import-wad", [args.output], [args.wad])
     level = wad.load_wad_level(args.wad, args.map, strict=args.strict)
     for warning in level.warnings:
         print(f"warning: {warning}", file=sys.stderr)
-    level.save(args.output)
+    levelio.save_level(level, args.output)
     print(f"{args.output}: {len(level.walls)} walls, {len(level.sectors)} sectors")
 
 

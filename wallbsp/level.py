@@ -3,7 +3,7 @@
 Reading, validating and writing the JSON file are in ``levelio``; the exact search for
 crossing, overlapping and duplicate walls is in ``conflicts``.  Equality (``==``) is about
 content: ``source``, ``warnings`` and ``source_dir`` are where a level came from, not what
-it is, and are not compared (nor hashed by ``Level.content_hash``).
+it is, and are not compared (nor hashed by ``levelio.content_hash``).
 
 A ``Level`` holds lists (``vertices``, ``sectors``, ``walls``) for speed and for the
 callers that build levels in code; frozen means the fields are never reassigned, so treat
@@ -13,7 +13,6 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 from pathlib import Path
-from typing import Any
 
 import numpy as np
 
@@ -138,20 +137,3 @@ class Level:
         folder for a level that did not come from a file)."""
         base = self.source_dir if self.source_dir is not None else Path()
         return tuple(base / r for r in self.resources)
-
-    # The file format lives in levelio, which builds Levels; importing it here, when the
-    # method runs, keeps the model free of it (see levelio for what these do).
-    def to_dict(self) -> dict[str, Any]:
-        """The level as the JSON object that ``save`` writes."""
-        from . import levelio
-        return levelio.level_to_dict(self)
-
-    def content_hash(self) -> str:
-        """sha256 (hex) of the canonical JSON: equal levels have equal hashes."""
-        from . import levelio
-        return levelio.content_hash(self)
-
-    def save(self, path) -> None:
-        """Validate, then write atomically (``LevelError`` or ``OSError`` naming ``path``)."""
-        from . import levelio
-        levelio.save_level(self, path)

@@ -35,6 +35,7 @@ import numpy as np
 
 from .geometry import exact_side, side_tolerance
 from .level import Level
+from .levelio import content_hash
 from .treecheck import validate as validate_tree
 from .treefile import ARRAY_LAYOUT, TreeError, read_tree_file, write_tree_file
 
@@ -80,7 +81,7 @@ class BSPTree:
             "split_ratio": round(self.seg_count / walls, 4) if walls else None,
             "sides": sides, "seg_sides": seg_sides,
             "side_split_ratio": round(seg_sides / sides, 4) if sides else None,
-            "level_sha256": self.level.content_hash(),
+            "level_sha256": content_hash(self.level),
         }
 
     # -- exact seg geometry ----------------------------------------------------------

@@ -32,7 +32,7 @@ import numpy as np
 
 from .files import InputError, open_regular, write_atomically
 from .level import Level, LevelError
-from .levelio import dumps_level, level_from_dict, parse_json
+from .levelio import content_hash, dumps_level, level_from_dict, parse_json
 
 TREE_FORMAT = "wallbsp-tree"
 TREE_VERSION = 1
@@ -78,7 +78,7 @@ class TreeFile:
 def write_tree_file(path, level: Level, arrays: dict, candidates, seed) -> None:
     """Write the tree atomically; the same tree always gives the same bytes."""
     header = {"format": TREE_FORMAT, "version": TREE_VERSION,
-              "level_sha256": level.content_hash(), "candidates": candidates, "seed": seed}
+              "level_sha256": content_hash(level), "candidates": candidates, "seed": seed}
     members = {"header.json": json.dumps(header, sort_keys=True).encode(),
                "level.json": dumps_level(level).encode()}
     for name in ARRAY_LAYOUT:
@@ -200,7 +200,7 @@ def _read_level(path, zf, info, digest) -> Level:
         raise TreeError(str(err)) from None
     # the writer stores the level as dumps_level gives it, whose sha256 is the level's
     # hash: hashing the stored bytes spares serialising the level again
-    if hashlib.sha256(raw).hexdigest() != digest and level.content_hash() != digest:
+    if hashlib.sha256(raw).hexdigest() != digest and content_hash(level) != digest:
         raise TreeError(f"{path}: the embedded level does not match the tree's level hash")
     return level
 
