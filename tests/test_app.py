@@ -82,7 +82,7 @@ def test_strafing_right_moves_along_the_right_vector(walk):
     walk.held = {pygame.K_d}
     a = math.radians(walk.player.angle)
     x, y = walk.player.x, walk.player.y
-    app.update_player(walk, DT)
+    app.run_tics(walk, DT)
     moved = (walk.player.x - x, walk.player.y - y)
     length = math.hypot(*moved)
     assert length > 0
@@ -94,7 +94,7 @@ def test_tics_run_at_35_a_second_whatever_the_frame_rate(tree):
         state = app.Walkthrough.at_start(tree, (160, 100), (320, 200))
         state.held = set(keys)
         for _ in range(count):
-            app.update_player(state, dt)
+            app.run_tics(state, dt)
         start = tree.level.start
         return math.hypot(state.player.x - start.x, state.player.y - start.y)
 

@@ -14,7 +14,8 @@ from .levelio import load_level
 from .camera import Camera
 from .render import Frame, render
 from .tree import BSPTree, TreeError, load_tree
+from .game.world import World
 
 __all__ = ["BSPTree", "Camera", "DEFAULT_CANDIDATES", "Frame", "Level", "LevelError",
-           "TreeError", "compile_level", "load_level", "load_tree", "render"]
+           "TreeError", "World", "compile_level", "load_level", "load_tree", "render"]
 __version__ = "0.1.0"

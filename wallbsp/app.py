@@ -1,54 +1,56 @@
 """The pygame walkthrough (SPEC §6 ``wallbsp walk``): the window around the game.
 
 The only module that opens pygame's display, and only when a walkthrough starts: importing
-it loads no pygame.  It initialises the display and fonts only, never audio.  What the player
-does is ``game.player`` (pure code, tic by tic); this module turns events into the player's
-inputs and draws the view and the HUD.  One frame: ``handle_events`` -> ``update_player``
-(the tics due, 35 a second, each with the inputs held now) -> ``draw_frame`` (render at the
-internal resolution, scale into the window, then ``hud.draw_overlays``) -> flip.
-No ``clock.tick`` unless a frame cap (``max_fps``) is asked for.
+it loads no pygame.  It initialises the display and fonts only, never audio.  What happens
+is the game's ``World`` (pure code, tic by tic: the player, doors, lifts, switches, exits);
+this module turns events into its inputs and draws the view and the HUD.  One frame:
+``handle_events`` -> ``run_tics`` (the tics due, 35 a second, each with the inputs held
+now) -> ``draw_frame`` (render at the internal resolution the view between the last two
+tics, by the part of the next tic already elapsed, so motion is smooth at any frame rate;
+scale into the window; ``hud.draw_overlays``) -> flip.  No ``clock.tick`` unless a frame
+cap (``max_fps``) is asked for.  When the level is left the walkthrough says so and starts
+it again, or goes on to the tree that ``next_level(exit)`` gives (a WAD's next map).
 
 Keys: W/S or Up/Down forward/back, A/D strafe, Left/Right or the mouse (grab with M) to turn
 (DOOM's key turning: slow for ``SLOW_TURN_TICS`` tics, then ``TURN_WALK``/``TURN_RUN`` a
-tic), Shift run, Tab automap, O map overlay/full, L partition lines on the map, R or F1
-readout, P front-to-back / painter's, [ ] internal resolution, F or F11 fullscreen, K or F12
-screenshot (``wallbsp-shot-NNN.png`` here), H help line, Esc quit.
+tic), Shift run, E or Space use, Tab automap, O map overlay/full, L partition lines on the
+map, R or F1 readout, P front-to-back / painter's, [ ] internal resolution, F or F11
+fullscreen, K or F12 screenshot (``wallbsp-shot-NNN.png`` here), H help line, Esc quit.
 
-Headless (``frames=N``): N frames with no input, turning ``turn`` degrees after each, under
-SDL's dummy driver when there is no window system.  An interactive walkthrough with no
-display (none, or SDL's ``dummy``/``offscreen`` driver) is a ``NoDisplayError``.  The
-result is a ``Summary``, a dict whose ``str`` is ``frames=N median_ms=... fps=... size=WxH
-order=...``.
+Headless (``frames=N``): N frames with no input, each followed by one tic turning ``turn``
+degrees, under SDL's dummy driver when there is no window system.  An interactive
+walkthrough with no display (none, or SDL's ``dummy``/``offscreen`` driver) is a
+``NoDisplayError``.  With ``demo`` (a ``game.demo.Demo``) the inputs of every tic on the
+first level are recorded into it.  The result is a ``Summary``, a dict whose ``str`` is
+``frames=N median_ms=... fps=... size=WxH order=...``.
 """
 from __future__ import annotations
 
 import functools
 import os
 import statistics
-import sys
 import time
 from dataclasses import dataclass, field
 from types import SimpleNamespace
 
-from .game.player import TICRATE, Player, player_tic, spawn_player
+from .camera import Camera
+from .game.player import TICRATE
+from .game.world import World
+from .hud import draw_overlays, say
 from .image import save_png
-from .hud import draw_overlays
 from .render import render
+from .window import (RESOLUTIONS, NoDisplayError, check_display, close_display,   # noqa: F401
+                     next_resolution, no_window_system, on_resize, open_display,
+                     save_screenshot, toggle_fullscreen, toggle_mouse_grab)
 
-RESOLUTIONS = ((160, 100), (320, 200), (640, 400), (800, 500), (1280, 800), (1600, 1000))
 _BAM = 360.0 / 2 ** 16                  # degrees per unit of DOOM's angleturn
 TURN_SLOW, TURN_WALK, TURN_RUN = 320 * _BAM, 640 * _BAM, 1280 * _BAM   # degrees a tic
 SLOW_TURN_TICS = 6                      # DOOM turns slowly for the first tics a key is held
 MOUSE_TURN = 0.15                       # degrees per pixel of mouse motion
 MAX_FRAME_TIME = 0.1      # seconds: a hitch (window drag, swap) runs no more tics than this
-MESSAGE_SECONDS = 2.0
-SHOT_NAME = "wallbsp-shot-{:03d}.png"
-NO_DISPLAY_DRIVERS = ("dummy", "offscreen")   # SDL drivers that show nothing
+EXIT_SECONDS = 2.0        # the exit message stays this long on the next level
+NO_BLEND = 64.0           # map units: a jump this long (a teleport) is not interpolated
 
-
-
-class NoDisplayError(RuntimeError):
-    """An interactive walkthrough was asked for where there is no display."""
 
 
 class Summary(dict):
@@ -62,8 +64,7 @@ class Summary(dict):
 @dataclass
 class Walkthrough:
     """Everything the walkthrough keeps between frames."""
-    tree: object
-    player: Player
+    world: World
     size: tuple                      # internal resolution
     window: tuple                    # windowed size, restored when leaving fullscreen
     order: str = "front_to_back"
@@ -72,6 +73,11 @@ class Walkthrough:
     held: set = field(default_factory=set)     # keys down, from KEYDOWN/KEYUP events
     mouse_dx: float = 0.0
     pending: float = 0.0             # seconds of game time not yet run as tics
+    previous: Camera = None          # the view one tic ago, blended into the frame
+    use_tapped: bool = False         # use pressed since the last tic
+    next_level: object = None        # exit kind -> the next tree, or None: play again
+    demo: object = None              # a game.demo.Demo recording the first level's tics
+    seen_message: int = 0            # how many of the world's messages were shown
     turn_tics: int = 0               # tics a turn key has been held
     show_help: bool = True
     show_map: bool = False
@@ -92,22 +98,31 @@ class Walkthrough:
 
     @classmethod
     def at_start(cls, tree, size=(320, 200), window=(960, 600), **options):
-        start = tree.level.start
-        return cls(tree, spawn_player(tree, start.x, start.y, start.angle), tuple(size),
-                   tuple(window), **options)
+        return cls(World(tree), tuple(size), tuple(window), **options)
+
+    @property
+    def tree(self):
+        return self.world.tree
+
+    @property
+    def player(self):
+        return self.world.player
 
 
 # -- the entry point ------------------------------------------------------------------------------
 
 def run_walkthrough(tree, *, size=(320, 200), window=(960, 600), frames=None, turn=0.0,
-                    screenshot=None, max_fps=None, order="front_to_back", fov=90.0) -> Summary:
+                    screenshot=None, max_fps=None, order="front_to_back", fov=90.0,
+                    demo=None, next_level=None) -> Summary:
     """Walk ``tree`` in a window; with ``frames=N`` render N frames headless and return the
-    summary.  ``screenshot``: save the last frame (internal resolution) as a PNG."""
+    summary.  ``screenshot``: save the last frame (internal resolution) as a PNG.
+    ``demo``: record the tics into it; ``next_level(exit)``: the tree to go on to."""
     if frames is None:
         check_display()
-    elif _no_window_system():
+    elif no_window_system():
         os.environ["SDL_VIDEODRIVER"] = "dummy"
-    walk = Walkthrough.at_start(tree, size, window, order=order, fov=fov)
+    walk = Walkthrough.at_start(tree, size, window, order=order, fov=fov, demo=demo,
+                                next_level=next_level)
     open_display(walk)
     try:
         times = run_frames(walk, frames, turn, max_fps)
@@ -116,43 +131,6 @@ def run_walkthrough(tree, *, size=(320, 200), window=(960, 600), frames=None, tu
     finally:
         close_display(walk)
     return _summary(walk, times)
-
-
-def check_display() -> None:
-    """``NoDisplayError`` when an interactive window cannot be shown here: no window
-    system, or an SDL video driver that shows nothing."""
-    driver = os.environ.get("SDL_VIDEODRIVER", "").strip().lower()
-    if driver in NO_DISPLAY_DRIVERS:
-        problem = f"SDL_VIDEODRIVER={driver} shows nothing"
-    elif _no_window_system():
-        problem = "DISPLAY and WAYLAND_DISPLAY are unset"
-    else:
-        return
-    raise NoDisplayError(f"wallbsp walk: no display ({problem}); use --frames N for a "
-                         f"headless run")
-
-
-def _no_window_system() -> bool:
-    """No X11 or Wayland display on a Unix that needs one, and no driver chosen by the user."""
-    if "SDL_VIDEODRIVER" in os.environ or os.name != "posix" or sys.platform == "darwin":
-        return False
-    return not (os.environ.get("DISPLAY") or os.environ.get("WAYLAND_DISPLAY"))
-
-
-def open_display(walk):
-    import pygame
-    pygame.display.init()
-    pygame.font.init()
-    walk.display = pygame.display.set_mode(walk.window, pygame.RESIZABLE)
-    pygame.display.set_caption(f"wallbsp - {walk.tree.level.name}")
-    walk.font = pygame.font.Font(None, 20)
-
-
-def close_display(walk):
-    import pygame
-    if walk.mouse_grab:
-        _toggle_mouse_grab(walk)
-    pygame.display.quit()
 
 
 def run_frames(walk, frames=None, turn=0.0, max_fps=None):
@@ -183,15 +161,15 @@ def _note_frame_time(walk, seconds, first):
 def step_frame(walk, dt):
     """One interactive frame of ``dt`` seconds."""
     handle_events(walk)
-    update_player(walk, dt)
-    draw_frame(walk)
+    run_tics(walk, dt)
+    draw_frame(walk, blend=walk.pending * TICRATE)
 
 
 def headless_frame(walk, turn):
-    """One frame with no input but closing the window; then turn for the next one."""
+    """One frame with no input but closing the window; then one tic turning ``turn``."""
     handle_events(walk, keys=False)
     draw_frame(walk)
-    walk.player.angle = (walk.player.angle + turn) % 360.0
+    run_tic(walk, (0.0, 0.0, turn, False, False))
 
 
 def _summary(walk, times) -> Summary:
@@ -214,7 +192,7 @@ def bindings():
         forward=(pygame.K_w, pygame.K_UP), back=(pygame.K_s, pygame.K_DOWN),
         strafe_left=(pygame.K_a,), strafe_right=(pygame.K_d,),
         turn_left=(pygame.K_LEFT,), turn_right=(pygame.K_RIGHT,),
-        run=(pygame.K_LSHIFT, pygame.K_RSHIFT),
+        run=(pygame.K_LSHIFT, pygame.K_RSHIFT), use=(pygame.K_e, pygame.K_SPACE),
         actions={
             pygame.K_ESCAPE: _quit,
             pygame.K_TAB: _toggle("show_map"),
@@ -223,11 +201,11 @@ def bindings():
             pygame.K_r: _toggle("show_readout"), pygame.K_F1: _toggle("show_readout"),
             pygame.K_h: _toggle("show_help"),
             pygame.K_p: _toggle_order,
-            pygame.K_m: _toggle_mouse_grab,
-            pygame.K_f: _toggle_fullscreen, pygame.K_F11: _toggle_fullscreen,
+            pygame.K_m: toggle_mouse_grab,
+            pygame.K_f: toggle_fullscreen, pygame.K_F11: toggle_fullscreen,
             pygame.K_k: save_screenshot, pygame.K_F12: save_screenshot,
-            pygame.K_LEFTBRACKET: lambda walk: _next_resolution(walk, -1),
-            pygame.K_RIGHTBRACKET: lambda walk: _next_resolution(walk, 1),
+            pygame.K_LEFTBRACKET: lambda walk: next_resolution(walk, -1),
+            pygame.K_RIGHTBRACKET: lambda walk: next_resolution(walk, 1),
         })
 
 
@@ -238,11 +216,12 @@ def handle_events(walk, keys=True):
         if event.type == pygame.QUIT:
             walk.running = False
         elif event.type in (pygame.VIDEORESIZE, pygame.WINDOWSIZECHANGED):
-            _on_resize(walk)
+            on_resize(walk)
         elif not keys:
             continue
         elif event.type == pygame.KEYDOWN:
             walk.held.add(event.key)
+            walk.use_tapped |= event.key in bindings().use
             handle_key(walk, event.key)
         elif event.type == pygame.KEYUP:
             walk.held.discard(event.key)
@@ -271,111 +250,90 @@ def _toggle(name):
 
 def _toggle_order(walk):
     walk.order = "back_to_front" if walk.order == "front_to_back" else "front_to_back"
-    _say(walk, f"order: {walk.order}")
+    say(walk, f"order: {walk.order}")
 
 
-def _toggle_mouse_grab(walk):
-    import pygame
-    walk.mouse_grab = not walk.mouse_grab
-    # grabbed and hidden: SDL's relative mouse mode, so turning never hits the screen edge
-    pygame.event.set_grab(walk.mouse_grab)
-    pygame.mouse.set_visible(not walk.mouse_grab)
-    pygame.mouse.get_rel()
-    walk.mouse_dx = 0.0
-
-
-def _toggle_fullscreen(walk):
-    import pygame
-    walk.fullscreen = not walk.fullscreen
-    if walk.fullscreen:
-        walk.window = walk.display.get_size()
-        walk.display = pygame.display.set_mode((0, 0), pygame.FULLSCREEN)
-    else:
-        walk.display = pygame.display.set_mode(walk.window, pygame.RESIZABLE)
-    walk.map_cache = (None, None)
-
-
-def _on_resize(walk):
-    import pygame
-    walk.display = pygame.display.get_surface()
-    if not walk.fullscreen:
-        walk.window = walk.display.get_size()
-    walk.map_cache = (None, None)
-
-
-def _next_resolution(walk, step):
-    """The next size in RESOLUTIONS up (step 1) or down (-1) from the current one, cycling."""
-    area = walk.size[0] * walk.size[1]
-    if step > 0:
-        bigger = [s for s in RESOLUTIONS if s[0] * s[1] > area]
-        walk.size = bigger[0] if bigger else RESOLUTIONS[0]
-    else:
-        smaller = [s for s in RESOLUTIONS if s[0] * s[1] < area]
-        walk.size = smaller[-1] if smaller else RESOLUTIONS[-1]
-    _say(walk, f"resolution {walk.size[0]}x{walk.size[1]}")
-
-
-def save_screenshot(walk):
-    """The last frame at the internal resolution, as the first free wallbsp-shot-NNN.png."""
-    if walk.frame is None:
-        return None
-    number = 1
-    while os.path.exists(SHOT_NAME.format(number)):
-        number += 1
-    path = SHOT_NAME.format(number)
-    save_png(path, walk.frame.color)
-    _say(walk, f"saved {path}")
-    return path
-
-
-def _say(walk, text):
-    walk.message, walk.message_until = text, time.perf_counter() + MESSAGE_SECONDS
-
-
-# -- the player: held keys -> one tic's inputs ------------------------------------------------------
+# -- the world: held keys -> one tic's inputs ---------------------------------------------------------
 
 def _axis(held, plus, minus) -> int:
     return any(k in held for k in plus) - any(k in held for k in minus)
 
 
 def tic_inputs(walk):
-    """``(forward, strafe, turn, run)`` for the next tic from the keys held and the mouse
-    moved since the last tic (SPEC §8's inputs)."""
+    """``(forward, strafe, turn, use, run)`` for the next tic from the keys held and the
+    mouse moved since the last tic (SPEC §8's inputs)."""
     held, keys = walk.held, bindings()
     running = any(k in held for k in keys.run)
     turning = _axis(held, keys.turn_left, keys.turn_right)
     walk.turn_tics = walk.turn_tics + 1 if turning else 0
     speed = TURN_SLOW if walk.turn_tics <= SLOW_TURN_TICS else (TURN_RUN if running else TURN_WALK)
-    turn = turning * speed - walk.mouse_dx * MOUSE_TURN
-    walk.mouse_dx = 0.0
+    turn = max(-360.0, min(360.0, turning * speed - walk.mouse_dx * MOUSE_TURN))
+    using = walk.use_tapped or any(k in held for k in keys.use)
+    walk.mouse_dx, walk.use_tapped = 0.0, False
     return (_axis(held, keys.forward, keys.back), _axis(held, keys.strafe_right, keys.strafe_left),
-            turn, running)
+            turn, using, running)
 
 
-def update_player(walk, dt):
+def run_tics(walk, dt):
     """Run the tics that ``dt`` more seconds make due (TICRATE a second)."""
     walk.pending += dt
     tics = int(walk.pending * TICRATE + 1e-9)     # a hair: k/35 s is k tics despite rounding
     walk.pending -= tics / TICRATE
     for _ in range(tics):
-        forward, strafe, turn, running = tic_inputs(walk)
-        player_tic(walk.tree, walk.player, forward, strafe, turn, running)
+        run_tic(walk, tic_inputs(walk))
+
+
+def run_tic(walk, inputs):
+    """One tic of the world (recorded while on the first level); its messages; an exit."""
+    walk.previous = walk.world.camera(walk.fov)
+    walk.world.tic(*inputs)
+    if walk.demo is not None:
+        walk.demo.record(*inputs)
+    messages = walk.world.messages
+    if messages and messages[-1][0] >= walk.seen_message:
+        say(walk, messages[-1][1])
+        walk.seen_message = messages[-1][0] + 1
+    if walk.world.exited:
+        leave_level(walk)
+
+
+def leave_level(walk):
+    """The level was left: say so, then the next level (``next_level``) or this one again."""
+    kind = walk.world.exited
+    following = walk.next_level(kind) if walk.next_level is not None else None
+    tree = following if following is not None else walk.world.tree
+    where = tree.level.name if following is not None else "the level again"
+    walk.world, walk.previous, walk.demo, walk.seen_message = World(tree), None, None, 0
+    walk.map_cache, walk.partitions = (None, None), None
+    say(walk, f"Level exited ({kind} exit): {where}", EXIT_SECONDS)
 
 
 # -- drawing --------------------------------------------------------------------------------------
 
-def draw_frame(walk):
+def draw_frame(walk, blend=1.0):
     import pygame
-    render_view(walk)
+    render_view(walk, blend)
     draw_overlays(walk)
     pygame.display.flip()
 
 
-def render_view(walk):
+def view_camera(walk, blend=1.0) -> Camera:
+    """The camera ``blend`` (0..1) of the way from the last tic's view to this tic's (a
+    jump such as a teleport is not blended)."""
+    now, before = walk.world.camera(walk.fov), walk.previous
+    if before is None or blend >= 1.0 or abs(now.x - before.x) + abs(now.y - before.y) > NO_BLEND:
+        return now
+    turn = (now.angle - before.angle + 180.0) % 360.0 - 180.0
+    mix = lambda a, b: a + (b - a) * blend            # noqa: E731
+    return Camera(mix(before.x, now.x), mix(before.y, now.y), mix(before.z, now.z),
+                  (before.angle + turn * blend) % 360.0, now.fov)
+
+
+def render_view(walk, blend=1.0):
     """Render at the internal resolution; one blit_array, one scale into the window."""
     import pygame
     width, height = walk.size
-    walk.frame = render(walk.tree, walk.player.camera(walk.fov), width, height, order=walk.order)
+    walk.frame = render(walk.world, view_camera(walk, blend), width, height, order=walk.order)
     if walk.surface is None or walk.surface.get_size() != walk.size:
         walk.surface = pygame.Surface(walk.size, 0, walk.display)   # the window's format
     pygame.surfarray.blit_array(walk.surface, walk.frame.color_columns)

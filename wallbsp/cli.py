@@ -232,20 +232,58 @@ def cmd_render(args):
 
 def cmd_walk(args):
     from .app import NoDisplayError, check_display, run_walkthrough
+    from .game.demo import demo_for, save_demo
     if args.level is None:
         from importlib.resources import files
         args.level = str(files("wallbsp") / "data" / "default.json")
-    check_outputs("walk", [args.screenshot], [args.level])
+    check_outputs("walk", [args.screenshot, args.record], [args.level])
     try:
         if args.frames is None:
             check_display()      # before the level is compiled: that may take a while
         tree = load_any(args.level, args, strict=args.strict)
+        demo = demo_for(tree.level) if args.record else None
         summary = run_walkthrough(tree, size=args.size, frames=args.frames, turn=args.turn,
-                                  screenshot=args.screenshot, max_fps=args.max_fps)
+                                  screenshot=args.screenshot, max_fps=args.max_fps, demo=demo,
+                                  next_level=_next_level(args.level, args))
     except NoDisplayError as err:
         raise UsageError(str(err)) from None
+    if demo is not None:
+        save_demo(demo, args.record)
     if args.frames is not None:
         print(summary)
+
+
+def _next_level(spec: str, args):
+    """For ``WAD:MAP``: the walkthrough's ``next_level(exit)`` (the next map, compiled)."""
+    from . import wad
+    from .build import compile_level
+    from .game.maporder import following_maps
+    wad_spec = wad.parse_wad_spec(spec)
+    if wad_spec is None:
+        return None
+    return following_maps(*wad_spec, lambda path, name: compile_level(
+        wad.load_wad_level(path, name, strict=args.strict), args.candidates, args.seed),
+        wad.list_maps)
+
+
+def cmd_play(args):
+    from .game.demo import check_level, load_demo, play
+    from .game.world import World
+    check_outputs("play", [args.screenshot], [args.level, args.demo])
+    demo = load_demo(args.demo)
+    tree = load_any(args.level, args, strict=args.strict)
+    check_level(demo, tree.level)
+    world = World(tree, demo.skill)
+    play(world, demo)
+    if args.screenshot:
+        _save_view(world, args.screenshot, args.size)
+    _print_stats(world.status(), args.json)
+
+
+def _save_view(world, path, size):
+    from .image import png_bytes
+    from .render import render
+    write_outputs({path: png_bytes(render(world, world.camera(), *size).color)})
 
 
 def cmd_import_wad(args):
@@ -288,8 +326,20 @@ def build_parser() -> argparse.ArgumentParser:
     p.add_argument("--screenshot", help="save the last frame as PNG")
     p.add_argument("--max-fps", type=_bounded(1, 1000), default=None,
                    help="frame cap (default: none)")
+    p.add_argument("--record", metavar="DEMO",
+                   help="write the inputs of every tic on the first level to this demo (JSON)")
     _add_build_options(p), _add_strict(p)
     p.set_defaults(func=cmd_walk)
+
+    p = sub.add_parser("play", help="replay a demo headless and print the final state")
+    p.add_argument("level", help="the level, tree or WAD:MAP the demo was recorded on")
+    p.add_argument("demo", help="demo file (JSON, from walk --record)")
+    p.add_argument("--screenshot", metavar="PNG", help="save the final view as PNG")
+    p.add_argument("--size", type=_size, default=(320, 200), metavar="WxH",
+                   help="screenshot size (default 320x200)")
+    p.add_argument("--json", action="store_true", help="the final state as one JSON object")
+    _add_build_options(p), _add_strict(p)
+    p.set_defaults(func=cmd_play)
 
     p = sub.add_parser("compile", help="compile a level into a tree file")
     p.add_argument("level", help="level file or WAD:MAP")

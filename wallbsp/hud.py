@@ -11,12 +11,19 @@ import time
 from .mapview import MapView, automap_layer, draw_marker, level_bounds, partition_pieces
 from .queries import PLAYER_RADIUS
 
-__all__ = ["HELP", "draw_overlays", "readout_lines", "draw_automap"]
+__all__ = ["HELP", "MESSAGE_SECONDS", "draw_overlays", "readout_lines", "draw_automap", "say"]
 
-HELP = ("WASD/arrows move   Left/Right or mouse (M grab) turn   Shift run   Esc quit",
+HELP = ("WASD/arrows move   Left/Right or mouse (M grab) turn   Shift run   E/Space use   "
+        "Esc quit",
         "Tab map  O overlay  L lines  R stats  P painter  [ ] resolution  F fullscreen  "
         "K shot  H help")
 TEXT, SHADOW = (235, 235, 235), (0, 0, 0)
+MESSAGE_SECONDS = 2.0
+
+
+def say(walk, text, seconds=MESSAGE_SECONDS):
+    """Show ``text`` as the walkthrough's message for ``seconds``."""
+    walk.message, walk.message_until = text, time.perf_counter() + seconds
 
 
 def draw_overlays(walk):
@@ -33,15 +40,19 @@ def draw_overlays(walk):
 
 
 def readout_lines(walk):
-    """The readout: frame time, the walk's statistics, where the player is."""
-    stats, player = walk.frame.stats, walk.player
+    """The readout: frame time, the walk's statistics, where the player is, and the world:
+    its tic, the movers moving, secrets found of all, health."""
+    stats, player, world = walk.frame.stats, walk.player, walk.world
     ms = walk.frame_ms
+    found, total = world.secrets
     return [f"{ms:.2f} ms  {1000.0 / ms if ms else 0.0:.0f} fps  "
             f"{walk.size[0]}x{walk.size[1]}  {walk.order}",
             f"nodes visited {stats['nodes_visited']}  segs drawn {stats['segs_drawn']}  "
             f"early exit {'yes' if stats['early_exit'] else 'no'}",
             f"x {player.x:.0f}  y {player.y:.0f}  eye {player.eye:.0f}  "
-            f"angle {player.angle:.0f}"]
+            f"angle {player.angle:.0f}",
+            f"tic {world.tic_count}  movers {world.rules.active_movers}  "
+            f"secrets {found}/{total}  health {world.inventory.health}"]
 
 
 def _draw_text_block(walk, lines, topleft):
