@@ -120,6 +120,7 @@ def test_compare_quick_against_this_checkout_draws_the_same_frames_and_tree():
         assert figures["e1m1_320x200_fps"] > 0 and figures["map12_compile_seconds"] > 0
     assert set(result["within_10_percent"]) == {"e1m1_320x200_fps", "e1m1_640x400_fps",
                                                 "map12_compile_seconds"}
+    assert result["figures"]["current"]["e1m1_640x400_fps_as_shipped"] > 0
 
 
 def test_resources_quick_loads_e1m1_textures_and_a_bounded_bomb():

@@ -71,7 +71,7 @@ def run(args) -> dict:
     for r in range(rounds):
         order = list(checkouts) if r % 2 == 0 else list(reversed(checkouts))
         for name in order:
-            runs[name].append(run_round(checkouts[name], job))
+            runs[name].append(run_round(checkouts[name], dict(job, as_shipped=name == "current")))
     return summarise(args, checkouts, runs, rounds, frames)
 
 
@@ -105,18 +105,24 @@ def summarise(args, checkouts, runs, rounds: int, frames: int) -> dict:
 
 def figures_of(rounds: list[dict]) -> dict:
     """fps per size (1 / the median frame time over every frame of every round), the fps
-    of each round, and the median MAP12 compile seconds."""
+    of each round, the same as ``render`` draws the map by default (when measured), and the
+    median MAP12 compile seconds."""
     out = {}
     for w, h in SIZES:
         key = f"{w}x{h}"
-        times = [t for r in rounds for t in r["frames"][key]["seconds"]]
-        out[f"e1m1_{key}_fps"] = round(1 / statistics.median(times), 1)
-        out[f"e1m1_{key}_fps_per_round"] = [
-            round(1 / statistics.median(r["frames"][key]["seconds"]), 1) for r in rounds]
+        out[f"e1m1_{key}_fps"] = fps([t for r in rounds for t in r["frames"][key]["seconds"]])
+        out[f"e1m1_{key}_fps_per_round"] = [fps(r["frames"][key]["seconds"]) for r in rounds]
+        if "frames_as_shipped" in rounds[0]:
+            out[f"e1m1_{key}_fps_as_shipped"] = fps(
+                [t for r in rounds for t in r["frames_as_shipped"][key]["seconds"]])
     seconds = [s for r in rounds for s in r["compile"]["seconds"]]
     out["map12_compile_seconds"] = round(statistics.median(seconds), 3)
     out["map12_segs"] = rounds[0]["compile"]["segs"]
     return out
+
+
+def fps(seconds: list[float]) -> float:
+    return round(1 / statistics.median(seconds), 1)
 
 
 def section(result: dict) -> str:
@@ -130,15 +136,29 @@ def section(result: dict) -> str:
         "## This checkout against the baseline (issue 9: no slower)",
         f"Regenerate: `{result['command']}`. {machine_line(result['machine'])}",
         f"Baseline: `{result['checkouts']['baseline']}`; current: "
-        f"`{result['checkouts']['current']}`. {result['rounds']} rounds, each running both "
+        f"`{result['checkouts']['current']}`. {result['rounds']} round(s), each running both "
         "checkouts in fresh processes in alternating order. The walk: the first "
         f"{result['walk_frames']} frames of the scripted walk on {result['walk']} (the same "
         "cameras for both), fps = 1 / the median frame time over all rounds; "
-        f"{result['compile']} compiled at the default settings, the median over all rounds.",
+        f"{result['compile']} compiled at the default settings, the median over all rounds. "
+        "Like for like: both draw the maps without their things and in flat colours "
+        "(`textures=False` where `render` has it), the frames the baseline draws.",
         markdown_table(["figure", "baseline", "current", "current / baseline",
                         "within 10 %"], rows),
         f"Same pixels on the walk: {same}. Same MAP12 tree (arrays): "
         f"{'yes' if result['same_tree'] else '**no**'}. fps per round, baseline: "
-        + "; ".join(f"{k[5:-14]} {base[k]}" for k in base if k.endswith("_per_round"))
-        + "; current: "
-        + "; ".join(f"{k[5:-14]} {cur[k]}" for k in cur if k.endswith("_per_round")) + "."])
+        f"{per_round(base)}; current: {per_round(cur)}." + as_shipped(cur)])
+
+
+def per_round(figures: dict) -> str:
+    return "; ".join(f"{key[5:-len('_fps_per_round')]} {value}"
+                     for key, value in figures.items() if key.endswith("_per_round"))
+
+
+def as_shipped(figures: dict) -> str:
+    shipped = [f"{key[5:-len('_fps_as_shipped')]} {value} fps"
+               for key, value in figures.items() if key.endswith("_as_shipped")]
+    if not shipped:
+        return ""
+    return (" The same walk as the current `render` draws E1M1 by default (textured, with "
+            "its things): " + "; ".join(shipped) + ".")
