@@ -1,0 +1,214 @@
+"""The learning environments' targets (issue 13); prints one JSON object.
+
+    python tools/env_throughput.py            # the full run (a few minutes)
+    python tools/env_throughput.py --quick    # a smoke run
+    python tools/env_throughput.py --envs 8   # N for the vector runs (default: 2 x nproc)
+
+The full run also rewrites the "environments" section of docs/benchmarks.md.  Nothing is
+trained: a seeded uniform-random policy over the Discrete actions (a new episode when one
+ends) drives every environment.
+
+1. One environment: ``wallbsp/Exit-v0`` on freedoom1.wad:E1M1 (levels/large.json when
+   Freedoom is absent), 160x120, frame skip 1, textured, observing rgb, depth and labels:
+   steps per second.  Beside it the same with rgb only, untextured, and ``pose`` only (no
+   frame drawn: the World's tics alone), and where a step's time goes (the tics, the
+   frame, the observation arrays).
+2. ``wallbsp/Explore-v0`` reset (generate a ~500-wall level, compile it, a World, the first
+   frame): the median over many seeds, and the median of each part.
+3. Vector environments: steps per second (all environments' steps) for 1 environment, and
+   for 2 and N under ``AsyncVectorEnv`` (one process each) and 2 under ``SyncVectorEnv``;
+   the speed-up of 2 over 1.
+"""
+from __future__ import annotations
+
+import os
+import statistics
+import time
+
+import numpy as np
+
+from wallbsp import render
+
+from .freedoom import FREEDOOM
+from .report import machine, machine_line, markdown_table, positive_int, run_script, \
+    script_parser
+from . import ROOT
+
+SIZE = (160, 120)
+TARGET_STEPS = 2500
+TARGET_RESET_MS = 50
+TARGET_SPEEDUP = 1.6
+VIEW = ("rgb", "depth", "labels")
+
+
+def exit_level() -> str:
+    e1 = FREEDOOM[0]
+    return f"{e1}:E1M1" if e1.exists() else str(ROOT / "levels" / "large.json")
+
+
+def exit_options(level: str, **extra) -> dict:
+    return {"level": level, "size": SIZE, "frame_skip": 1, "textures": True,
+            "observations": VIEW, **extra}
+
+
+def random_steps(env, steps: int, seed: int = 0) -> float:
+    """Steps a second of ``env`` (an Env or a VectorEnv) under a seeded random policy,
+    counting every sub-environment's step."""
+    space = env.action_space
+    space.seed(seed)
+    env.reset(seed=seed)
+    count = getattr(env, "num_envs", 1)
+    started = time.perf_counter()
+    for _ in range(steps):
+        _, _, terminated, truncated, _ = env.step(space.sample())
+        if count == 1 and (terminated or truncated):
+            env.reset()
+    return count * steps / (time.perf_counter() - started)
+
+
+def one_env(level: str, steps: int) -> dict:
+    import gymnasium as gym
+    variants = {"rgb+depth+labels, textured": {},
+                "rgb, textured": {"observations": ("rgb",)},
+                "rgb+depth+labels, untextured": {"textures": False},
+                "pose only (no frame)": {"observations": ("pose",)}}
+    out = {}
+    for name, extra in variants.items():
+        env = gym.make("wallbsp/Exit-v0", **exit_options(level, **extra))
+        out[name] = round(random_steps(env, steps), 1)
+        env.close()
+    return out
+
+
+def step_parts(level: str, steps: int) -> dict:
+    """Milliseconds a step spends in the World's tic, drawing the frame and making the
+    observation arrays (medians), on the target configuration."""
+    import gymnasium as gym
+    from wallbsp.envs.actions import buttons_of
+    from wallbsp.envs.observations import view_observation
+    env = gym.make("wallbsp/Exit-v0", **exit_options(level)).unwrapped
+    env.reset(seed=0)
+    rng = np.random.default_rng(0)
+    parts = {"tic": [], "frame": [], "arrays": []}
+    for _ in range(steps):
+        buttons = buttons_of("discrete", int(rng.integers(env.action_space.n)))
+        t0 = time.perf_counter()
+        env.world.tic(**buttons.tic_inputs(first=True))
+        t1 = time.perf_counter()
+        frame = render(env.world, env.world.camera(env.fov), *SIZE)
+        t2 = time.perf_counter()
+        view_observation(frame, VIEW)
+        t3 = time.perf_counter()
+        for key, value in zip(parts, (t1 - t0, t2 - t1, t3 - t2)):
+            parts[key].append(value)
+    return {key: round(1000 * statistics.median(v), 3) for key, v in parts.items()}
+
+
+def explore_reset(resets: int) -> dict:
+    """Median milliseconds of ``Explore-v0``'s reset and of its parts, over seeds."""
+    import gymnasium as gym
+    from wallbsp import compile_level
+    from wallbsp.game.world import World
+    from wallbsp.generate import generate_level
+    env = gym.make("wallbsp/Explore-v0", size=SIZE, observations=VIEW).unwrapped
+    env.reset(seed=0)                     # imports and first-use tables out of the way
+    whole, parts = [], {"generate": [], "compile": [], "world": [], "first_frame": []}
+    walls = []
+    for seed in range(1, resets + 1):
+        t0 = time.perf_counter()
+        env.reset(seed=seed)
+        whole.append(time.perf_counter() - t0)
+        t0 = time.perf_counter()
+        generated = generate_level(seed)
+        t1 = time.perf_counter()
+        tree = compile_level(generated.level)
+        t2 = time.perf_counter()
+        world = World(tree)
+        t3 = time.perf_counter()
+        render(world, world.camera(env.fov), *SIZE)
+        t4 = time.perf_counter()
+        walls.append(len(generated.level.walls))
+        for key, value in zip(parts, (t1 - t0, t2 - t1, t3 - t2, t4 - t3)):
+            parts[key].append(value)
+    return {"reset_ms_median": round(1000 * statistics.median(whole), 1),
+            "parts_ms_median": {k: round(1000 * statistics.median(v), 1)
+                                for k, v in parts.items()},
+            "walls_median": int(statistics.median(walls)), "resets": resets}
+
+
+def vector_envs(level: str, counts, steps: int) -> dict:
+    import gymnasium as gym
+    options = exit_options(level)
+    out = {"1": round(random_steps(gym.make("wallbsp/Exit-v0", **options), steps), 1)}
+
+    def fns(n):
+        return [lambda: gym.make("wallbsp/Exit-v0", **options) for _ in range(n)]
+    for n in counts:
+        vector = gym.vector.AsyncVectorEnv(fns(n))
+        out[f"async {n}"] = round(random_steps(vector, max(1, steps // n)), 1)
+        vector.close()
+    vector = gym.vector.SyncVectorEnv(fns(2))
+    out["sync 2"] = round(random_steps(vector, max(1, steps // 2)), 1)
+    vector.close()
+    out["speedup_async_2"] = round(out["async 2"] / out["1"], 2)
+    return out
+
+
+def main(argv=None) -> int:
+    parser = script_parser(__doc__, "a smoke run: few steps and resets")
+    parser.add_argument("--envs", type=positive_int, default=2 * len(os.sched_getaffinity(0)),
+                        help="N, the largest number of vector environments (default 2 x nproc)")
+    return run_script(parser, run, "environments", section, argv=argv)
+
+
+def run(args) -> dict:
+    import wallbsp.envs  # noqa: F401 - registers the ids
+    steps = 30 if args.quick else 600
+    level = exit_level()
+    counts = sorted({2, args.envs})
+    single = one_env(level, steps)
+    reset = explore_reset(3 if args.quick else 40)
+    vectors = vector_envs(level, counts, steps)
+    return {"machine": machine(), "load_average": os.getloadavg()[0], "quick": args.quick,
+            "level": level, "size": f"{SIZE[0]}x{SIZE[1]}", "steps": steps,
+            "one_env_steps_per_s": single, "step_ms_median": step_parts(level, steps // 3),
+            "explore_reset": reset, "vector_steps_per_s": vectors,
+            "targets": {"one_env_steps_per_s": TARGET_STEPS,
+                        "explore_reset_ms": TARGET_RESET_MS,
+                        "async_2_speedup": TARGET_SPEEDUP},
+            "meets": {"one_env": single["rgb+depth+labels, textured"] >= TARGET_STEPS,
+                      "explore_reset": reset["reset_ms_median"] <= TARGET_RESET_MS,
+                      "async_2_speedup": vectors["speedup_async_2"] >= TARGET_SPEEDUP}}
+
+
+def section(report) -> str:
+    one = report["one_env_steps_per_s"]
+    parts = report["step_ms_median"]
+    reset = report["explore_reset"]
+    vec = report["vector_steps_per_s"]
+    yes = {True: "yes", False: "NO"}
+    targets = markdown_table(
+        ["target", "measured", "wanted", "met"],
+        [["one env, steps/s", one["rgb+depth+labels, textured"], f"≥ {TARGET_STEPS}",
+          yes[report["meets"]["one_env"]]],
+         ["Explore-v0 reset, median ms", reset["reset_ms_median"], f"≤ {TARGET_RESET_MS}",
+          yes[report["meets"]["explore_reset"]]],
+         ["AsyncVectorEnv 2 / one env", vec["speedup_async_2"], f"≥ {TARGET_SPEEDUP}",
+          yes[report["meets"]["async_2_speedup"]]]])
+    return "\n\n".join([
+        "## Learning environments (Gymnasium)",
+        f"Regenerate: `python tools/env_throughput.py`. {machine_line(report['machine'])} "
+        f"Load average when it started: {report['load_average']:.1f}. "
+        f"`wallbsp/Exit-v0` on `{report['level']}`, {report['size']}, frame skip 1, a "
+        f"seeded random policy, {report['steps']} steps a run.",
+        targets,
+        "Steps per second of one environment:",
+        markdown_table(["observations", "steps/s"], [[k, v] for k, v in one.items()]),
+        f"Where a step goes (median ms): the World's tic {parts['tic']}, the frame "
+        f"{parts['frame']}, the observation arrays {parts['arrays']}.",
+        f"`Explore-v0` reset over {reset['resets']} seeds (~{reset['walls_median']} walls): "
+        f"median {reset['reset_ms_median']} ms; parts (median ms): "
+        + ", ".join(f"{k} {v}" for k, v in reset["parts_ms_median"].items()) + ".",
+        "Vector environments (steps/s, all environments together):",
+        markdown_table(["environments", "steps/s"],
+                       [[k, v] for k, v in vec.items() if k != "speedup_async_2"])])

@@ -1,0 +1,38 @@
+"""Gymnasium environments (SPEC §9; ``pip install "wallbsp[gym]"``).
+
+Importing this package registers three ids with gymnasium (gymnasium 1.x has no plugin
+entry points, so nothing is registered until it is imported)::
+
+    import gymnasium as gym
+    import wallbsp.envs                       # registers wallbsp/Exit-v0, Explore-v0, Find-v0
+    env = gym.make("wallbsp/Exit-v0", level="freedoom1.wad:E1M1", size=(160, 120))
+
+or, without the import, with the module named in the id (gymnasium imports it)::
+
+    env = gym.make("wallbsp.envs:wallbsp/Explore-v0", frame_skip=4)
+
+- ``wallbsp/Exit-v0``: reach the exit of a given ``level=`` (+1, a small cost a tic);
+- ``wallbsp/Explore-v0``: a fresh generated level every episode; reward for new ground;
+- ``wallbsp/Find-v0``: a generated level with a target thing; +1 for reaching it.
+
+The tasks are in ``tasks``, the options every environment takes in ``base``, the action
+tables in ``actions``, the observation keys in ``observations``.  gymnasium is imported
+here and below only: ``import wallbsp`` does not need it.
+"""
+from gymnasium.envs.registration import register, registry
+
+from .actions import DISCRETE_ACTIONS, TURN_DEGREES, Buttons
+from .base import DEFAULT_OBSERVATIONS, WallbspEnv
+from .observations import OBSERVATIONS
+from .tasks import ExitEnv, ExploreEnv, FindEnv
+
+__all__ = ["DEFAULT_OBSERVATIONS", "DISCRETE_ACTIONS", "ENV_IDS", "OBSERVATIONS",
+           "TURN_DEGREES", "Buttons", "ExitEnv", "ExploreEnv", "FindEnv", "WallbspEnv"]
+
+ENV_IDS = {"wallbsp/Exit-v0": "wallbsp.envs.tasks:ExitEnv",
+           "wallbsp/Explore-v0": "wallbsp.envs.tasks:ExploreEnv",
+           "wallbsp/Find-v0": "wallbsp.envs.tasks:FindEnv"}
+
+for _id, _entry in ENV_IDS.items():
+    if _id not in registry:              # a second import (e.g. a reload) registers nothing
+        register(id=_id, entry_point=_entry)

@@ -1,0 +1,171 @@
+"""``WallbspEnv``: what every wallbsp environment shares — the options, the World that
+runs the level, one rendered frame per step, the time limit and the render modes.  A task
+(``tasks``) says where an episode's level comes from and what a tic is worth.
+
+Options (keyword arguments of ``gymnasium.make``):
+
+- ``size=(W, H)``: the frame, default ``(160, 120)``;
+- ``frame_skip``: tics each action is repeated for (default 1); the rewards of those tics
+  are summed, and the frame is drawn once, after the last;
+- ``fov``: horizontal field of view in degrees (default 90);
+- ``textures``: textured (default) or flat colours;
+- ``observations``: a subset of ``rgb``, ``depth``, ``labels``, ``automap``, ``pose``
+  (``observations`` module; default ``("rgb", "depth", "labels", "pose")``);
+- ``max_tics``: the time limit in tics (35 a second); the episode is truncated there;
+- ``action_space``: ``"discrete"`` (default), ``"multidiscrete"`` or ``"box"`` (``actions``);
+- ``render_mode``: ``"rgb_array"`` (``render()`` returns the view) or ``"human"`` (a
+  pygame window, opened by the first ``render()`` call — nothing opens a display before);
+- ``skill``: 1 to 5, which things the level has (default 3).
+
+An episode ends (``terminated``) when the task says so or the player dies; it is truncated
+after ``max_tics`` tics.  ``info`` has ``tics``, ``exited`` (None, "normal" or "secret"),
+``health`` and the task's own entries.
+"""
+from __future__ import annotations
+
+import gymnasium as gym
+import numpy as np
+
+from ..game.world import World
+from ..render import render
+from . import actions
+from .observations import (VIEW_KEYS, Automap, check_observations, observation_space,
+                           pose_of, view_observation)
+
+__all__ = ["WallbspEnv", "DEFAULT_OBSERVATIONS", "TICRATE"]
+
+TICRATE = 35
+DEFAULT_OBSERVATIONS = ("rgb", "depth", "labels", "pose")
+PLAYER_RADIUS = 16.0            # the automap marker's circle
+
+
+class WallbspEnv(gym.Env):
+    """The shared part of the wallbsp environments (module docstring).  A task defines
+    ``episode_tree()`` (the compiled tree of the episode about to start, drawn with
+    ``self.np_random``), ``tic_reward(world)`` → ``(reward, done)`` after each tic and may
+    extend ``episode_info()``."""
+
+    metadata = {"render_modes": ["rgb_array", "human"], "render_fps": TICRATE}
+    default_max_tics = 35 * 60
+
+    def __init__(self, size=(160, 120), frame_skip: int = 1, fov: float = 90.0,
+                 textures: bool = True, observations=DEFAULT_OBSERVATIONS, max_tics=None,
+                 action_space: str = "discrete", render_mode=None, skill: int = 3):
+        self.width, self.height = _size(size)
+        self.frame_skip = _positive("frame_skip", frame_skip)
+        self.max_tics = _positive("max_tics", self.default_max_tics if max_tics is None
+                                  else max_tics)
+        if not 0.0 < float(fov) < 180.0:
+            raise ValueError(f"fov must be between 0 and 180 degrees, not {fov!r}")
+        self.fov, self.textures, self.skill = float(fov), bool(textures), int(skill)
+        self.keys = check_observations(observations)
+        if render_mode is not None and render_mode not in self.metadata["render_modes"]:
+            raise ValueError(f"render_mode must be one of {self.metadata['render_modes']} "
+                             f"or None, not {render_mode!r}")
+        self.action_kind, self.render_mode = action_space, render_mode
+        self.action_space = actions.action_space(action_space)   # checks the name
+        self.observation_space = observation_space(self.keys, self.width, self.height)
+        self.metadata = {**self.metadata, "render_fps": TICRATE / self.frame_skip}
+        self.world = None
+        self._frame = self._automap = self._window = None
+        self._tics = 0
+
+    # -- what a task provides -------------------------------------------------------------
+    def episode_tree(self):
+        raise NotImplementedError
+
+    def tic_reward(self, world) -> tuple[float, bool]:
+        raise NotImplementedError
+
+    def episode_info(self) -> dict:
+        return {}
+
+    # -- the gymnasium API ------------------------------------------------------------------
+    def reset(self, *, seed=None, options=None):
+        super().reset(seed=seed)
+        tree = self.episode_tree()
+        if self._automap is None or self._automap[0] is not tree:
+            self._automap = (tree, None)        # drawn on first use, per level
+        self.world = World(tree, self.skill)
+        self._tics = 0
+        return self._observe(), self._info()
+
+    def step(self, action):
+        if self.world is None:
+            raise RuntimeError("step() before reset()")
+        buttons = actions.buttons_of(self.action_kind, action)
+        reward, terminated = 0.0, False
+        for i in range(self.frame_skip):
+            self.world.tic(**buttons.tic_inputs(first=i == 0))
+            self._tics += 1
+            gained, done = self.tic_reward(self.world)
+            reward += gained
+            if done or self.world.dead:
+                terminated = True
+                break
+            if self._tics >= self.max_tics:
+                break
+        truncated = not terminated and self._tics >= self.max_tics
+        return self._observe(), float(reward), terminated, truncated, self._info()
+
+    def render(self):
+        if self.render_mode is None or self.world is None:
+            return None
+        rgb = self._view().color.copy()
+        if self.render_mode == "rgb_array":
+            return rgb
+        if self._window is None:
+            from .window import Window
+            self._window = Window(self.width, self.height)
+        self._window.show(rgb, self.metadata["render_fps"])
+        return None
+
+    def close(self):
+        if self._window is not None:
+            self._window.close()
+            self._window = None
+
+    # -- observations -----------------------------------------------------------------------
+    def _view(self):
+        """The frame of the player's view now (drawn at most once per step)."""
+        if self._frame is None:
+            self._frame = render(self.world, self.world.camera(self.fov), self.width,
+                                 self.height, textures=self.textures)
+        return self._frame
+
+    def _observe(self) -> dict:
+        self._frame = None
+        obs = view_observation(self._view(), self.keys) if VIEW_KEYS & set(self.keys) else {}
+        if "automap" in self.keys:
+            obs["automap"] = self._map_picture()
+        if "pose" in self.keys:
+            obs["pose"] = pose_of(self.world.player)
+        return {k: obs[k] for k in self.keys}
+
+    def _map_picture(self) -> np.ndarray:
+        tree, automap = self._automap
+        if automap is None:
+            automap = Automap(tree, self.width, self.height)
+            self._automap = (tree, automap)
+        return automap.draw(self.world.player, PLAYER_RADIUS, self.fov)
+
+    def _info(self) -> dict:
+        world = self.world
+        return {"tics": self._tics, "exited": world.exited,
+                "health": int(world.inventory.health), **self.episode_info()}
+
+
+def _size(size) -> tuple[int, int]:
+    try:
+        width, height = (int(v) for v in size)
+    except (TypeError, ValueError):
+        raise ValueError(f"size must be (width, height), not {size!r}") from None
+    if width < 1 or height < 1:
+        raise ValueError(f"size must be positive, not {size!r}")
+    return width, height
+
+
+def _positive(name: str, value) -> int:
+    if isinstance(value, bool) or int(value) != value or value < 1:
+        raise ValueError(f"{name} must be a positive integer, not {value!r}")
+    return int(value)

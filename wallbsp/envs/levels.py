@@ -1,0 +1,62 @@
+"""Where an environment's levels come from: a given level (compiled once per process, so
+the environments of a ``SyncVectorEnv`` share one tree), or a fresh generated one per
+episode."""
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+from ..build import compile_level
+from ..level import Level
+from ..tree import BSPTree
+
+__all__ = ["given_tree", "generated_tree"]
+
+_TREES: dict = {}               # (spec, file stamp) -> BSPTree, for this process
+
+
+def given_tree(level) -> BSPTree:
+    """The compiled tree of ``level``: a level file (JSON), a compiled tree (``.wbsp``),
+    ``"WAD:MAP"``, a ``Level`` or a ``BSPTree``.  Files are read and compiled once per
+    process while they stay unchanged; a bad one raises ``LevelError``/``TreeError``."""
+    if isinstance(level, BSPTree):
+        return level
+    if isinstance(level, Level):
+        return compile_level(level)
+    spec = os.fspath(level)
+    key = (spec, _stamp(spec))
+    if key not in _TREES:
+        _TREES[key] = _load(spec)
+    return _TREES[key]
+
+
+def _stamp(spec: str):
+    """What tells a changed file from the one compiled: its size and modification time
+    (the WAD's, for ``WAD:MAP``)."""
+    from ..wad import parse_wad_spec
+    wad_spec = parse_wad_spec(spec)
+    path = wad_spec[0] if wad_spec else spec
+    try:
+        st = os.stat(path)
+    except OSError:
+        return None                  # the loader says what is wrong with it
+    return (st.st_size, st.st_mtime_ns)
+
+
+def _load(spec: str) -> BSPTree:
+    from ..levelio import load_level
+    from ..tree import load_tree
+    from ..wad import load_wad_level, parse_wad_spec
+    wad_spec = parse_wad_spec(spec)
+    if wad_spec:
+        return compile_level(load_wad_level(*wad_spec))
+    if Path(spec).suffix == ".wbsp":
+        return load_tree(spec)
+    return compile_level(load_level(spec))
+
+
+def generated_tree(seed: int, walls: int, goal: str):
+    """``(GeneratedLevel, BSPTree)`` of a fresh level from ``seed`` (``wallbsp.generate``)."""
+    from ..generate import generate_level
+    generated = generate_level(seed, walls=walls, goal=goal)
+    return generated, compile_level(generated.level)

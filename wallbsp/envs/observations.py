@@ -1,0 +1,94 @@
+"""What an agent sees: a ``Dict`` of the buffers chosen with ``observations=``.
+
+=========  ====================  =======  ==============================================
+key        shape                 dtype    what
+=========  ====================  =======  ==============================================
+rgb        (H, W, 3)             uint8    the player's view (SPEC §5 ``color``)
+depth      (H, W)                float32  forward depth of each pixel, ``inf`` for sky and
+                                          nothing (SPEC §5 ``depth``)
+labels     (H, W, 2)             int32    ``[..., 0]`` kind (0 nothing, 1 wall, 2 floor,
+                                          3 ceiling, 4 thing), ``[..., 1]`` the wall's,
+                                          sector's or thing's index, -1 for nothing
+automap    (H, W, 3)             uint8    the whole level from above, the player marked
+pose       (4,)                  float32  x, y, z (feet), angle in degrees [0, 360)
+=========  ====================  =======  ==============================================
+
+The view buffers come from one ``wallbsp.render`` call per step (only when one of rgb,
+depth, labels is asked for); every array returned is new, so an agent may keep them.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["OBSERVATIONS", "VIEW_KEYS", "observation_space", "check_observations", "Automap",
+           "pose_of", "view_observation"]
+
+OBSERVATIONS = ("rgb", "depth", "labels", "automap", "pose")
+VIEW_KEYS = frozenset({"rgb", "depth", "labels"})
+MAP_LIMIT = 1 << 16          # map coordinates are DOOM's 16-bit integers, and more is room
+INDEX_LIMIT = np.iinfo(np.int32).max
+
+
+def check_observations(keys) -> tuple[str, ...]:
+    """``keys`` as a tuple in the table's order; ValueError for an unknown or empty set."""
+    keys = (keys,) if isinstance(keys, str) else tuple(keys)
+    unknown = [k for k in keys if k not in OBSERVATIONS]
+    if unknown or not keys:
+        raise ValueError(f"observations must be a non-empty subset of {OBSERVATIONS}, "
+                         f"got {keys!r}")
+    return tuple(k for k in OBSERVATIONS if k in keys)
+
+
+def observation_space(keys, width: int, height: int):
+    """The ``Dict`` space of observations ``keys`` at ``width × height``."""
+    from gymnasium import spaces
+    image = spaces.Box(0, 255, (height, width, 3), np.uint8)
+    made = {
+        "rgb": image,
+        "depth": spaces.Box(0.0, np.inf, (height, width), np.float32),
+        "labels": spaces.Box(-1, INDEX_LIMIT, (height, width, 2), np.int32),
+        "automap": image,
+        "pose": spaces.Box(np.array([-MAP_LIMIT, -MAP_LIMIT, -MAP_LIMIT, 0], np.float32),
+                           np.array([MAP_LIMIT, MAP_LIMIT, MAP_LIMIT, 360], np.float32),
+                           dtype=np.float32),
+    }
+    return spaces.Dict({k: made[k] for k in keys})
+
+
+def view_observation(frame, keys) -> dict:
+    """The view buffers of a rendered ``frame`` among ``keys``."""
+    out = {}
+    if "rgb" in keys:
+        out["rgb"] = np.ascontiguousarray(frame.color, dtype=np.uint8)
+    if "depth" in keys:
+        out["depth"] = np.asarray(frame.depth, dtype=np.float32).copy()
+    if "labels" in keys:
+        out["labels"] = np.stack([frame.kind.astype(np.int32),
+                                  frame.index.astype(np.int32)], axis=-1)
+    return out
+
+
+def pose_of(player) -> np.ndarray:
+    """x, y, z (feet), angle of the player, float32 (angle in [0, 360))."""
+    return np.array([player.x, player.y, player.z, float(player.angle) % 360.0],
+                    dtype=np.float32)
+
+
+class Automap:
+    """The level from above, fitted into ``width × height``: walls drawn once, the
+    player's marker and view cone drawn on a copy each step (``wallbsp.mapview``; pygame
+    surfaces only, no display)."""
+
+    def __init__(self, tree, width: int, height: int):
+        import pygame
+        from ..mapview import MapView, automap_layer, level_bounds
+        self.view = MapView.centred(level_bounds(tree), (width, height), margin=2)
+        self.layer = automap_layer(tree, self.view, (width, height),
+                                   pygame.Surface((1, 1), 0, 24))
+
+    def draw(self, player, radius: float, fov: float) -> np.ndarray:
+        import pygame
+        from ..mapview import draw_marker
+        surface = self.layer.copy()
+        draw_marker(surface, self.view, (player.x, player.y), radius, player.angle, fov)
+        return np.ascontiguousarray(pygame.surfarray.array3d(surface).transpose(1, 0, 2))
