@@ -19,6 +19,7 @@ from wallbsp.envs import DISCRETE_ACTIONS, TURN_DEGREES, Buttons  # noqa: E402
 from wallbsp.envs.actions import buttons_of  # noqa: E402
 from wallbsp.generate import generate_level  # noqa: E402
 from wallbsp.generate.themes import TEXTURE_DIR  # noqa: E402
+from wallbsp.levelio import save_level  # noqa: E402
 
 SMALL = {"size": (32, 24), "walls": 60}
 ACTIONS = list(DISCRETE_ACTIONS)
@@ -208,7 +209,7 @@ def test_exit_needs_a_level():
 def test_a_level_file_is_compiled_once_per_process(tmp_path, exit_level):
     path = tmp_path / "level.json"
     # saved elsewhere, the level keeps its textures by naming their folder absolutely
-    replace(exit_level.level, resources=(str(TEXTURE_DIR),)).save(path)
+    save_level(replace(exit_level.level, resources=(str(TEXTURE_DIR),)), path)
     a = make("wallbsp/Exit-v0", level=str(path), textures=False, size=(16, 12))
     b = make("wallbsp/Exit-v0", level=path, textures=False, size=(16, 12))
     assert a.tree is b.tree
