@@ -89,7 +89,8 @@ class PainterRuns:
 
 def paint_runs(view, e):
     """Every entry's four unclipped runs written far to near: ``(per-pixel run numbers,
-    pixels written)``; pixels no run covers hold the "nothing" run ``4*entries``."""
+    pixels written, runs' start rows, runs' lengths)``; pixels no run covers hold the
+    "nothing" run ``4*entries``."""
     width, height = view.width, view.height
     n_entries = len(e.col)
     zero = np.zeros(n_entries, dtype=np.int64)
@@ -99,7 +100,7 @@ def paint_runs(view, e):
     pixel_run = np.full(width * height, 4 * n_entries, dtype=np.int64)
     written = _paint(start, length, np.repeat(e.col, 4), 4 * (e.first + e.counts), height,
                      pixel_run)
-    return pixel_run, written
+    return pixel_run, written, start, length
 
 
 def fill_back_to_front(tables, state, view, e, light=True):
@@ -110,7 +111,7 @@ def fill_back_to_front(tables, state, view, e, light=True):
     keys = np.stack([floor_key + 1, upper_code, lower_code, floor_key], axis=1).reshape(-1)
     stripes, stripe = plane_stripes(tables, state, view, np.append(keys, tables.nothing_key),
                                     light)
-    pixel_run, written = paint_runs(view, e)
+    pixel_run, written = paint_runs(view, e)[:2]
     pixel = stripe.take(pixel_run) * height + row_numbers(width, height)
     colour = colour_columns(stripes, pixel, width, height)
     return colour, PainterRuns(e, len(e.col)), pixel_run, written

@@ -29,6 +29,7 @@ __all__ = ["entry_parts", "RunSurfaces", "shade", "fill_textured", "paint_textur
 SKY_COLUMNS = 1024            # sky texture columns in a full turn (DOOM's ANGLETOSKYSHIFT)
 SKY_ROW = 100.0               # the sky row at the horizon, and rows per unit of v
 SKY_ROWS_PER_V = 160.0
+FLAT_OFFSET = float(1 << 30)  # added to flat coordinates (a multiple of 64)
 
 
 def entry_parts(tables, tex, e):
@@ -55,48 +56,78 @@ def entry_parts(tables, tex, e):
 
 
 class RunSurfaces:
-    """Per run, what its pixels sample: ``plane`` says which shape; column runs have
-    ``column`` (atlas address of the texture column), ``t0``, ``t1``, ``wrap`` (texture
-    height) and ``level``; plane runs ``column`` (the flat's base), ``kx``, ``ky``, ``far``
-    and ``kl``.  ``kinds``, ``indices``, ``parts`` (0-3, 4 nothing) and ``entries`` describe
-    the runs; ``light=False`` puts every run at the unlit row."""
+    """Per run, what its pixels sample.  ``shape``: 0 a column run, 1 a plane run, 2 a
+    column run whose rows pass the padded column's end (wrapped per pixel).
 
-    def __init__(self, tables, tex, heights, state, view, e, kinds, indices, parts, entries,
-                 light=True):
+    Column runs: texel ``atlas[floor(t_abs + t1*row)]`` (``t_abs = column + t_rel``) at lut
+    offset ``level``; ``t_rel`` is reduced so that the part's first row, unclipped, reads
+    ``[0, height)``, and a run is wrapped (shape 2: ``column + floor(t_rel + t1*row) mod
+    wrap``) when its part, unclipped, runs past the padded column — decided per part, so
+    both renderers take the same path for the same pixel.  Plane runs: world point ``(ex,
+    ey) + (kx, ky) / (y0 - row)`` in the flat at ``column``, light from the frame's
+    per-plane, per-row table (``plane_slot``).  ``runs`` has ``kinds``, ``indices``,
+    ``parts`` (0-3, 4 nothing) and ``entries``."""
+
+    def __init__(self, tables, tex, heights, state, view, e, runs, light=True):
+        kinds, indices, parts, entries = runs.kinds, runs.indices, runs.parts, runs.entries
         n_runs = len(kinds)
         self.view, self.tex, self.light = view, tex, light
-        has_entry = entries < len(e.col)
-        entry = np.where(has_entry, entries, 0)
+        entry = np.where(entries < len(e.col), entries, 0)
         col = e.col[entry] if len(e.col) else np.zeros(n_runs, dtype=np.int64)
-        u = view.u[col]
-        self.plane = np.zeros(n_runs, dtype=bool)
+        self.shape = np.zeros(n_runs, dtype=np.int8)
         self.column = np.full(n_runs, tex.base[tex.black], dtype=np.int64)
-        self.t0 = np.zeros(n_runs)
-        self.t1 = np.zeros(n_runs)
-        self.wrap = np.ones(n_runs)
-        self.level = np.full(n_runs, UNLIT, dtype=np.int64)
-        self.kx, self.ky, self.far, self.kl = (np.zeros(n_runs) for _ in range(4))
+        self.t_rel, self.t1, self.kx, self.ky = (np.zeros(n_runs) for _ in range(4))
+        self.level = np.full(n_runs, UNLIT * tex.n_colours, dtype=np.int64)
+        self.plane_slot = np.zeros(n_runs, dtype=np.int64)
         wall = kinds == KIND_WALL
         sector = np.where(wall | (kinds == KIND_NOTHING), 0, indices).astype(np.int64)
         sky = (kinds == KIND_CEILING) & tables.sector_sky[sector]
         plane = ((kinds == KIND_CEILING) | (kinds == KIND_FLOOR)) & ~sky
+        column_runs = wall | sky
+        self.stride = np.full(n_runs, np.inf)           # column runs: their column's length
+        self.wrap = np.ones(n_runs, dtype=np.int64)     # and the texture's height
+        # the rows each part covers, unclipped: texture rows are reduced at its start
+        part = np.minimum(parts, 3)
+        reference = last_row = np.zeros(n_runs, dtype=np.int64)
+        if len(e.col):
+            reference = np.stack([np.zeros_like(e.p1), e.p1, e.l, e.fl])[part, entry]
+            last_row = np.stack([e.p1, e.u, e.fl, np.full_like(e.p1, view.height)])[
+                part, entry] - 1
         if wall.any():
             self._walls(np.flatnonzero(wall), tables, tex, heights, state, view, e,
-                        entry[wall], parts[wall])
+                        entry[wall], parts[wall], reference[wall])
         if sky.any():
-            self._sky(np.flatnonzero(sky), tex, view, u[sky], sector[sky])
+            self._sky(np.flatnonzero(sky), tex, view, view.u[col[sky]], sector[sky])
         if plane.any():
-            self._planes(np.flatnonzero(plane), tex, heights, state, view, u[plane],
+            self._planes(np.flatnonzero(plane), tex, heights, state, view, view.u[col[plane]],
                          sector[plane], kinds[plane] == KIND_CEILING)
+        end = self.t_rel + self.t1 * (last_row + 1.0)
+        self.shape[column_runs & (end >= self.stride - 1)] = 2
+        self.t_abs = self.column + self.t_rel
+        self.column32 = self.column.astype(np.int32)
+        self.level32 = self.level.astype(np.int32)
 
-    def _walls(self, runs, tables, tex, heights, state, view, e, entry, part):
+    def _column_texture(self, runs, texture, column, t0, t1, reference):
+        """Column runs of ``texture`` at texture column ``column``: rows ``t0 + t1*row``."""
+        tex = self.tex
+        height = tex.height[texture]
+        t1 = np.where(height > 1, t1, 0.0)                  # a colour: one texel
+        at_reference = t0 + t1 * reference
+        self.t_rel[runs] = at_reference - height * np.floor(at_reference / height) \
+            - t1 * reference
+        self.t1[runs] = t1
+        self.column[runs] = tex.base[texture] + column * tex.stride[texture]
+        self.stride[runs] = tex.stride[texture]
+        self.wrap[runs] = height
+
+    def _walls(self, runs, tables, tex, heights, state, view, e, entry, part, reference):
         key = np.repeat(e.keys, e.counts)[entry]
         one_sided = tables.key_far[key] < 0
         tpart = np.where(part == 1, 0, np.where(one_sided, 1, 2))    # upper, middle, lower
         texture = tex.key_texture[tpart, key]
         wall = tables.key_wall[key]
         texture = np.where(texture >= 0, texture, tex.wall_colour[wall, tpart])
-        width, height = tex.width[texture], tex.height[texture]
+        width = tex.width[texture]
         depth = 1.0 / e.w[entry]
         ray = view.u[e.col[entry]]
         px = view.x + depth * (view.fx + ray * view.rx) - tex.start[key, 0]
@@ -104,41 +135,53 @@ class RunSurfaces:
         along = np.abs(px * tex.direction[key, 0] + py * tex.direction[key, 1])
         x_offset = tex.x_offset[key] + np.where(key & 1, 0.0, state.wall_x_offset[wall])
         column = np.floor(x_offset + along).astype(np.int64) % width
-        self.column[runs] = tex.base[texture] + column * height
-        top = _tops(tables, tex, heights, key, tpart, height)
+        top = _tops(tables, tex, heights, key, tpart, tex.height[texture])
         step = depth / view.f
-        self.t0[runs] = top + tex.y_offset[key] - view.z - view.y0 * step
-        self.t1[runs] = step
-        self.wrap[runs] = height
+        self._column_texture(runs, texture, column,
+                             top + tex.y_offset[key] - view.z - view.y0 * step, step, reference)
         if self.light:
-            self.level[runs] = light_levels(key_light(tables, state)[key], e.w[entry])
+            level = light_levels(key_light(tables, state)[key], e.w[entry])
+            self.level[runs] = level * tex.n_colours
 
     def _sky(self, runs, tex, view, ray, sector):
         if tex.sky < 0:
-            self.column[runs] = tex.base[tex.sky_colour[sector]]
+            texture = tex.sky_colour[sector]
+            self._column_texture(runs, texture, 0, 0.0, 0.0, 0)
         else:
-            width, height = tex.width[tex.sky], tex.height[tex.sky]
+            width = tex.width[tex.sky]
             angle = view.angle - np.degrees(np.arctan(ray))
             column = np.floor(SKY_COLUMNS * angle / 360.0).astype(np.int64) % width
-            self.column[runs] = tex.base[tex.sky] + column * height
-            self.t0[runs] = SKY_ROW - SKY_ROWS_PER_V * view.y0 / view.f
-            self.t1[runs] = SKY_ROWS_PER_V / view.f
-            self.wrap[runs] = height
+            self._column_texture(runs, np.full(len(runs), tex.sky), column,
+                                 SKY_ROW - SKY_ROWS_PER_V * view.y0 / view.f,
+                                 SKY_ROWS_PER_V / view.f, 0)
         if self.light:
-            self.level[runs] = FULL_BRIGHT                        # the sky is never dimmed
+            self.level[runs] = FULL_BRIGHT * tex.n_colours      # the sky is never dimmed
 
     def _planes(self, runs, tex, heights, state, view, ray, sector, ceiling):
-        self.plane[runs] = True
+        self.shape[runs] = 1
         h = np.where(ceiling, heights.ceiling[sector], heights.floor[sector])
         fz = view.f * (h - view.z)
         self.column[runs] = tex.base[tex.plane_texture[sector, ceiling.astype(np.int64)]]
         self.kx[runs] = fz * (view.fx + ray * view.rx)
         self.ky[runs] = fz * (view.fy + ray * view.ry)
-        if self.light:
-            self.far[runs] = far_level(state.light[sector])
-            self.kl[runs] = LIGHT_DISTANCE / np.maximum(np.abs(fz), 1e-9)
-        else:
-            self.far[runs] = UNLIT
+        plane = 2 * sector + ceiling
+        ids, self.plane_slot[runs] = np.unique(plane, return_inverse=True)
+        self.plane_levels = _plane_levels(tex, heights, state, view, ids, self.light).astype(
+            np.int32).reshape(-1)
+
+
+def _plane_levels(tex, heights, state, view, planes, light):
+    """``(planes, H)`` lut row offsets: each plane's light level per screen row (DOOM's
+    flats are lit by row: one depth per row of a plane)."""
+    if not light:
+        return np.full((len(planes), view.height), UNLIT * tex.n_colours, dtype=np.int64)
+    sector, ceiling = planes >> 1, (planes & 1).astype(bool)
+    h = np.where(ceiling, heights.ceiling[sector], heights.floor[sector])
+    fz = np.abs(view.f * (h - view.z))
+    distance = np.abs(view.y0 - np.arange(view.height, dtype=np.float64))
+    inverse_depth = distance[None, :] / np.maximum(fz, 1e-9)[:, None]
+    level = light_levels(far_level(state.light[sector])[:, None], inverse_depth)
+    return level * tex.n_colours
 
 
 def _tops(tables, tex, heights, key, tpart, tex_height):
@@ -153,72 +196,111 @@ def _tops(tables, tex, heights, key, tpart, tex_height):
     return np.choose(tpart, [upper, middle, lower])
 
 
-def _row_tables(view):
-    rows = np.arange(view.height, dtype=np.float64)
-    with np.errstate(divide="ignore"):
-        inverse = 1.0 / (view.y0 - rows)
-    return inverse, np.abs(view.y0 - rows)
+_ROW_TABLES: dict = {}
+
+
+def _inverse_rows(view):
+    """``1 / (y0 - row)`` per screen row (inf at a row through the horizon)."""
+    key = view.height
+    table = _ROW_TABLES.get(key)
+    if table is None:
+        with np.errstate(divide="ignore"):
+            table = 1.0 / (view.y0 - np.arange(view.height, dtype=np.float64))
+        if len(_ROW_TABLES) > 8:
+            _ROW_TABLES.clear()
+        _ROW_TABLES[key] = table
+    return table
+
+
+def shade_columns(s: RunSurfaces, run, row):
+    """Packed rgb of column-run pixels (``run``, ``row``: their runs and screen rows)."""
+    t = s.t_abs.take(run)
+    t += s.t1.take(run) * row
+    colour = s.tex.atlas.take(t.astype(np.int32)).astype(np.int32)
+    colour += s.level32.take(run)
+    return s.tex.lut_flat.take(colour)
+
+
+def shade_wrapped(s: RunSurfaces, run, row):
+    """Packed rgb of pixels of column runs that pass their padded column's end."""
+    t = s.t_rel.take(run)
+    t += s.t1.take(run) * row
+    texel = t.astype(np.int64)
+    texel %= s.wrap.take(run)
+    texel += s.column.take(run)
+    colour = s.tex.atlas.take(texel).astype(np.int32)
+    colour += s.level32.take(run)
+    return s.tex.lut_flat.take(colour)
+
+
+def shade_planes(s: RunSurfaces, run, row):
+    """Packed rgb of plane-run pixels."""
+    tex, view = s.tex, s.view
+    inverse = _inverse_rows(view).take(row)
+    # far from zero, so that truncation is floor; a multiple of 64 keeps the texel
+    with np.errstate(invalid="ignore"):                 # a row through the horizon
+        x = (s.kx.take(run) * inverse + (view.x + FLAT_OFFSET)).astype(np.int32)
+        y = ((FLAT_OFFSET - view.y) - s.ky.take(run) * inverse).astype(np.int32)
+    x &= FLAT_SIDE - 1
+    x <<= 6
+    y &= FLAT_SIDE - 1
+    x |= y
+    x += s.column32.take(run)
+    colour = tex.atlas.take(x).astype(np.int32)
+    slot = s.plane_slot.take(run)
+    slot *= view.height
+    slot += row
+    colour += s.plane_levels.take(slot)
+    return tex.lut_flat.take(colour)
+
+
+SHADERS = (shade_columns, shade_planes, shade_wrapped)
 
 
 def shade(surfaces: RunSurfaces, run, row):
-    """Packed rgb of pixels given their run and screen row (both int64 arrays)."""
-    tex, view = surfaces.tex, surfaces.view
+    """Packed rgb of any pixels given their runs and screen rows."""
     out = np.empty(len(run), dtype="<u4")
-    plane = surfaces.plane[run]
-    if plane.all():
-        out[:] = _shade_planes(surfaces, tex, view, run, row)
-    elif not plane.any():
-        out[:] = _shade_columns(surfaces, tex, run, row)
-    else:
-        out[plane] = _shade_planes(surfaces, tex, view, run[plane], row[plane])
-        out[~plane] = _shade_columns(surfaces, tex, run[~plane], row[~plane])
+    shape = surfaces.shape.take(run)
+    for k, shader in enumerate(SHADERS):
+        mine = shape == k
+        if mine.any():
+            out[mine] = shader(surfaces, run[mine], row[mine])
     return out
 
 
-def _shade_columns(s, tex, run, row):
-    wrap = s.wrap[run]
-    t = s.t0[run] + s.t1[run] * row
-    t = np.floor(t - wrap * np.floor(t / wrap)).astype(np.int64)
-    np.minimum(t, wrap.astype(np.int64) - 1, out=t)        # t/wrap rounded up to 1
-    texel = tex.atlas.take(s.column[run] + t)
-    return tex.lut_flat.take(s.level[run] * tex.n_colours + texel)
+class _PartRuns:
+    """The runs of a front-to-back frame with their part numbers (the keys)."""
 
-
-def _shade_planes(s, tex, view, run, row):
-    inverse, distance = _row_tables(view)
-    inverse, distance = inverse[row], distance[row]
-    x = np.floor(view.x + s.kx[run] * inverse).astype(np.int64)
-    y = np.floor(-(view.y + s.ky[run] * inverse)).astype(np.int64)
-    texel = tex.atlas.take(s.column[run] + (x & (FLAT_SIDE - 1)) * FLAT_SIDE
-                           + (y & (FLAT_SIDE - 1)))
-    top = UNLIT if not s.light else FULL_BRIGHT
-    level = np.clip(np.floor(s.far[run] + s.kl[run] * distance), 0, top).astype(np.int64)
-    return tex.lut_flat.take(level * tex.n_colours + texel)
+    def __init__(self, runs):
+        self.kinds, self.indices, self.parts = runs.kinds, runs.indices, runs.keys
+        self.entries = runs.entries
 
 
 def fill_textured(tables, tex, heights, state, view, e, light=True):
     """Front to back with textures: ``(colour columns, Runs, windows, pixels written)``.
-    The runs are split by shape; each shape's pixels are made in one batch and written to
-    their places in the frame."""
+    Every pixel is first drawn as a column run (plane and wrapped runs read one harmless
+    texel there), then the plane and wrapped runs' pixels are drawn over, each in a batch."""
     width, height = view.width, view.height
     runs, windows = front_to_back_runs(tables, view, e, None, entry_parts(tables, tex, e))
-    surfaces = RunSurfaces(tables, tex, heights, state, view, e, runs.kinds, runs.indices,
-                           runs.keys, runs.entries, light)
+    s = RunSurfaces(tables, tex, heights, state, view, e, _PartRuns(runs), light)
     lengths = runs.lengths
+    column = s.shape == 0
+    t = np.repeat(np.where(column, s.t_abs, tex.base[tex.black]), lengths)
+    t += np.repeat(np.where(column, s.t1, 0.0), lengths) * row_numbers(width, height)
+    colour = tex.atlas.take(t.astype(np.int32)).astype(np.int32)
+    colour += np.repeat(s.level32, lengths)
+    colour = tex.lut_flat.take(colour)
     starts = np.cumsum(lengths) - lengths
-    colour = np.empty(width * height, dtype="<u4")
-    for plane, shade_runs in ((False, _shade_columns), (True, _shade_planes)):
-        chosen = np.flatnonzero(surfaces.plane == plane)
+    for shape in (1, 2):
+        chosen = np.flatnonzero(s.shape == shape)
         counts = lengths[chosen]
         n = int(counts.sum())
-        if not n:
-            continue
-        within = np.arange(n, dtype=np.int64) - np.repeat(np.cumsum(counts) - counts, counts)
-        run = np.repeat(chosen, counts)
-        pixel = starts[run] + within
-        row = pixel % height
-        colour[pixel] = shade_runs(surfaces, tex, run, row) if not plane else \
-            shade_runs(surfaces, tex, view, run, row)
+        if n:
+            within = np.arange(n, dtype=np.int64)
+            within -= np.repeat(np.cumsum(counts) - counts, counts)
+            run = np.repeat(chosen, counts)
+            pixel = starts.take(run) + within
+            colour[pixel] = SHADERS[shape](s, run, pixel % height)
     written = int(lengths[runs.kinds != KIND_NOTHING].sum())
     return colour.view(np.uint8).reshape(width, height, 4)[:, :, :3], runs, windows, written
 
@@ -228,8 +310,7 @@ def paint_textured(tables, tex, heights, state, view, e, light=True):
     pixels written)``; the same surfaces as front to back, so the same texels."""
     width, height = view.width, view.height
     runs = PainterRuns(e, len(e.col), entry_parts(tables, tex, e))
-    pixel_run, written = paint_runs(view, e)
-    surfaces = RunSurfaces(tables, tex, heights, state, view, e, runs.kinds, runs.indices,
-                           runs.parts, runs.entries, light)
+    pixel_run, written = paint_runs(view, e)[:2]
+    surfaces = RunSurfaces(tables, tex, heights, state, view, e, runs, light)
     colour = shade(surfaces, pixel_run, row_numbers(width, height))
     return colour.view(np.uint8).reshape(width, height, 4)[:, :, :3], runs, pixel_run, written

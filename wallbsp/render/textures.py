@@ -8,7 +8,8 @@ level 0-31 — the WAD's COLORMAP row ``31 - level`` for palette indices, ``rgb 
 (``light=False``).  A frame's colour is then ``lut[level, atlas[address]]``.
 
 Textures sit in ``atlas`` column-major, like ``Picture.pixels``: texel ``(u, t)`` of texture
-``i`` is ``atlas[base[i] + u*height[i] + t]``.  A flat is 64 × 64 with ``u`` its world x and
+``i`` is ``atlas[base[i] + u*stride[i] + t]``; a wall texture's column is repeated down to
+``stride`` texels (``PAD`` beyond its height), so ``t`` up to there needs no ``mod height``.  A flat is 64 × 64 with ``u`` its world x and
 ``t`` its world -y.  A surface whose texture no resource holds is drawn in its colour: a
 1 × 1 texture for wall parts, a 64 × 64 block for planes.
 
@@ -30,6 +31,8 @@ __all__ = ["LevelTextures", "UNLIT", "FLAT_SIDE", "side_geometry", "level_textur
 
 UNLIT = LIGHT_LEVELS          # lut row of a texel's own colour
 FLAT_SIDE = 64
+PAD = 256                     # texels a wall column is repeated beyond its height, so rows
+                              # of a part up to this tall need no wrapping
 PARTS = ("upper", "middle", "lower")
 
 
@@ -67,7 +70,7 @@ class _Packer:
         self.first_rgb = 0 if palette is None else 256
         self.rgb: dict[int, int] = {}               # packed rgb -> colour index
         self.pieces, self.size = [], 0
-        self.base, self.width, self.height = [], [], []
+        self.base, self.width, self.height, self.stride = [], [], [], []
 
     def rgb_indices(self, packed: np.ndarray) -> np.ndarray:
         uniq, inverse = np.unique(packed, return_inverse=True)
@@ -75,19 +78,24 @@ class _Packer:
                           for p in uniq.tolist()], dtype=np.int64)
         return index[inverse.reshape(packed.shape)]
 
-    def add(self, texels: np.ndarray) -> int:
-        """A texture of colour indices ``(width, height)``; returns its id."""
+    def add(self, texels: np.ndarray, pad: bool = False) -> int:
+        """A texture of colour indices ``(width, height)``; returns its id.  A padded one
+        has each column repeated down to at least ``height + PAD`` texels."""
+        height = texels.shape[1]
+        if pad:
+            texels = np.tile(texels, (1, -(-(height + PAD) // height)))
         self.base.append(self.size)
         self.width.append(texels.shape[0])
-        self.height.append(texels.shape[1])
+        self.height.append(height)
+        self.stride.append(texels.shape[1])
         self.pieces.append(texels.reshape(-1))
         self.size += texels.size
         return len(self.base) - 1
 
-    def add_picture(self, picture) -> int:
+    def add_picture(self, picture, pad: bool = False) -> int:
         if picture.paletted:
-            return self.add(picture.pixels.astype(np.int64))
-        return self.add(self.rgb_indices(_packed(picture.pixels)))
+            return self.add(picture.pixels.astype(np.int64), pad)
+        return self.add(self.rgb_indices(_packed(picture.pixels)), pad)
 
     def add_colour(self, color: str, side: int = 1) -> int:
         index = self.rgb_indices(_packed(np.array(_hex(color))))
@@ -129,7 +137,7 @@ class LevelTextures:
         def wall_texture(name):
             if name not in walls:
                 picture = resources.wall(name)
-                walls[name] = -1 if picture is None else packer.add_picture(picture)
+                walls[name] = -1 if picture is None else packer.add_picture(picture, True)
             return walls[name]
 
         self._key_textures(tables, state, wall_texture)
@@ -150,7 +158,7 @@ class LevelTextures:
                 plane[s, k] = found if found >= 0 else packer.add_colour(colours[k], FLAT_SIDE)
         self.plane_texture = plane                       # (sectors, floor/ceiling)
         sky = resources.sky(level) if hasattr(resources, "sky") else None
-        self.sky = -1 if sky is None else packer.add_picture(sky)
+        self.sky = -1 if sky is None else packer.add_picture(sky, True)
         self.sky_colour = np.array([packer.add_colour(s.ceiling_color) for s in level.sectors],
                                    dtype=np.int64)
         self.atlas = packer.atlas()
@@ -160,6 +168,7 @@ class LevelTextures:
         self.base = np.array(packer.base, dtype=np.int64)
         self.width = np.array(packer.width, dtype=np.int64)
         self.height = np.array(packer.height, dtype=np.int64)
+        self.stride = np.array(packer.stride, dtype=np.int64)
         (self.start, self.direction, self.x_offset, self.y_offset,
          self.has_side) = side_geometry(tables, level)
         walls_ = level.walls
