@@ -99,14 +99,15 @@ class ClipWindows:
             scale = self.view.f / d
             floor_row = np.ceil(self.view.y0 - (self.floor[sector] - self.view.z) * scale)
             ceiling_row = np.ceil(self.view.y0 - (self.ceiling[sector] - self.view.z) * scale)
-            bottom[other] = np.minimum(bottom[other], np.clip(floor_row, 0, height))
-            top[other] = np.maximum(top[other], np.clip(ceiling_row, 0, height))
+            bottom[other] = np.minimum(bottom[other], floor_row)     # may leave top > bottom:
+            top[other] = np.maximum(top[other], ceiling_row)         # nothing to draw
         return top, bottom
 
 
-def clipped(view, r1, r2, top, bottom):
-    """``[max(r1, top), min(r2, bottom))`` as int64, within the frame."""
-    lo = np.maximum(np.clip(r1, 0, view.height).astype(np.int64), top)
-    hi = np.minimum(np.clip(r2, 0, view.height).astype(np.int64), bottom)
+def clipped(r1, r2, top, bottom):
+    """``[max(r1, top), min(r2, bottom))`` as int64 (``top``, ``bottom`` within the frame
+    or an empty window), empty when it would end before it starts."""
+    lo = np.maximum(r1.astype(np.int64), top)
+    hi = np.minimum(r2.astype(np.int64), bottom)
     return lo, np.maximum(hi, lo)
 

@@ -23,7 +23,7 @@ from .frame import KIND_WALL
 from .shading import FULL_BRIGHT, light_levels
 from .tables import key_light
 
-__all__ = ["masked_slices"]
+__all__ = ["masked_slices", "has_masked_walls"]
 
 
 class _MaskedKeys:
@@ -73,6 +73,11 @@ def _masked_keys(tables, state, atlas) -> _MaskedKeys:
     return cached
 
 
+def has_masked_walls(tables, state, atlas) -> bool:
+    """Whether any two-sided wall of the level has a middle texture the atlas can draw."""
+    return _masked_keys(tables, state, atlas).any
+
+
 def masked_slices(view, state, tables, piece_keys, drawsegs, atlas, light=True):
     """``Slices`` of the masked middle textures of the drawn pieces (None when none):
     ``piece_keys`` are the side keys of the walk's pieces, ``drawsegs`` their entries."""
@@ -95,7 +100,7 @@ def masked_slices(view, state, tables, piece_keys, drawsegs, atlas, light=True):
     ceilings = np.minimum(state.ceiling[near], state.ceiling[far])
     top = np.where(keys.unpegged[key], floors + height, ceilings) + keys.y_offset[key]
     r1, r2, t0, tstep = texture_rows(view, top, height, depth)
-    row1, row2 = clipped(view, r1, r2, drawsegs.open_top[chosen], drawsegs.open_bottom[chosen])
+    row1, row2 = clipped(r1, r2, drawsegs.open_top[chosen], drawsegs.open_bottom[chosen])
     if light:
         level = light_levels(key_light(tables, state)[key], w)
     else:

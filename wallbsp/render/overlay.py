@@ -18,7 +18,7 @@ from ..resources import ResourceSet
 from .atlas import atlas_for
 from .clipping import ClipWindows, Slices
 from .fill import drawsegs, front_to_back_runs
-from .masked import masked_slices
+from .masked import has_masked_walls, masked_slices
 from .rows import Entries
 from .sprites import sprite_slices
 from .walk import walk_front_to_back
@@ -191,6 +191,13 @@ def draw_overlay(view, state, tables, heights, colour_columns, layers, stats, li
     windows)`` (the painter passes None, and a front-to-back walk is made for the windows
     it clips against); ``resources`` default to the level's.  Adds the pass's counts to
     ``stats`` and returns the frame's layers (the overlay written over ``layers``)."""
+    if resources is None:
+        resources = level_resources(state.tree)
+    things = state.things
+    if not (things.alive & things.drawn).any() and not has_masked_walls(
+            tables, state, atlas_for(resources)):
+        stats.update(things_considered=0, things_drawn=0, masked_columns=0)
+        return layers
     if front is None:
         walk = walk_front_to_back(tables, heights.key_solid, view, walk_boxes(state))
         entries = Entries(tables, heights, view, walk.pieces)
@@ -198,8 +205,6 @@ def draw_overlay(view, state, tables, heights, colour_columns, layers, stats, li
         windows = front_to_back_runs(tables, view, entries, (zeros, zeros))[1]
     else:
         walk, entries, windows = front
-    if resources is None:
-        resources = level_resources(state.tree)
     overlay, counts = draw_masked(view, state, tables, walk, entries,
                                   drawsegs(entries, windows), colour_columns, resources, light)
     stats.update(counts)

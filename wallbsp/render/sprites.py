@@ -89,8 +89,9 @@ def sprite_slices(view, state, things, ids, clip, atlas, light=True):
     _, _, _, width, height, left, top, _ = atlas.arrays()
     width, height, left, top = width[slot], height[slot], left[slot], top[slot]
     scale = view.f / depth
-    c1 = np.clip(np.ceil(view.x0 + (along - left) * scale), 0, view.width).astype(np.int64)
-    c2 = np.clip(np.ceil(view.x0 + (along - left + width) * scale), 0, view.width)
+    # np.maximum/np.minimum rather than np.clip: a fraction of its call cost
+    c1 = np.maximum(np.ceil(view.x0 + (along - left) * scale), 0).astype(np.int64)
+    c2 = np.minimum(np.ceil(view.x0 + (along - left + width) * scale), view.width)
     counts = np.maximum(c2.astype(np.int64) - c1, 0)
     feet = things.feet(ids, state.floor, state.ceiling)
     r1, r2, t0, tstep = texture_rows(view, feet + top, height, depth)
@@ -106,10 +107,10 @@ def sprite_slices(view, state, things, ids, clip, atlas, light=True):
                                                              counts)
     d = depth[sprite]
     tx = np.floor(view.u[col] * d - (along - left)[sprite]).astype(np.int64)
-    tx = np.clip(tx, 0, width[sprite] - 1)
+    tx = np.minimum(np.maximum(tx, 0), width[sprite] - 1)
     tx = np.where(mirrored[sprite], width[sprite] - 1 - tx, tx)
     win_top, win_bottom = clip.windows(col, d, things.sector[ids][sprite])
-    row1, row2 = clipped(view, r1[sprite], r2[sprite], win_top, win_bottom)
+    row1, row2 = clipped(r1[sprite], r2[sprite], win_top, win_bottom)
     seen = row2 > row1
     sprite, col, tx, row1, row2 = sprite[seen], col[seen], tx[seen], row1[seen], row2[seen]
     drawn = int(np.count_nonzero(np.diff(sprite))) + 1 if len(sprite) else 0
