@@ -12,7 +12,7 @@ from wallbsp import compile_level
 from wallbsp.camera import Camera, eye_camera
 from wallbsp.level import Level, Sector, Side, Start, Thing, Wall
 from wallbsp.render import render
-from wallbsp.render.overlay import level_resources
+from wallbsp.render.textures import level_resources
 from wallbsp.render.sprites import rotations
 from wallbsp.world import WorldState, static_state
 

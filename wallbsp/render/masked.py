@@ -22,43 +22,30 @@ from .clipping import Slices, clipped, texture_rows
 from .frame import KIND_WALL
 from .shading import FULL_BRIGHT, light_levels
 from .tables import key_light
+from .textures import side_geometry
 
 __all__ = ["masked_slices", "has_masked_walls"]
 
 
 class _MaskedKeys:
     """Per side key: the atlas slot of its middle texture now (-1: none), where the
-    texture starts and runs, and its offsets and pegging."""
+    texture starts and runs, and its offsets and pegging (``textures.side_geometry``)."""
 
     def __init__(self, tables, state, atlas):
         level = state.tree.level
-        n_keys = len(tables.key_wall)
         self.texture_version = state.texture_version
-        self.slot = np.full(n_keys, -1, dtype=np.int64)
-        self.start = np.zeros((n_keys, 2))
-        self.direction = np.zeros((n_keys, 2))
-        self.x_offset = np.zeros(n_keys)
-        self.y_offset = np.zeros(n_keys)
-        self.unpegged = np.zeros(n_keys, dtype=bool)
+        self.slot = np.full(len(tables.key_wall), -1, dtype=np.int64)
         for key in np.flatnonzero(tables.key_far >= 0).tolist():
-            wall, side = int(tables.key_wall[key]), key & 1
-            name = state.wall_texture(wall, side, "middle")
+            name = state.wall_texture(int(tables.key_wall[key]), key & 1, "middle")
             slot = None if name is None else atlas.wall_slot(name)
-            if slot is None:
-                continue
-            w = level.walls[wall]
-            a, b = level.vertices[w.v1], level.vertices[w.v2]
-            if side:
-                a, b = b, a
-            length = max(np.hypot(b[0] - a[0], b[1] - a[1]), 1e-12)
-            textures = w.back_side if side else w.front_side
-            self.slot[key] = slot
-            self.start[key] = a
-            self.direction[key] = ((b[0] - a[0]) / length, (b[1] - a[1]) / length)
-            self.x_offset[key] = textures.x_offset
-            self.y_offset[key] = textures.y_offset
-            self.unpegged[key] = w.lower_unpegged
+            if slot is not None:
+                self.slot[key] = slot
         self.any = bool((self.slot >= 0).any())
+        if self.any:
+            self.start, self.direction, self.x_offset, self.y_offset, _ = side_geometry(
+                tables, level)
+            self.unpegged = np.array([w.lower_unpegged for w in level.walls],
+                                     dtype=bool)[tables.key_wall]
 
 
 _KEYS: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()

@@ -14,17 +14,16 @@ import weakref
 
 import numpy as np
 
-from ..resources import ResourceSet
 from .atlas import atlas_for
 from .clipping import ClipWindows, Slices
 from .fill import drawsegs, front_to_back_runs
 from .masked import has_masked_walls, masked_slices
 from .rows import Entries
 from .sprites import sprite_slices
+from .textures import level_resources
 from .walk import walk_front_to_back
 
-__all__ = ["Overlay", "OverlayLayers", "draw_masked", "draw_overlay", "composite", "walk_boxes",
-           "level_resources"]
+__all__ = ["Overlay", "OverlayLayers", "draw_masked", "draw_overlay", "composite", "walk_boxes"]
 
 
 class Overlay:
@@ -153,7 +152,6 @@ def draw_masked(view, state, tables, walk, entries, drawsegs, colour_columns, re
 
 _NOTHING = Overlay(np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64), None)
 _BOXES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
-_RESOURCES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
 
 
 def walk_boxes(state):
@@ -166,23 +164,6 @@ def walk_boxes(state):
         cached = _BOXES[things] = (things.version,
                                    things.subtree_boxes().tolist() if drawn else None)
     return cached[1]
-
-
-def level_resources(tree):
-    """The level's ``ResourceSet`` (None for a level with no resources), opened once per
-    tree."""
-    if tree in _RESOURCES:
-        return _RESOURCES[tree]
-    found = _open_resources(tree.level)
-    try:
-        _RESOURCES[tree] = found
-    except TypeError:                          # a stand-in without weak references
-        pass
-    return found
-
-
-def _open_resources(level):
-    return ResourceSet.from_level(level) if level.resources else None
 
 
 def draw_overlay(view, state, tables, heights, colour_columns, layers, stats, light=True,
