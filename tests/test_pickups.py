@@ -4,7 +4,7 @@ import math
 from game_levels import corridor, room, rules_for, wall_between
 
 from wallbsp.game.inventory import Inventory
-from wallbsp.game.pickups import blocked_at, blocking_sides, pick_up, touch_pickups
+from wallbsp.game.pickups import blocked_at, pick_up, touch_pickups
 from wallbsp.level import Thing
 from wallbsp.segments import slide
 from wallbsp.thingtypes import DOOM_THING_TYPES
@@ -118,7 +118,7 @@ def test_solid_things_block_a_sliding_player():
     things = state.things
     assert blocked_at(things, 128 + 25, 64) and not blocked_at(things, 128 + 26, 64)
     assert not blocked_at(things, 160, 64)                      # items never block
-    sides = blocking_sides(things, 60, 64, 80)
+    sides = things.solid_sides(60, 64, 80)
     assert len(sides) == 4
     # walking east into the barrel (radius 10) stops 16 short of its box
     x, y = slide(60.0, 64.0, 80.0, 0.0, sides, 16.0)
@@ -127,4 +127,4 @@ def test_solid_things_block_a_sliding_player():
     x, y = slide(60.0, 64.0 + 20, 120.0, 0.0, sides, 16.0)
     assert x > 128 - 10 and y > 84.0                   # head on it stopped at 102
     assert max(abs(x - 128) - 10, abs(y - 64) - 10) >= 16 - 1e-6
-    assert blocking_sides(things, 400, 64, 40) == []
+    assert things.solid_sides(400, 64, 40) == []

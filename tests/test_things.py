@@ -109,3 +109,26 @@ def test_world_state_has_the_skill_three_things():
     tree = three_rooms([Thing(64, 64, 0, CLIP, 2), Thing(64, 80, 0, CLIP, 4)])
     assert WorldState(tree).things.alive.tolist() == [True, False]
     assert WorldState(tree, skill=5).things.alive.tolist() == [False, True]
+
+
+def test_subtree_boxes_hold_every_drawn_thing_and_follow_moves():
+    """A view walk culls subtrees by box: a thing's leaf must never be culled while the
+    thing could be seen, so every box on the way down to it holds it."""
+    tree = three_rooms([Thing(64, 64, 0, CLIP, 7), Thing(320, 20, 0, BARREL, 7)])
+    things = level_things(tree)
+
+    def held(i):
+        node, x, y = tree.root, things.x[i], things.y[i]
+        boxes = things.subtree_boxes()
+        ok = True
+        while node >= 0:
+            x0, y0, x1, y1 = boxes[node]
+            ok &= bool(x0 < x < x1 and y0 < y < y1)
+            a, b, c = tree.node_line[node]
+            node = tree.node_child[node][0 if a * x + b * y + c <= 0 else 1]
+        return ok
+
+    assert held(0) and held(1)
+    assert (things.subtree_boxes()[:, :2] <= tree.node_bbox[:, :2]).all()
+    things.move(1, 200, 100)
+    assert held(1)

@@ -31,7 +31,7 @@ import weakref
 import numpy as np
 
 from .geometry import exact_side
-from .thingtypes import DEATHMATCH_START, PLAYER_STARTS, SPAWNCEILING, thing_info
+from .thingtypes import DEATHMATCH_START, PLAYER_STARTS, SOLID, SPAWNCEILING, thing_info
 
 __all__ = ["Things", "level_things", "spawned_at", "locate_leaves", "MULTIPLAYER_ONLY"]
 
@@ -295,6 +295,15 @@ class Things:
         sides = np.stack([np.stack([x0, y0, x1, y0], 1), np.stack([x1, y0, x1, y1], 1),
                           np.stack([x1, y1, x0, y1], 1), np.stack([x0, y1, x0, y0], 1)], 1)
         return [tuple(side) for side in sides.reshape(-1, 4).tolist()]
+
+    def solid_sides(self, x, y, reach) -> list:
+        """``(x1, y1, x2, y2)`` sides of the boxes of the alive solid things that come within
+        ``reach`` of (x, y), as blocking segments for a mover's sweep (``queries.move``
+        gathers walls within a sub-step's length plus its radius).  DOOM blocks a solid
+        thing at every height (its thing collision ignores z; most decorations are 16 high
+        in its table), so z plays no part."""
+        near = self.overlapping(x, y, reach, SOLID)
+        return self.box_sides(near) if near.size else []
 
     def feet(self, i, floor, ceiling) -> np.ndarray:
         """Feet heights of things ``i`` with sector heights ``floor``/``ceiling`` now: the

@@ -6,10 +6,9 @@
   feet and no higher than its head, 56 above them).  Each one the inventory takes is
   removed from the world; one it refuses stays where it is.  Call it after the player's
   move every tic, at the new position (DOOM touches items while checking the new spot).
-- ``blocking_sides(things, x, y, reach, radius)``: the sides of the solid things' boxes near
-  a mover, as blocking segments for ``queries.move``'s sweep.  DOOM blocks a solid thing at
-  every height (its thing collision ignores z, and most decorations are 16 high in its
-  table), so z plays no part.
+- ``blocked_at(things, x, y)``: whether a player there overlaps a solid thing's box
+  (DOOM's P_CheckPosition refusal).  The sides of those boxes, for the movement's sweep,
+  are ``Things.solid_sides`` (world stage, so ``queries.move`` can use them).
 """
 from __future__ import annotations
 
@@ -17,7 +16,7 @@ from ..thingtypes import COUNTITEM, SOLID, SPECIAL
 from .inventory import BLUE, GREEN, Inventory
 
 __all__ = ["PLAYER_RADIUS", "PLAYER_HEIGHT", "BELOW_REACH", "pick_up", "touch_pickups",
-           "blocking_sides", "blocked_at"]
+           "blocked_at"]
 
 PLAYER_RADIUS = 16
 PLAYER_HEIGHT = 56
@@ -79,11 +78,3 @@ def blocked_at(things, x, y, radius=PLAYER_RADIUS) -> bool:
     """Whether a mover of ``radius`` at (x, y) overlaps a solid thing's box (DOOM refuses
     such a move: P_CheckPosition)."""
     return bool(things.overlapping(x, y, radius, SOLID).size)
-
-
-def blocking_sides(things, x, y, reach) -> list:
-    """``(x1, y1, x2, y2)`` sides of the boxes of the solid things that come within
-    ``reach`` of (x, y) (a sub-step's length plus the mover's radius, as ``queries.move``
-    gathers its walls), for the mover's circle to slide along."""
-    near = things.overlapping(x, y, reach, SOLID)
-    return things.box_sides(near) if near.size else []
