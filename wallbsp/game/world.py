@@ -71,7 +71,7 @@ class World:
         self._use_held = False
         self._touching = None              # ((x, y), sectors the player's circle touches)
         self._sector = None                # ((x, y), sector under the centre)
-        self._rest = None                  # state version when the player last stood still
+        self._rest = None                  # heights around the player when it last stood still
         self._tallest = None               # (things version, tallest shootable by sector)
         start = self.level.start
         self.player = spawn_player(self.state, start.x, start.y, start.angle)
@@ -144,10 +144,10 @@ class World:
         if pressed and not self.dead and not self.frozen:
             self._use()
         self._in_sector()
-        version = self.state.version
+        around = self._heights_around()
         self.rules.tic()
         self._tic_powers()
-        if self.state.version != version:
+        if self._heights_around() != around:
             self._clip_player()
 
     # -- the steps of a tic ---------------------------------------------------------------------
@@ -166,17 +166,25 @@ class World:
 
     def _at_rest(self, forward, strafe, turn) -> bool:
         """Whether this tic's step would change nothing: no input, no motion, feet on the
-        floor, view settled and the heights as they were when the player last stood still
-        (a player standing in a big map then costs nothing)."""
+        floor, view settled and the heights around the player as they were when it last
+        stood still (a player standing in a big map then costs nothing, wherever doors
+        move)."""
         p = self.player
         still = not (forward or strafe or turn or p.momx or p.momy or p.momz or p.view_delta)
         if not (still and p.z == p.floor):
             self._rest = None
             return False
-        if self._rest == self.state.version:
+        around = self._heights_around()
+        if self._rest == around:
             return True
-        self._rest = self.state.version
+        self._rest = around
         return False
+
+    def _heights_around(self) -> tuple:
+        """Floors and ceilings of the sectors the player's circle touches: all that its
+        floorz and ceilingz depend on."""
+        state = self.state
+        return tuple((state.floor[s], state.ceiling[s]) for s in self._touched_sectors())
 
     def _crossed(self, before) -> None:
         p = self.player

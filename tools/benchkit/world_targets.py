@@ -1,0 +1,176 @@
+"""The world's targets (SPEC §8); prints one JSON object.
+
+    python tools/bench_world.py            # the full run (about a minute)
+    python tools/bench_world.py --quick    # a smoke run
+
+1. ``World.tic`` on MAP12 (freedoom2.wad, the largest map) with every mover idle: the player
+   standing at the start, the level's light effects running; the median of single tics.
+   Target ≤ 0.1 ms.
+2. ``World.tic`` on MAP12 with 20 movers active: 20 doors opened at once (their lines used
+   through the world's rules), each tic timed while all 20 move.  Target ≤ 0.5 ms.
+3. Rendering a ``World`` against rendering the static tree along the scripted E1M1 walk
+   (walk.py; freedoom1.wad), 320x200 front to back: every door of the map opened at the
+   start and one tic run before each frame, so the renderer meets changed heights; the two
+   frames of a camera timed one after the other, alternately first; the ratio of the summed
+   frame times of a pass, the median over the passes.  Target ≤ 1.10.
+
+Without the Freedoom WADs it prints what is missing and measures nothing.  The full run
+rewrites the "world" section of docs/benchmarks.md (not with --quick or --no-docs).
+"""
+from __future__ import annotations
+
+import statistics
+import time
+
+from wallbsp import World, compile_level, render
+
+from .freedoom import FREEDOOM, absent_wads, load_map
+from .report import machine, machine_line, markdown_table, run_script, script_parser
+from .walk import walk_frames, walk_path
+
+IDLE_TARGET_MS, ACTIVE_TARGET_MS, RENDER_TARGET = 0.1, 0.5, 1.10
+ACTIVE_MOVERS = 20
+SIZE = (320, 200)
+ALL_KEYS = ("blue", "red", "yellow")
+
+
+def main(argv=None) -> int:
+    parser = script_parser(__doc__, "a smoke run: fewer tics, a 30-frame walk")
+    return run_script(parser, run, "world", section, argv=argv)
+
+
+def run(args) -> dict:
+    missing = absent_wads()
+    if missing:
+        return {"machine": machine(), "quick": args.quick, "missing": missing}
+    tics = 200 if args.quick else 3000
+    map12 = compile_level(load_map(FREEDOOM[1], "MAP12"))
+    e1m1 = compile_level(load_map(FREEDOOM[0], "E1M1"))
+    return {"machine": machine(), "quick": args.quick,
+            "idle": idle_tics(map12, tics),
+            "active": active_tics(map12, ACTIVE_MOVERS),
+            "render": render_ratio(e1m1, 30 if args.quick else walk_frames(),
+                                   1 if args.quick else 5)}
+
+
+def timed_tics(world, count: int) -> list[float]:
+    times = []
+    for _ in range(count):
+        started = time.perf_counter()
+        world.tic()
+        times.append(time.perf_counter() - started)
+    return times
+
+
+def idle_tics(tree, count: int) -> dict:
+    world = World(tree)
+    timed_tics(world, 35)                     # the player settles; caches are built
+    times = timed_tics(world, count)
+    median = 1000 * statistics.median(times)
+    return {"map": "MAP12", "tics": count, "active_movers": world.rules.active_movers,
+            "light_effects": len(world.rules.lights), "median_ms": round(median, 4),
+            "p90_ms": round(1000 * sorted(times)[int(0.9 * len(times))], 4),
+            "target_ms": IDLE_TARGET_MS, "meets_target": median <= IDLE_TARGET_MS}
+
+
+def door_lines(world, count: int) -> list[int]:
+    """An opening line of each of up to ``count`` shut doors (manual, two-sided, not
+    blazing), the doors that open furthest first (they move longest)."""
+    from wallbsp.game.specials import LINE_SPECIALS
+    lines = {}
+    for i, wall in enumerate(world.level.walls):
+        entry = LINE_SPECIALS.get(wall.special)
+        if (entry is not None and entry.trigger == "D" and wall.back is not None
+                and "BLAZE" not in str(entry.arg)):          # blazing doors are soon open
+            floor, ceiling, _light = world.sector(wall.back)
+            if ceiling - floor < 1:
+                lines.setdefault(wall.back, i)
+    rise = {s: world.rules.neighbours.lowest_ceiling(world.state, s) - world.sector(s)[1]
+            for s in lines}
+    return [lines[s] for s in sorted(lines, key=lambda s: (-rise[s], s))[:count]]
+
+
+def active_tics(tree, count: int) -> dict:
+    world = World(tree)
+    timed_tics(world, 35)
+    for line in door_lines(world, count):
+        world.rules.use_line(line, 0, keys=ALL_KEYS)
+    started = world.rules.active_movers
+    times = []
+    while world.rules.active_movers >= count and len(times) < 60:
+        before = world.state.ceiling.copy()
+        times += timed_tics(world, 1)
+        if (world.state.ceiling != before).sum() < count:
+            times.pop()                       # a door reached the top: not all moving
+            break
+    median = 1000 * statistics.median(times) if times else None
+    return {"map": "MAP12", "movers_started": started, "tics_with_all_moving": len(times),
+            "median_ms": None if median is None else round(median, 4),
+            "target_ms": ACTIVE_TARGET_MS,
+            "meets_target": median is not None and median <= ACTIVE_TARGET_MS}
+
+
+def render_ratio(tree, frames: int, passes: int) -> dict:
+    """Each pass: a fresh World with every door of the map opened at the start, one tic
+    (untimed) before each frame, so the heights the renderer reads change between frames;
+    the World's frame and the tree's at the same camera, alternately first."""
+    cameras = walk_path(tree, frames)
+    render(tree, cameras[0], *SIZE)
+    static, live, moving, ratios = 0.0, 0.0, 0, []
+    for _ in range(passes):
+        before = (static, live)
+        world = World(tree)
+        for line in door_lines(world, len(world.level.walls)):
+            world.rules.use_line(line, 0, keys=ALL_KEYS)
+        render(world, cameras[0], *SIZE)
+        for i, camera in enumerate(cameras):
+            version = world.state.version
+            world.tic()
+            moving += world.state.version != version
+            if i % 2:
+                live += _frame_seconds(world, camera)
+                static += _frame_seconds(tree, camera)
+            else:
+                static += _frame_seconds(tree, camera)
+                live += _frame_seconds(world, camera)
+        ratios.append((live - before[1]) / (static - before[0]))
+    ratio = statistics.median(ratios)      # a pass disturbed by other work counts once
+    count = passes * len(cameras)
+    return {"map": "E1M1", "frames": len(cameras), "passes": passes,
+            "frames_with_moving_heights": moving, "size": f"{SIZE[0]}x{SIZE[1]}",
+            "static_ms": round(1000 * static / count, 3),
+            "world_ms": round(1000 * live / count, 3),
+            "ratio": round(ratio, 4), "pass_ratios": [round(r, 4) for r in ratios],
+            "target": RENDER_TARGET, "meets_target": ratio <= RENDER_TARGET}
+
+
+def _frame_seconds(source, camera) -> float:
+    started = time.perf_counter()
+    render(source, camera, *SIZE)
+    return time.perf_counter() - started
+
+
+def section(result: dict) -> str:
+    head = ["## The world's targets",
+            f"Regenerate: `python tools/bench_world.py`. {machine_line(result['machine'])}"]
+    if "missing" in result:
+        return "\n\n".join(head + [f"Not measured: {', '.join(result['missing'])} missing."])
+    idle, active, frames = result["idle"], result["active"], result["render"]
+    yes = lambda met: "yes" if met else "NO"            # noqa: E731
+    rows = [["`World.tic`, every mover idle (MAP12)", f"{idle['median_ms']} ms (median)",
+             f"≤ {idle['target_ms']} ms", yes(idle["meets_target"])],
+            [f"`World.tic`, {active['movers_started']} doors moving (MAP12)",
+             f"{active['median_ms']} ms (median of {active['tics_with_all_moving']} tics)",
+             f"≤ {active['target_ms']} ms", yes(active["meets_target"])],
+            [f"render a World / the static tree (E1M1 walk, {frames['size']})",
+             f"{frames['ratio']} ({frames['world_ms']} / {frames['static_ms']} ms a frame)",
+             f"≤ {frames['target']}", yes(frames["meets_target"])]]
+    return "\n\n".join(head + [
+        "Single tics timed with `time.perf_counter`, the player standing at the start; the "
+        f"idle world still runs its {idle['light_effects']} light effects; the 20 doors are "
+        "the map's slowest shut doors (not blazing), used at once. The render ratio is that of the summed frame "
+        f"times of {frames['frames']} frames, world and tree interleaved, the median of "
+        f"{frames['passes']} passes ({', '.join(map(str, frames['pass_ratios']))}); "
+        f"every door of E1M1 opened at the start and a tic run before each frame (heights "
+        f"changed before {frames['frames_with_moving_heights']} of the world's frames).",
+        markdown_table(["measure", "value", "target", "met"], rows)])
