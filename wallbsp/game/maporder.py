@@ -24,8 +24,8 @@ def next_map(names, current: str, exit: str = "normal") -> str | None:
     """The map after ``current`` among ``names`` (the WAD's maps) for ``exit``
     (``"normal"`` or ``"secret"``)."""
     present = {n.upper(): n for n in names}
-    wanted = _doom_next(current.upper(), exit == "secret")
-    if wanted is not None:
+    doom_name, wanted = _doom_next(current.upper(), exit == "secret")
+    if doom_name:
         return present.get(wanted)
     order = [n.upper() for n in names]
     if current.upper() in order:
@@ -49,21 +49,22 @@ def following_maps(wad_path, first: str, make_tree, list_maps):
     return following
 
 
-def _doom_next(name: str, secret: bool) -> str | None:
+def _doom_next(name: str, secret: bool) -> tuple[bool, str | None]:
+    """``(whether name is one of DOOM's, the map after it or None at the end)``."""
     episode = re.fullmatch(r"E(\d)M(\d)", name)
     if episode:
         e, m = int(episode.group(1)), int(episode.group(2))
         if secret and m != 9:
-            return f"E{e}M9"
+            return True, f"E{e}M9"
         if m == 9:
-            return f"E{e}M{_AFTER_SECRET.get(e, 1)}"
-        return f"E{e + 1}M1" if m == 8 else f"E{e}M{m + 1}"
+            return True, f"E{e}M{_AFTER_SECRET.get(e, 1)}"
+        return True, f"E{e + 1}M1" if m == 8 else f"E{e}M{m + 1}"
     number = re.fullmatch(r"MAP(\d\d)", name)
     if number:
         n = int(number.group(1))
         if secret and n in (15, 31):
-            return f"MAP{n + 16 if n == 15 else 32}"
+            return True, f"MAP{n + 16 if n == 15 else 32}"
         if n in (31, 32):
-            return "MAP16"
-        return None if n >= 30 else f"MAP{n + 1:02d}"
-    return None
+            return True, "MAP16"
+        return True, None if n >= 30 else f"MAP{n + 1:02d}"
+    return False, None

@@ -1,0 +1,144 @@
+"""The walkthrough runs the game's World: E or Space uses, messages show, the view is
+blended between tics, an exit restarts the level or goes on to the next one, the readout
+shows the world; and which map follows which (game.maporder)."""
+import os
+
+os.environ["SDL_VIDEODRIVER"] = "dummy"       # before pygame is imported: never open a window
+
+import numpy as np   # noqa: E402
+import pygame        # noqa: E402
+import pytest        # noqa: E402
+
+from wallbsp import app, compile_level, hud, render   # noqa: E402
+from wallbsp.game.demo import demo_for            # noqa: E402
+from wallbsp.game.maporder import following_maps, next_map   # noqa: E402
+from wallbsp.game.player import TICRATE           # noqa: E402
+from wallbsp.level import Side                    # noqa: E402
+
+from game_levels import corridor, north_wall, room   # noqa: E402
+
+DT = 1 / TICRATE
+
+
+def door_tree(special=1):
+    return compile_level(corridor([room(), room(ceiling=0), room()],
+                                  between={0: dict(special=special)}))
+
+
+@pytest.fixture
+def opened():
+    """Open walkthroughs, closed afterwards."""
+    walks = []
+
+    def open_walk(tree):
+        walk = app.Walkthrough.at_start(tree, (80, 50), (160, 100))
+        app.open_display(walk)
+        walks.append(walk)
+        return walk
+    yield open_walk
+    for walk in walks:
+        app.close_display(walk)
+
+
+def frames(walk, count, dt=DT):
+    for _ in range(count):
+        app.step_frame(walk, dt)
+
+
+@pytest.mark.parametrize("key", [pygame.K_e, pygame.K_SPACE])
+def test_e_or_space_uses_the_door_ahead(opened, key):
+    walk = opened(door_tree())
+    walk.world.place_player(100, 64, 0)
+    pygame.event.post(pygame.event.Event(pygame.KEYDOWN, key=key, mod=0))
+    pygame.event.post(pygame.event.Event(pygame.KEYUP, key=key, mod=0))   # a tap between tics
+    frames(walk, 20)
+    assert walk.world.sector(1)[1] > 30
+
+
+def test_the_world_says_what_a_locked_door_needs(opened):
+    walk = opened(door_tree(special=26))
+    walk.world.place_player(100, 64, 0)
+    walk.held = {pygame.K_e}
+    frames(walk, 2)
+    assert walk.message == "needs the blue key"
+    assert any("tic 2" in line and "movers 0" in line and "secrets 0/0" in line
+               for line in hud.readout_lines(walk))
+
+
+def test_the_view_is_blended_between_the_last_two_tics(opened):
+    walk = opened(door_tree())
+    walk.held = {pygame.K_w}
+    frames(walk, 5)
+    before, now = walk.previous, walk.world.camera(walk.fov)
+    assert now.x > before.x
+    half = app.view_camera(walk, 0.5)
+    assert half.x == pytest.approx((before.x + now.x) / 2)
+    assert app.view_camera(walk, 1.0) == now
+    tic = walk.world.tic_count
+    app.step_frame(walk, 0.5 * DT)                  # half a tic: no tic, the view in between
+    assert walk.world.tic_count == tic
+    drawn = render(walk.world, app.view_camera(walk, 0.5), *walk.size).color
+    assert np.array_equal(walk.frame.color, drawn)
+    assert app.view_camera(walk, 0.5).x != walk.world.camera().x      # still moving
+
+
+def exit_tree(special=52):
+    return compile_level(corridor([room(), room()], between={0: dict(
+        special=special, front_side=Side(middle="SW1EXIT"))}))
+
+
+def test_an_exit_starts_the_level_again(opened):
+    walk = opened(exit_tree())
+    first = walk.world
+    walk.world.place_player(100, 64, 0)
+    walk.held = {pygame.K_w}
+    frames(walk, 10)
+    assert walk.world is not first and walk.world.tree is first.tree
+    assert walk.world.exited is None and "exit" in walk.message
+
+
+def test_an_exit_goes_on_to_the_next_level_and_stops_recording(opened):
+    walk = opened(exit_tree(special=124))
+    other = door_tree()
+    asked = []
+    walk.next_level = lambda kind: asked.append(kind) or other
+    walk.demo = demo_for(walk.world.level)
+    walk.world.place_player(100, 64, 0)
+    walk.held = {pygame.K_w}
+    frames(walk, 10)
+    assert asked == ["secret"] and walk.world.tree is other
+    assert walk.demo is None
+
+
+def test_a_headless_walk_records_its_tics():
+    tree = door_tree()
+    demo = demo_for(tree.level)
+    app.run_walkthrough(tree, frames=3, turn=4.0, size=(40, 25), demo=demo)
+    assert demo.tics == [(0.0, 0.0, 4.0, False, False)] * 3
+
+
+# -- which map follows which ------------------------------------------------------------------
+
+DOOM1 = [f"E{e}M{m}" for e in (1, 2) for m in range(1, 10)]
+DOOM2 = [f"MAP{n:02d}" for n in range(1, 33)]
+
+
+@pytest.mark.parametrize("names, current, exit, expected", [
+    (DOOM1, "E1M1", "normal", "E1M2"), (DOOM1, "E1M3", "secret", "E1M9"),
+    (DOOM1, "E1M9", "normal", "E1M4"), (DOOM1, "E2M9", "normal", "E2M6"),
+    (DOOM1, "E1M8", "normal", "E2M1"), (DOOM1, "E2M8", "normal", None),
+    (DOOM2, "MAP01", "normal", "MAP02"), (DOOM2, "MAP15", "secret", "MAP31"),
+    (DOOM2, "MAP31", "secret", "MAP32"), (DOOM2, "MAP31", "normal", "MAP16"),
+    (DOOM2, "MAP32", "normal", "MAP16"), (DOOM2, "MAP30", "normal", None),
+    (DOOM2[:5], "MAP05", "normal", None), (["START", "HUB", "END"], "hub", "normal", "END"),
+    (["START"], "OTHER", "normal", None)])
+def test_next_map(names, current, exit, expected):
+    assert next_map(names, current, exit) == expected
+
+
+def test_following_maps_follow_the_one_being_played():
+    made = []
+    following = following_maps("x.wad", "MAP01", lambda wad, name: made.append(name) or name,
+                               lambda wad: DOOM2[:3])
+    assert [following("normal") for _ in range(3)] == ["MAP02", "MAP03", None]
+    assert made == ["MAP02", "MAP03"]
