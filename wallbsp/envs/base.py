@@ -43,7 +43,8 @@ class WallbspEnv(gym.Env):
     """The shared part of the wallbsp environments (module docstring).  A task defines
     ``episode_tree()`` (the compiled tree of the episode about to start, drawn with
     ``self.np_random``), ``tic_reward(world)`` → ``(reward, done)`` after each tic and may
-    extend ``episode_info()``."""
+    extend ``episode_info()``.  ``world``: the ``World`` of the episode; ``frame``: the
+    frame drawn for the last observation (None when none was drawn)."""
 
     metadata = {"render_modes": ["rgb_array", "human"], "render_fps": TICRATE}
     default_max_tics = 35 * 60
@@ -67,7 +68,8 @@ class WallbspEnv(gym.Env):
         self.observation_space = observation_space(self.keys, self.width, self.height)
         self.metadata = {**self.metadata, "render_fps": TICRATE / self.frame_skip}
         self.world = None
-        self._frame = self._automap = self._window = None
+        self.frame = None
+        self._automap = self._window = None
         self._tics = 0
 
     # -- what a task provides -------------------------------------------------------------
@@ -128,13 +130,13 @@ class WallbspEnv(gym.Env):
     # -- observations -----------------------------------------------------------------------
     def _view(self):
         """The frame of the player's view now (drawn at most once per step)."""
-        if self._frame is None:
-            self._frame = render(self.world, self.world.camera(self.fov), self.width,
+        if self.frame is None:
+            self.frame = render(self.world, self.world.camera(self.fov), self.width,
                                  self.height, textures=self.textures)
-        return self._frame
+        return self.frame
 
     def _observe(self) -> dict:
-        self._frame = None
+        self.frame = None
         obs = view_observation(self._view(), self.keys) if VIEW_KEYS & set(self.keys) else {}
         if "automap" in self.keys:
             obs["automap"] = self._map_picture()

@@ -129,7 +129,7 @@ class FindEnv(_GeneratedEnv):
     def episode_info(self) -> dict:
         info = {**super().episode_info(), "target": int(self.generated.target),
                 "found": self.found}
-        frame = self._frame
+        frame = self.frame
         if frame is not None:
             info["target_visible"] = bool(((frame.kind == 4)
                                            & (frame.index == self.generated.target)).any())
