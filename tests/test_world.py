@@ -113,8 +113,7 @@ def test_render_draws_the_world_as_it_is_now():
     world = world_of(door_level())
     world.place_player(100, 64, 0)
     shut = render(world, world.camera(), 64, 40).color
-    world.tic(use=True)
-    still(world, 60)
+    world = used_door()
     opened = render(world, world.camera(), 64, 40)
     assert not np.array_equal(shut, opened.color)
     assert np.array_equal(opened.color, render(world.state, world.camera(), 64, 40).color)
@@ -152,11 +151,17 @@ def test_locked_door_says_which_key_it_needs():
     assert world.rules.active_movers == 0
 
 
-def test_a_door_closing_on_the_player_goes_back_up():
+def used_door():
+    """The door level with its door used from room 0 and opened."""
     world = world_of(door_level())
     world.place_player(100, 64, 0)
     world.tic(use=True)
     still(world, 60)
+    return world
+
+
+def test_a_door_closing_on_the_player_goes_back_up():
+    world = used_door()
     world.place_player(192, 64, 0)                        # stand in the doorway
     assert world.tree.locate(world.player.x, world.player.y) == 1
     tops = []
@@ -170,10 +175,7 @@ def test_a_door_closing_on_the_player_goes_back_up():
 
 
 def test_the_door_closes_when_the_player_has_gone():
-    world = world_of(door_level())
-    world.place_player(100, 64, 0)
-    world.tic(use=True)
-    still(world, 40)
+    world = used_door()
     assert walk_to(world, 300)
     still(world, 250)
     assert world.sector(1)[1] == 0.0 and world.rules.active_movers == 0
