@@ -56,22 +56,37 @@ def composite(slices: Slices, atlas, colour_columns, height) -> Overlay:
     last_row = tex_height[slices.slot] - 1
     base = offset[slices.slot] + slices.tx * (last_row + 1)
     first_pixel = slices.col * height
-    # one entry per pixel, slices in their order
+    shift = np.cumsum(counts) - counts - slices.top
+    # one entry per pixel, slices in their order (int64: numpy indexes with it as is)
     which = np.repeat(np.arange(len(counts)), counts)
-    row = np.arange(len(which), dtype=np.int64) - (np.cumsum(counts) - counts - slices.top)[which]
+    row = np.arange(len(which)) - shift[which]
     ty = (slices.t0[which] + row * slices.tstep[which]).astype(np.int64)   # >= 0: trunc = floor
     texel = base[which] + np.minimum(ty, last_row[which])                    # rounding at the foot
     keep = opaque[texel]
     pixel = first_pixel[which] + row
-    if _overlapping(slices, height):                        # among the opaque texels
-        solid = np.flatnonzero(keep)
-        keep[solid] = _nearest(pixel[solid], which[solid], slices.depth,
-                               colour_columns.shape[0] * height)
+    shared = _shared_columns(slices, height)
+    if shared is not None:                 # the opaque texels of columns slices share
+        contested = np.flatnonzero(keep & shared[which])
+        keep[contested] = _nearest(pixel[contested], which[contested], slices.depth,
+                                   colour_columns.shape[0] * height)
     which, pixel, texel = which[keep], pixel[keep], texels[texel[keep]]
     packed = _lit(atlas, paletted[slices.slot], slices.level, which, texel)
-    flat = colour_columns.reshape(-1, 3)
-    flat[pixel] = packed.view(np.uint8).reshape(-1, 4)[:, :3]
+    whole = _packed_pixels(colour_columns)
+    if whole is not None:
+        whole[pixel] = packed
+    else:
+        colour_columns.reshape(-1, 3)[pixel] = packed.view(np.uint8).reshape(-1, 4)[:, :3]
     return Overlay(pixel, which, slices)
+
+
+def _packed_pixels(colour_columns):
+    """The frame as one packed uint32 per pixel, when ``colour_columns`` is the rgb view of
+    such a buffer (as every fill makes it): one write a pixel instead of three bytes."""
+    whole = colour_columns.base
+    if (isinstance(whole, np.ndarray) and whole.dtype == np.uint8
+            and whole.shape == colour_columns.shape[:2] + (4,) and whole.flags.c_contiguous):
+        return whole.reshape(-1).view("<u4")
+    return None
 
 
 def _lit(atlas, paletted, level, which, texel):
@@ -81,16 +96,20 @@ def _lit(atlas, paletted, level, which, texel):
     return atlas.colours(texel, paletted[which], level[which])
 
 
-def _overlapping(slices, height) -> bool:
-    """Whether two slices share a pixel: sorted by column and top row, a slice overlaps
-    when it starts above the lowest bottom of the column's earlier slices."""
+def _shared_columns(slices, height):
+    """Per slice, whether its column holds another slice that overlaps one there (None
+    when no two slices share a pixel): sorted by column and top row, a slice overlaps when
+    it starts above the lowest bottom of the column's earlier slices."""
     if len(slices.col) < 2:
-        return False
+        return None
     order = np.lexsort((slices.top, slices.col))
     col, top, bottom = slices.col[order], slices.top[order], slices.bottom[order]
     span = height + 1
     lowest = np.maximum.accumulate(col * span + bottom)[:-1] - col[1:] * span
-    return bool((top[1:] < lowest).any())
+    overlaps = top[1:] < lowest
+    if not overlaps.any():
+        return None
+    return np.isin(slices.col, col[1:][overlaps])
 
 
 def _nearest(pixel, which, slice_depth, n_pixels):
@@ -146,7 +165,8 @@ def draw_masked(view, state, tables, walk, entries, drawsegs, colour_columns, re
         parts.append(walls)
     if not parts or not sum(len(p) for p in parts):
         return _NOTHING, stats
-    overlay = composite(Slices.join(parts), atlas, colour_columns, view.height)
+    slices = parts[0] if len(parts) == 1 else Slices.join(parts)
+    overlay = composite(slices, atlas, colour_columns, view.height)
     return overlay, stats
 
 
