@@ -257,3 +257,19 @@ def test_import_wallbsp_needs_no_gymnasium_and_the_module_id_form_works():
     done = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                           env={**os.environ, "SDL_VIDEODRIVER": "dummy"}, timeout=120)
     assert done.returncode == 0 and done.stdout.strip() == "ok", done.stderr
+
+
+def test_the_throughput_script_reports_every_configuration():
+    root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
+    done = subprocess.run([sys.executable, os.path.join(root, "tools", "env_throughput.py"),
+                           "--quick", "--no-docs", "--envs", "2"], capture_output=True,
+                          text=True, timeout=300, cwd=root,
+                          env={**os.environ, "SDL_VIDEODRIVER": "dummy"})
+    assert done.returncode == 0, done.stderr
+    import json
+    report = json.loads(done.stdout)
+    assert set(report["vector_steps_per_s"]) == {"1", "async 2", "sync 2", "speedup_async_2"}
+    assert len(report["one_env_steps_per_s"]) == 4
+    assert all(v > 0 for v in report["one_env_steps_per_s"].values())
+    assert report["explore_reset"]["walls_median"] > 300
+    assert set(report["meets"]) == {"one_env", "explore_reset", "async_2_speedup"}

@@ -12,7 +12,7 @@ Throughput is the best of a few rounds, the configurations taking turns round by
 busy machine only ever takes speed away).
 
 1. One environment: ``wallbsp/Exit-v0`` on freedoom1.wad:E1M1 (levels/large.json when
-   Freedoom is absent), 160x120, frame skip 1, textured, observing rgb, depth and labels:
+   Freedoom is absent; --quick: a small generated level), 160x120, frame skip 1, textured, observing rgb, depth and labels:
    steps per second.  Beside it the same with rgb only, untextured, and ``pose`` only (no
    frame drawn: the World's tics alone), and where a step's time goes (the tics, the
    frame, the observation arrays).
@@ -44,12 +44,17 @@ TARGET_SPEEDUP = 1.6
 VIEW = ("rgb", "depth", "labels")
 
 
-def exit_level() -> str:
+def exit_level(quick: bool):
+    """E1M1 (levels/large.json when Freedoom is absent); a --quick run's is a small
+    generated level, so the smoke run does not spend its time compiling."""
+    if quick:
+        from wallbsp.generate import generate_level
+        return generate_level(0, walls=100).level
     e1 = FREEDOOM[0]
     return f"{e1}:E1M1" if e1.exists() else str(ROOT / "levels" / "large.json")
 
 
-def exit_options(level: str, **extra) -> dict:
+def exit_options(level, **extra) -> dict:
     return {"level": level, "size": SIZE, "frame_skip": 1, "textures": True,
             "observations": VIEW, **extra}
 
@@ -85,7 +90,7 @@ def best_rates(drivers: dict, steps: int, rounds: int) -> dict:
     return {name: round(v, 1) for name, v in best.items()}
 
 
-def one_env(level: str, steps: int, rounds: int) -> dict:
+def one_env(level, steps: int, rounds: int) -> dict:
     import gymnasium as gym
     variants = {"rgb+depth+labels, textured": {},
                 "rgb, textured": {"observations": ("rgb",)},
@@ -99,7 +104,7 @@ def one_env(level: str, steps: int, rounds: int) -> dict:
     return out
 
 
-def step_parts(level: str, steps: int) -> dict:
+def step_parts(level, steps: int) -> dict:
     """Milliseconds a step spends in the World's tic, drawing the frame and making the
     observation arrays (medians), on the target configuration."""
     import gymnasium as gym
@@ -155,7 +160,7 @@ def explore_reset(resets: int) -> dict:
             "walls_median": int(statistics.median(walls)), "resets": resets}
 
 
-def vector_envs(level: str, counts, steps: int, rounds: int) -> dict:
+def vector_envs(level, counts, steps: int, rounds: int) -> dict:
     import gymnasium as gym
     options = exit_options(level)
 
@@ -181,14 +186,14 @@ def main(argv=None) -> int:
 
 def run(args) -> dict:
     import wallbsp.envs  # noqa: F401 - registers the ids
-    steps, rounds = (30, 1) if args.quick else (200, 5)
-    level = exit_level()
+    steps, rounds = (10, 1) if args.quick else (200, 5)
+    level = exit_level(args.quick)
     counts = sorted({2, args.envs})
     single = one_env(level, steps, rounds)
-    reset = explore_reset(3 if args.quick else 40)
+    reset = explore_reset(1 if args.quick else 40)
     vectors = vector_envs(level, counts, steps, rounds)
     return {"machine": machine(), "load_average": os.getloadavg()[0], "quick": args.quick,
-            "level": level, "size": f"{SIZE[0]}x{SIZE[1]}", "steps": steps, "rounds": rounds,
+            "level": getattr(level, "name", level), "size": f"{SIZE[0]}x{SIZE[1]}", "steps": steps, "rounds": rounds,
             "one_env_steps_per_s": single, "step_ms_median": step_parts(level, steps // 3),
             "explore_reset": reset, "vector_steps_per_s": vectors,
             "targets": {"one_env_steps_per_s": TARGET_STEPS,
