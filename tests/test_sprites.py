@@ -112,6 +112,26 @@ def test_sprites_and_grates_agree_with_the_reference_on_a_png_level(pictures):
     assert seen > 500 and masked > 100           # the views did show things and the grate
 
 
+@pytest.mark.parametrize("path", ["wallbsp/data/textured.json", "levels/textured/multi.json"])
+def test_sprites_agree_with_the_reference_on_the_bundled_levels(path):
+    """The package's textured level (its own PNG sprites and thing type) and multi's grate."""
+    from pathlib import Path
+    from wallbsp import load_level
+    level = load_level(Path(__file__).resolve().parent.parent / path)
+    state = WorldState(compile_level(level))
+    xy = np.array(level.vertices, dtype=np.float64)
+    rng = np.random.default_rng(0)
+    shown = 0
+    while shown < 8:
+        x, y = rng.uniform(xy.min(0), xy.max(0))
+        if state.tree.locate(x, y) is None:
+            continue
+        shown += 1
+        camera = eye_camera(state, x, y, rng.uniform(0, 360))
+        camera.z += 0.0137
+        assert_matches_reference(state, camera)
+
+
 @pytest.fixture(scope="module")
 def e1m1():
     from test_wad import freedoom
