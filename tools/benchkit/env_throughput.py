@@ -12,10 +12,11 @@ Throughput is the best of a few rounds, the configurations taking turns round by
 busy machine only ever takes speed away).
 
 1. One environment: ``wallbsp/Exit-v0`` on freedoom1.wad:E1M1 (levels/large.json when
-   Freedoom is absent; --quick: a small generated level), 160x120, frame skip 1, textured, observing rgb, depth and labels:
-   steps per second.  Beside it the same with rgb only, untextured, and ``pose`` only (no
-   frame drawn: the World's tics alone), and where a step's time goes (the tics, the
-   frame, the observation arrays).
+   Freedoom is absent; --quick: a small generated level), 160x120, frame skip 1,
+   textured, observing rgb, depth and labels: steps per second (and per CPU second).
+   Beside it the same with rgb only, untextured, and ``pose`` only (no frame drawn: the
+   World's tics alone), and where a step's time goes (the tics, the frame, the
+   observation arrays).
 2. ``wallbsp/Explore-v0`` reset (generate a ~500-wall level, compile it, a World, the first
    frame): the median over many seeds, and the median of each part.
 3. Vector environments: steps per second (all environments' steps) for 1 environment, and
