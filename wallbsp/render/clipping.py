@@ -62,13 +62,13 @@ class ClipWindows:
     """Per column the drawn pieces, nearest first, with the window each left open, from
     the frame's ``DrawSegs`` and each piece's near and far sectors."""
 
-    def __init__(self, drawsegs, piece_near, piece_far, view, floor, ceiling, eye_sector):
+    def __init__(self, drawsegs, piece_near, piece_far, view, floor, ceiling):
         self.view, self.floor, self.ceiling = view, floor, ceiling
         self.col = drawsegs.col
         # where a column's ray starts: the near sector of its first piece (an eye on a
-        # sector's edge is in one sector or the other depending on the column), else the
-        # eye's own
-        self.start = np.full(view.width, -1 if eye_sector is None else int(eye_sector))
+        # sector's edge is in one sector or the other depending on the column); a column
+        # with no piece at all looks out of the map: nothing there to hide a thing
+        self.start = np.full(view.width, -1, dtype=np.int64)
         first = np.searchsorted(drawsegs.col, np.arange(view.width))
         has = first < len(drawsegs.col)
         has[has] = drawsegs.col[first[has]] == np.flatnonzero(has)

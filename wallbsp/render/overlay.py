@@ -153,8 +153,7 @@ def draw_masked(view, state, tables, walk, entries, drawsegs, colour_columns, re
     parts, stats = [], {"things_considered": len(ids), "things_drawn": 0, "masked_columns": 0}
     if len(ids):
         clip = ClipWindows(drawsegs, tables.key_near[entries.keys],
-                           tables.key_far[entries.keys], view, state.floor, state.ceiling,
-                           state.tree.locate(view.x, view.y))
+                           tables.key_far[entries.keys], view, state.floor, state.ceiling)
         sprites, _, drawn = sprite_slices(view, state, things, ids, clip, atlas, light)
         stats["things_drawn"] = drawn
         if sprites is not None:

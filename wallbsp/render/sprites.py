@@ -84,6 +84,13 @@ def sprite_slices(view, state, things, ids, clip, atlas, light=True):
     if not len(ids):
         return None, considered, 0
     along = dx * view.rx + dy * view.ry
+    # DOOM's R_ProjectSprite gives up on a thing four times further aside than ahead;
+    # here, on one whose widest likely picture (four radii and 64) is outside the view
+    aside = np.abs(along) - 4.0 * things.radius[ids] - 64.0 <= depth * (view.x0 + 1) / view.f
+    if not aside.all():
+        ids, depth, along = ids[aside], depth[aside], along[aside]
+        if not len(ids):
+            return None, considered, 0
     rotation = rotations(view.x, view.y, things.x[ids], things.y[ids], things.angle[ids])
     slot, mirrored = _pictures(things, ids, rotation, atlas)
     _, _, _, width, height, left, top, _ = atlas.arrays()
