@@ -10,6 +10,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..geometry import exact_side, side_tolerance
 from .fill import colour_columns, row_numbers
 from .frame import KIND_CEILING, KIND_FLOOR, KIND_WALL
 from .project import make_box_check, make_projector
@@ -31,6 +32,7 @@ def walk_back_to_front(tables, view) -> Walk:
     ends, flips, one_sided = tables.seg_ends, tables.seg_flip, tables.seg_one_sided
     project, box_columns = make_projector(view), make_box_check(view)
     ex, ey = view.x, view.y
+    tol = side_tolerance(*tables.line_max, ex, ey)
     pieces = []
     add = pieces.extend
     visited = 0
@@ -55,8 +57,10 @@ def walk_back_to_front(tables, view) -> Walk:
             visited += 1
             a, b, c = lines[item]
             s = a * ex + b * ey + c
+            if not (s < -tol or s > tol):             # too close to call in doubles
+                s = exact_side(a, b, c, ex, ey)
             k0, k1 = kids[item]
-            near, far = (k0, k1) if s < 0 else (k1, k0)
+            near, far = (k0, k1) if s <= 0 else (k1, k0)
             if near >= 0:
                 push(near)
             if s != 0:                                # on the line: its segs are edge on

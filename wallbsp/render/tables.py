@@ -30,7 +30,10 @@ class TreeTables:
         walls, sectors = level.walls, level.sectors
         self.root = int(tree.root)
         self.node_count = len(tree.node_line)
-        self.node_lines = np.asarray(tree.node_line, dtype=np.float64).tolist()
+        lines = np.asarray(tree.node_line, dtype=np.float64).reshape(-1, 3)
+        self.node_lines = lines.tolist()
+        # the largest |a|, |b|, |c|: the side test's tolerance for float eyes
+        self.line_max = tuple(np.abs(lines).max(axis=0).tolist()) if len(lines) else (0, 0, 0)
         self.node_kids = np.asarray(tree.node_child).tolist()
         self.node_boxes = np.asarray(tree.node_bbox, dtype=np.float64).tolist()
         self.node_segs = np.asarray(tree.node_segs).tolist()

@@ -8,6 +8,10 @@ a portal does not (``R_ClipPassWallSegment``).  Whether a two-sided wall is soli
 per frame from the current heights (``HeightTables.key_solid``).  The walk stops when every
 column is closed (Abrash's early out).
 
+The side of the eye at a node is exact (``geometry.side_tolerance`` / ``exact_side``, as the
+tree's own walk decides it): doubles where they are clearly right, rationals otherwise; an
+eye on a partition line counts as in front of it.
+
 The walk is the only Python per node and per seg.  It records the drawn *pieces* ``(side
 key, A, B, first column, end column)`` (``1/depth = A + B*u``) and the leaves it enters, in
 order (DOOM's ``R_Subsector``, where things will be gathered).
@@ -17,6 +21,7 @@ from __future__ import annotations
 from bisect import bisect_right
 from dataclasses import dataclass, field
 
+from ..geometry import exact_side, side_tolerance
 from .columns import ClosedColumns
 from .project import make_box_check, make_projector
 
@@ -45,6 +50,7 @@ def walk_front_to_back(tables, solid, view, boxes=None) -> Walk:
     closed = ClosedColumns(view.width)
     starts, stops, clip = closed.starts, closed.ends, closed.clip
     ex, ey = view.x, view.y
+    tol = side_tolerance(*tables.line_max, ex, ey)
     pieces, leaves = [], []
     add, enter = pieces.extend, leaves.append
     visited = segs_drawn = 0
@@ -66,19 +72,21 @@ def walk_front_to_back(tables, solid, view, boxes=None) -> Walk:
             visited += 1
             a, b, c = lines[item]
             s = a * ex + b * ey + c
+            if not (s < -tol or s > tol):             # too close to call in doubles
+                s = exact_side(a, b, c, ex, ey)
             k0, k1 = kids[item]
-            if s < 0:
+            if s <= 0:                                # on the line counts as in front
                 near, far = k0, k1
-                show_segs = True
+                show_segs = s < 0                     # on the line: its segs are edge on
             else:
                 near, far = k1, k0
-                show_segs = s > 0                     # on the line: its segs are edge on
+                show_segs = True
             if far >= 0:
                 push(far)
             elif inside[~far]:
                 push(n_nodes + ~far)
             if show_segs:
-                push(~((item << 1) | (s >= 0)))
+                push(~((item << 1) | (s > 0)))
             if near >= 0:
                 push(near)
             elif inside[~near]:
