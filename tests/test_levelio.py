@@ -88,6 +88,14 @@ def test_a_crossing_point_that_is_not_whole_is_shown_as_a_decimal():
     assert warnings == [f"{SOURCE}: walls[0]: crosses walls[1] at (1.5, 0.5)"]
 
 
+def test_the_wall_conflict_search_can_be_left_out():
+    data = level_with_walls([(0, 0, 10, 10), (0, 10, 10, 0), (0, 0, 10, 10)],
+                            sectors=[{"floor": 9, "ceiling": 0}])
+    searched = level_from_dict(data, source=SOURCE).warnings
+    skipped = level_from_dict(data, source=SOURCE, check_conflicts=False).warnings
+    assert len(searched) == 4 and skipped == searched[:1]    # the floor above its ceiling
+
+
 def test_walls_sharing_an_end_do_not_cross():
     assert only_warnings([(0, 0, 10, 0), (10, 0, 10, 10), (10, 0, 0, 7)]) == []
 

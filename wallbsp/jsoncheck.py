@@ -109,13 +109,6 @@ class Checker:
                             f"got {describe(value)}")
         return value
 
-    def all_seen_colors(self, values) -> bool:
-        """Whether every value is a color already checked (a map reuses a few colors)."""
-        try:
-            return self._good_colors.issuperset(values)
-        except TypeError:             # an unhashable value: not a color
-            return False
-
     def is_color(self, value: Any) -> bool:
         if not isinstance(value, str):
             return False

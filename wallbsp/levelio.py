@@ -127,7 +127,7 @@ def parse_json(data: str | bytes, source: str) -> Any:
     """Decode JSON text (bytes: UTF-8, a byte order mark allowed); every failure, even
     nesting too deep for Python, is a one-line ``LevelError`` naming ``source``."""
     text = _utf8(data, source) if isinstance(data, (bytes, bytearray)) else data
-    if not text.strip():
+    if not text or text.isspace():      # (strip() would copy a big file's text)
         raise level_error(source, ROOT, "the file is empty (expected a JSON object)")
     try:
         return json.loads(text)
@@ -148,16 +148,18 @@ def _utf8(raw: bytes, source: str) -> str:
 
 
 def level_from_dict(data: Any, source: str = "<level>", strict: bool = False,
-                    source_dir=None) -> Level:
+                    source_dir=None, check_conflicts: bool = True) -> Level:
     """Validate a decoded JSON object (SPEC §2, §2b) and build the Level it describes.
 
     Raises ``LevelError`` on the first error, or with ``strict=True`` on the first
-    warning; otherwise the warnings are in ``level.warnings``."""
+    warning; otherwise the warnings are in ``level.warnings``.  ``check_conflicts=False``
+    skips the search for duplicate, overlapping and crossing walls, which are warnings
+    only (a compiled tree's level was searched when it was compiled)."""
     check = Checker(source)
     fields = read_level(check, data)
     level = Level(**fields, source=source, warnings=check.warnings,
                   source_dir=None if source_dir is None else Path(source_dir))
-    _warn_suspicious(check, level)
+    _warn_suspicious(check, level, check_conflicts)
     if strict and check.warnings:
         raise LevelError(check.warnings[0])
     return level
@@ -175,11 +177,11 @@ def save_level(level: Level, path) -> None:
 # ---------------------------------------------------------------------------------------
 # Warnings: legal but suspicious
 
-def _warn_suspicious(check: Checker, level: Level) -> None:
+def _warn_suspicious(check: Checker, level: Level, check_conflicts: bool) -> None:
     for i, s in enumerate(level.sectors):
         if s.floor > s.ceiling:
             check.warn(f"sectors[{i}].floor", f"floor {s.floor} is above ceiling {s.ceiling} "
                                               f"(drawn closed, like a shut door)")
-    if len(level.walls) > 1:
+    if check_conflicts and len(level.walls) > 1:
         for wall, what in conflict_warnings(level.segments(), MAX_REPORTED):
             check.warn("walls" if wall is None else f"walls[{wall}]", what)

@@ -3,6 +3,11 @@
 ``read_level(check, data)`` returns the keyword arguments of ``Level`` (without where the
 level came from); the first error raises through ``check``.  The format, its defaults and
 ranges are described in ``levelio``.
+
+Vertices, sectors and walls are first tried by ``levelquick``, which passes the plain,
+well-formed ones (nearly all of a big map) in few steps; the rest are read here, field by
+field, which says what is wrong.  ``read_level(..., quick=False)`` reads everything here
+(the reference the quick path is tested against).
 """
 from __future__ import annotations
 
@@ -15,40 +20,26 @@ import numpy as np
 from .geometry import COORD_LIMIT
 from .jsoncheck import ROOT, Checker, child, describe, plain, short
 from .level import Sector, Side, Start, Thing, ThingType, Wall
+from .levelformat import (FORMAT, MAX_LIGHT, MAX_NUMBER, NO_TEXTURE, ROOT_KEYS, ROOT_KEYS_2,
+                          SECTOR_KEYS, SECTOR_KEYS_2, SIDE_KEYS, START_KEYS, THING_KEYS,
+                          THING_TYPE_KEYS, VERSIONS, WALL_FLAGS, WALL_KEYS, WALL_KEYS_2)
+from .levelquick import Quick, quick_vertices
 
-FORMAT = "wallbsp-level"
-VERSIONS = (1, 2)
-MAX_LIGHT = 255
-MAX_NUMBER = 65535           # specials, tags, thing types and flags: DOOM's 16-bit fields
-NO_TEXTURE = "-"             # DOOM's name for "no texture" on a side
-
-_ROOT_KEYS = ("format", "version", "name", "vertices", "sectors", "walls", "start")
-_ROOT_KEYS_2 = _ROOT_KEYS + ("resources", "sky", "things", "thing_types")
-_SECTOR_KEYS = ("floor", "ceiling", "light", "floor_color", "ceiling_color", "sky")
-_SECTOR_KEYS_2 = _SECTOR_KEYS + ("floor_texture", "ceiling_texture", "special", "tag")
-_WALL_KEYS = ("v1", "v2", "front", "back", "color", "upper_color", "lower_color")
-_WALL_FLAGS = ("upper_unpegged", "lower_unpegged", "blocks")
-_WALL_KEYS_2 = _WALL_KEYS + ("front_side", "back_side") + _WALL_FLAGS + ("special", "tag")
-_SIDE_KEYS = ("upper", "middle", "lower", "x_offset", "y_offset")
-_START_KEYS = ("x", "y", "angle")
-_THING_KEYS = ("x", "y", "angle", "type", "flags")
-_THING_TYPE_KEYS = ("sprite", "radius", "height", "solid")
-_WALL_KEY_SET = frozenset(_WALL_KEYS)
-_WALL_COLOR_KEYS = ("color", "upper_color", "lower_color")
 _DECIMAL = re.compile(r"0|[1-9][0-9]{0,4}")
 
 
-def read_level(check: Checker, data: Any) -> dict[str, Any]:
-    """The ``Level`` fields that ``data`` describes."""
+def read_level(check: Checker, data: Any, quick: bool = True) -> dict[str, Any]:
+    """The ``Level`` fields that ``data`` describes (``quick=False``: every item the
+    detailed way; the result and the messages are the same)."""
     if not isinstance(data, dict):
         check.fail(ROOT, f"expected an object, got {describe(data)}")
     version = _read_format(check, data)
-    root = check.fields(data, ROOT, _ROOT_KEYS if version == 1 else _ROOT_KEYS_2)
-    vertices = _read_vertices(check, root)
-    sectors = [_read_sector(check, item, f"sectors[{i}]", version)
-               for i, item in enumerate(_root_list(check, root, "sectors"))]
+    root = check.fields(data, ROOT, ROOT_KEYS if version == 1 else ROOT_KEYS_2)
+    fast = Quick(check, version) if quick else None
+    vertices = _read_vertices(check, root, quick)
+    sectors = _read_sectors(check, root, version, fast)
     fields = {"name": _read_name(check, root), "vertices": vertices, "sectors": sectors,
-              "walls": _read_walls(check, root, vertices, len(sectors), version),
+              "walls": _read_walls(check, root, vertices, len(sectors), version, fast),
               "start": _read_start(check, root, vertices), "version": version}
     if version >= 2:
         fields.update(_read_extras(check, root))
@@ -79,9 +70,12 @@ def _read_name(check: Checker, root: dict) -> str:
     return root["name"]
 
 
-def _read_vertices(check: Checker, root: dict) -> list[tuple[int, int]]:
-    return [_read_vertex(check, item, i)
-            for i, item in enumerate(_root_list(check, root, "vertices"))]
+def _read_vertices(check: Checker, root: dict, quick: bool) -> list[tuple[int, int]]:
+    items = _root_list(check, root, "vertices")
+    vertices = quick_vertices(items) if quick else None
+    if vertices is None:
+        vertices = [_read_vertex(check, item, i) for i, item in enumerate(items)]
+    return vertices
 
 
 def _read_vertex(check: Checker, item: Any, i: int) -> tuple[int, int]:
@@ -98,8 +92,16 @@ def _read_vertex(check: Checker, item: Any, i: int) -> tuple[int, int]:
             check.coordinate(item[1], path + "[1]", "y"))
 
 
+def _read_sectors(check: Checker, root: dict, version: int, quick: Quick | None) -> list:
+    sectors = []
+    for i, item in enumerate(_root_list(check, root, "sectors")):
+        sector = quick.sector(item) if quick else None
+        sectors.append(sector or _read_sector(check, item, f"sectors[{i}]", version))
+    return sectors
+
+
 def _read_sector(check: Checker, item: Any, path: str, version: int) -> Sector:
-    obj = check.fields(item, path, _SECTOR_KEYS if version == 1 else _SECTOR_KEYS_2)
+    obj = check.fields(item, path, SECTOR_KEYS if version == 1 else SECTOR_KEYS_2)
     floor = check.number(check.required(obj, "floor", path), path + ".floor", "a floor height")
     ceiling = check.number(check.required(obj, "ceiling", path), path + ".ceiling",
                            "a ceiling height")
@@ -132,12 +134,13 @@ def _texture(check: Checker, obj: dict, key: str, path: str, what: str) -> str |
     return check.name(value, f"{path}.{key}", what)
 
 
-def _read_walls(check: Checker, root: dict, vertices: list, n_sectors: int,
-                version: int) -> list[Wall]:
-    walls = []
+def _read_walls(check: Checker, root: dict, vertices: list, n_sectors: int, version: int,
+                quick: Quick | None) -> list[Wall]:
+    walls, counts = [], (len(vertices), n_sectors)
     for i, item in enumerate(_root_list(check, root, "walls")):
-        wall = (_plain_wall(check, item, len(vertices), n_sectors)
-                or _read_wall(check, item, f"walls[{i}]", (len(vertices), n_sectors), version))
+        wall = quick.wall(item, counts) if quick else None
+        if wall is None:
+            wall = _read_wall(check, item, f"walls[{i}]", counts, version)
         if vertices[wall.v1] == vertices[wall.v2]:
             x, y = vertices[wall.v1]
             check.fail(f"walls[{i}]", f"zero-length wall: v1 (vertex {wall.v1}) and v2 (vertex "
@@ -146,26 +149,10 @@ def _read_walls(check: Checker, root: dict, vertices: list, n_sectors: int,
     return walls
 
 
-def _plain_wall(check: Checker, item: Any, n_vertices: int, n_sectors: int) -> Wall | None:
-    """The wall, when it is valid and has nothing unusual (most walls of a big map);
-    None sends it to ``_read_wall``, which says what is wrong."""
-    if type(item) is not dict or not item.keys() <= _WALL_KEY_SET:
-        return None
-    v1, v2, front, back = item.get("v1"), item.get("v2"), item.get("front"), item.get("back")
-    if not (type(v1) is int and 0 <= v1 < n_vertices and type(v2) is int and 0 <= v2 < n_vertices
-            and type(front) is int and 0 <= front < n_sectors
-            and (back is None or type(back) is int and 0 <= back < n_sectors)):
-        return None
-    colors = {key: item[key] for key in _WALL_COLOR_KEYS if key in item}
-    if not check.all_seen_colors(colors.values()):
-        return None
-    return Wall(v1, v2, front, back, **colors)
-
-
 def _read_wall(check: Checker, item: Any, path: str, counts: tuple[int, int],
                version: int) -> Wall:
     n_vertices, n_sectors = counts
-    obj = check.fields(item, path, _WALL_KEYS if version == 1 else _WALL_KEYS_2)
+    obj = check.fields(item, path, WALL_KEYS if version == 1 else WALL_KEYS_2)
     v1 = check.index(check.required(obj, "v1", path), path + ".v1", "vertex", n_vertices)
     v2 = check.index(check.required(obj, "v2", path), path + ".v2", "vertex", n_vertices)
     front = check.index(check.required(obj, "front", path), path + ".front", "sector", n_sectors)
@@ -191,7 +178,7 @@ def _read_wall_extras(check: Checker, obj: dict, path: str, back: int | None) ->
             if key == "back_side" and back is None:
                 check.fail(f"{path}.back_side", "a one-sided wall (back null) has no back side")
             extras[key] = _read_side(check, obj[key], f"{path}.{key}")
-    for key in _WALL_FLAGS:
+    for key in WALL_FLAGS:
         if key in obj:
             extras[key] = check.boolean(obj[key], f"{path}.{key}")
     extras.update(_numbers(check, obj, path))
@@ -199,7 +186,7 @@ def _read_wall_extras(check: Checker, obj: dict, path: str, back: int | None) ->
 
 
 def _read_side(check: Checker, item: Any, path: str) -> Side:
-    obj = check.fields(item, path, _SIDE_KEYS)
+    obj = check.fields(item, path, SIDE_KEYS)
     textures = {key: _texture(check, obj, key, path, "a wall texture name")
                 for key in ("upper", "middle", "lower")}
     offsets = {key: check.integer_in(obj[key], f"{path}.{key}", key.replace("_", " "),
@@ -211,7 +198,7 @@ def _read_side(check: Checker, item: Any, path: str) -> Side:
 def _read_start(check: Checker, root: dict, vertices: list) -> Start:
     if "start" not in root:
         return Start(*_bbox_centre(vertices))
-    obj = check.fields(root["start"], "start", _START_KEYS)
+    obj = check.fields(root["start"], "start", START_KEYS)
     x = check.number(check.required(obj, "x", "start"), "start.x", "an x position")
     y = check.number(check.required(obj, "y", "start"), "start.y", "a y position")
     if "angle" not in obj:
@@ -253,7 +240,7 @@ def _read_resource(check: Checker, value: Any, path: str) -> str:
 
 
 def _read_thing(check: Checker, item: Any, path: str) -> Thing:
-    obj = check.fields(item, path, _THING_KEYS)
+    obj = check.fields(item, path, THING_KEYS)
     x = check.coordinate(check.required(obj, "x", path), path + ".x", "x")
     y = check.coordinate(check.required(obj, "y", path), path + ".y", "y")
     angle = check.number(obj.get("angle", 0), path + ".angle", "an angle in degrees")
@@ -279,7 +266,7 @@ def _read_thing_types(check: Checker, value: Any) -> dict[int, ThingType]:
 
 
 def _read_thing_type(check: Checker, item: Any, path: str) -> ThingType:
-    obj = check.fields(item, path, _THING_TYPE_KEYS)
+    obj = check.fields(item, path, THING_TYPE_KEYS)
     sprite = check.name(check.required(obj, "sprite", path), path + ".sprite", "a sprite name")
     optional = {}
     for key in ("radius", "height"):

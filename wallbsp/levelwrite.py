@@ -16,8 +16,7 @@ from typing import Any
 
 from .jsoncheck import plain
 from .level import Level, Sector, Side, Thing, ThingType, Wall
-
-FORMAT = "wallbsp-level"
+from .levelformat import FORMAT, WALL_FLAGS
 
 
 def dumps_level(level: Level) -> str:
@@ -120,7 +119,7 @@ def _wall_extras(w: Wall) -> dict[str, Any]:
         out["front_side"] = _side_dict(w.front_side)
     if w.back_side is not None:
         out["back_side"] = _side_dict(w.back_side)
-    for key in ("upper_unpegged", "lower_unpegged", "blocks"):
+    for key in WALL_FLAGS:
         if getattr(w, key):
             out[key] = True
     return out | _numbers(w.special, w.tag)

@@ -194,8 +194,8 @@ def _read_level(path, zf, info, digest) -> Level:
     raw = zf.read(info)
     source = f"{path}:level.json"
     try:
-        level = level_from_dict(parse_json(raw, source), source,
-                                source_dir=Path(path).parent)
+        level = level_from_dict(parse_json(raw, source), source, source_dir=Path(path).parent,
+                                check_conflicts=False)   # searched when it was compiled
     except LevelError as err:
         raise TreeError(str(err)) from None
     # the writer stores the level as dumps_level gives it, whose sha256 is the level's
