@@ -293,3 +293,15 @@ def test_the_painter_draws_the_same_things(pictures):
     assert np.array_equal(a.color, b.color)
     assert np.array_equal(a.kind, b.kind) and np.array_equal(a.index, b.index)
     assert np.array_equal(a.depth, b.depth)
+
+
+def test_without_textures_things_are_boxes_and_grates_are_not_drawn(pictures):
+    tree = compile_level(png_level(pictures, [Thing(250, 64, 0, BARREL, 7)], grate=True))
+    camera = Camera(30, 64, 41, 0)
+    textured = render(tree, camera, 96, 60)
+    plain = render(tree, camera, 96, 60, textures=False)
+    assert textured.stats["masked_columns"] > 0 and plain.stats["masked_columns"] == 0
+    box = plain.kind == KIND_THING
+    rows, cols = np.nonzero(box)
+    assert box.sum() == (rows.max() - rows.min() + 1) * (cols.max() - cols.min() + 1)
+    assert len(np.unique(plain.color[box], axis=0)) == 1     # one flat colour, one depth

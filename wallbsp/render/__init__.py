@@ -87,5 +87,6 @@ def render(source, camera: Camera, width: int, height: int, order: str = "front_
         front = None                     # the things are clipped by a front-to-back walk
     walk.stats["pixels_written"] = written
     # sprites and masked middle textures, far to near, over the finished frame
-    layers = draw_overlay(view, state, tables, heights, colour, layers, walk.stats, light, front)
+    layers = draw_overlay(view, state, tables, heights, colour, layers, walk.stats, light, front,
+                          textures)
     return Frame(view.width, view.height, colour, walk.stats, layers, walk.leaves)
