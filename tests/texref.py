@@ -10,15 +10,16 @@ from __future__ import annotations
 import numpy as np
 
 EPS = 1e-6
+ROW_EPS = 1e-3      # wall and sky texture rows: the renderer steps them in fixed point
 
 
 def _hex(color):
     return np.array([int(color[i:i + 2], 16) for i in (1, 3, 5)], dtype=np.uint8)
 
 
-def _near_integer(x):
+def _near_integer(x, eps=EPS):
     x = np.asarray(x, dtype=np.float64)
-    return np.abs(x - np.round(x)) < EPS * np.maximum(1.0, np.abs(x))
+    return np.abs(x - np.round(x)) < eps * np.maximum(1.0, np.abs(x))
 
 
 class _Pictures:
@@ -107,7 +108,7 @@ class _Scene:
         theta = self.camera.angle - np.degrees(np.arctan(u))
         su, tv = 1024 * theta / 360, 100 - 160 * self.v[rows]
         out.put(rows, col, 3, sector, _sample(sky, np.full(len(rows), su), tv),
-                _near_integer(su) | _near_integer(tv))
+                _near_integer(su) | _near_integer(tv, ROW_EPS))
 
     def wall_part(self, out, rows, col, hit, part):
         """Wall ``hit.wall``'s ``part`` on ``rows``: its texture, or what stands for it."""
@@ -142,7 +143,7 @@ class _Scene:
         u = side.x_offset + hit.along
         t = top - h + side.y_offset
         out.put(rows, col, 1, hit.wall, _sample(picture, np.full(len(rows), u), t),
-                _near_integer(u) | _near_integer(t))
+                _near_integer(u) | _near_integer(t, ROW_EPS))
 
 
 class _Hit:

@@ -30,6 +30,9 @@ SKY_COLUMNS = 1024            # sky texture columns in a full turn (DOOM's ANGLE
 SKY_ROW = 100.0               # the sky row at the horizon, and rows per unit of v
 SKY_ROWS_PER_V = 160.0
 FLAT_OFFSET = float(1 << 30)  # added to flat coordinates (a multiple of 64)
+FIX = 19                      # fraction bits of texture rows in int32 fixed point,
+FIX_ONE = float(1 << FIX)
+FIX_LIMIT = 1 << (31 - FIX)   # leaving rows (and steps) below 4096 texels
 
 
 def entry_parts(tables, tex, e):
@@ -102,10 +105,20 @@ class RunSurfaces:
             self._planes(np.flatnonzero(plane), tex, heights, state, view, view.u[col[plane]],
                          sector[plane], kinds[plane] == KIND_CEILING)
         end = self.t_rel + self.t1 * (last_row + 1.0)
-        self.shape[column_runs & (end >= self.stride - 1)] = 2
-        self.t_abs = self.column + self.t_rel
+        self.shape[column_runs & ((end >= self.stride - 1) | (self.stride >= FIX_LIMIT)
+                                  | (self.t1 >= FIX_LIMIT))] = 2
+        self._fixed_point()
         self.column32 = self.column.astype(np.int32)
         self.level32 = self.level.astype(np.int32)
+
+    def _fixed_point(self):
+        """``t_rel`` and ``t1`` in fixed point (``FIX`` fraction bits) for the plain column
+        runs: int32 arithmetic that may wrap in between, as the row lies in ``[-1,
+        stride)`` in the end (``FIX_LIMIT`` keeps it there)."""
+        plain = self.shape == 0
+        start = np.floor(np.where(plain, self.t_rel, 0.0) * FIX_ONE + 0.5).astype(np.int64)
+        self.t_fix = ((start + (1 << 31)) % (1 << 32) - (1 << 31)).astype(np.int32)
+        self.s_fix = np.rint(np.where(plain, self.t1, 0.0) * FIX_ONE).astype(np.int32)
 
     def _column_texture(self, runs, texture, column, t0, t1, reference):
         """Column runs of ``texture`` at texture column ``column``: rows ``t0 + t1*row``."""
@@ -116,7 +129,7 @@ class RunSurfaces:
         self.t_rel[runs] = at_reference - height * np.floor(at_reference / height) \
             - t1 * reference
         self.t1[runs] = t1
-        self.column[runs] = tex.base[texture] + column * tex.stride[texture]
+        self.column[runs] = tex.base[texture] + column * tex.pitch[texture]
         self.stride[runs] = tex.stride[texture]
         self.wrap[runs] = height
 
@@ -199,6 +212,15 @@ def _tops(tables, tex, heights, key, tpart, tex_height):
 _ROW_TABLES: dict = {}
 
 
+def _rows32(width, height):
+    """Row of every pixel of a column-major frame, flat, int32 (cached)."""
+    key = ("rows", width, height)
+    rows = _ROW_TABLES.get(key)
+    if rows is None:
+        rows = _ROW_TABLES[key] = np.tile(np.arange(height, dtype=np.int32), width)
+    return rows
+
+
 def _inverse_rows(view):
     """``1 / (y0 - row)`` per screen row (inf at a row through the horizon)."""
     key = view.height
@@ -214,9 +236,12 @@ def _inverse_rows(view):
 
 def shade_columns(s: RunSurfaces, run, row):
     """Packed rgb of column-run pixels (``run``, ``row``: their runs and screen rows)."""
-    t = s.t_abs.take(run)
-    t += s.t1.take(run) * row
-    colour = s.tex.atlas.take(t.astype(np.int32)).astype(np.int32)
+    t = s.s_fix.take(run)
+    t *= row.astype(np.int32)
+    t += s.t_fix.take(run)
+    t >>= FIX
+    t += s.column32.take(run)
+    colour = s.tex.atlas.take(t).astype(np.int32)
     colour += s.level32.take(run)
     return s.tex.lut_flat.take(colour)
 
@@ -284,10 +309,12 @@ def fill_textured(tables, tex, heights, state, view, e, light=True):
     runs, windows = front_to_back_runs(tables, view, e, None, entry_parts(tables, tex, e))
     s = RunSurfaces(tables, tex, heights, state, view, e, _PartRuns(runs), light)
     lengths = runs.lengths
-    column = s.shape == 0
-    t = np.repeat(np.where(column, s.t_abs, tex.base[tex.black]), lengths)
-    t += np.repeat(np.where(column, s.t1, 0.0), lengths) * row_numbers(width, height)
-    colour = tex.atlas.take(t.astype(np.int32)).astype(np.int32)
+    t = np.repeat(s.s_fix, lengths)             # the column pass: shade_columns, by runs
+    t *= _rows32(width, height)
+    t += np.repeat(s.t_fix, lengths)
+    t >>= FIX
+    t += np.repeat(np.where(s.shape == 0, s.column32, tex.base[tex.black]), lengths)
+    colour = tex.atlas.take(t).astype(np.int32)
     colour += np.repeat(s.level32, lengths)
     colour = tex.lut_flat.take(colour)
     starts = np.cumsum(lengths) - lengths

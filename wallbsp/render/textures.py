@@ -8,8 +8,9 @@ level 0-31 — the WAD's COLORMAP row ``31 - level`` for palette indices, ``rgb 
 (``light=False``).  A frame's colour is then ``lut[level, atlas[address]]``.
 
 Textures sit in ``atlas`` column-major, like ``Picture.pixels``: texel ``(u, t)`` of texture
-``i`` is ``atlas[base[i] + u*stride[i] + t]``; a wall texture's column is repeated down to
-``stride`` texels (``PAD`` beyond its height), so ``t`` up to there needs no ``mod height``.  A flat is 64 × 64 with ``u`` its world x and
+``i`` is ``atlas[base[i] + u*pitch[i] + t]``.  A wall texture's column is repeated down to
+``stride`` texels (``PAD`` beyond its height) and led by its last texel, so any ``t`` in
+``[-1, stride)`` reads texel ``t mod height`` with no division.  A flat is 64 × 64 with ``u`` its world x and
 ``t`` its world -y.  A surface whose texture no resource holds is drawn in its colour: a
 1 × 1 texture for wall parts, a 64 × 64 block for planes.
 
@@ -70,7 +71,7 @@ class _Packer:
         self.first_rgb = 0 if palette is None else 256
         self.rgb: dict[int, int] = {}               # packed rgb -> colour index
         self.pieces, self.size = [], 0
-        self.base, self.width, self.height, self.stride = [], [], [], []
+        self.base, self.width, self.height, self.stride, self.pitch = [], [], [], [], []
 
     def rgb_indices(self, packed: np.ndarray) -> np.ndarray:
         uniq, inverse = np.unique(packed, return_inverse=True)
@@ -81,13 +82,16 @@ class _Packer:
     def add(self, texels: np.ndarray, pad: bool = False) -> int:
         """A texture of colour indices ``(width, height)``; returns its id.  A padded one
         has each column repeated down to at least ``height + PAD`` texels."""
-        height = texels.shape[1]
+        height, lead = texels.shape[1], 0
         if pad:
-            texels = np.tile(texels, (1, -(-(height + PAD) // height)))
-        self.base.append(self.size)
+            tiled = np.tile(texels, (1, -(-(height + PAD) // height)))
+            texels = np.concatenate([texels[:, -1:], tiled], axis=1)     # row -1 wraps
+            lead = 1
+        self.base.append(self.size + lead)
         self.width.append(texels.shape[0])
         self.height.append(height)
-        self.stride.append(texels.shape[1])
+        self.pitch.append(texels.shape[1])
+        self.stride.append(texels.shape[1] - lead)
         self.pieces.append(texels.reshape(-1))
         self.size += texels.size
         return len(self.base) - 1
@@ -169,6 +173,7 @@ class LevelTextures:
         self.width = np.array(packer.width, dtype=np.int64)
         self.height = np.array(packer.height, dtype=np.int64)
         self.stride = np.array(packer.stride, dtype=np.int64)
+        self.pitch = np.array(packer.pitch, dtype=np.int64)
         (self.start, self.direction, self.x_offset, self.y_offset,
          self.has_side) = side_geometry(tables, level)
         walls_ = level.walls
