@@ -18,7 +18,8 @@ def test_world_benchmark_quick_reports_idle_and_active_tics_and_the_render_ratio
     assert done.returncode == 0, done.stderr
     result = json.loads(done.stdout)
     assert result["idle"]["active_movers"] == 0 and result["idle"]["median_ms"] > 0
-    assert result["active"]["movers_started"] == 20
+    assert result["idle"]["map"] == result["active"]["map"] == "E1M1"      # quick: E1M1 only
+    assert 0 < result["active"]["movers_started"] <= 20
     assert result["active"]["tics_with_all_moving"] > 0
     assert result["render"]["frames_with_moving_heights"] > 0
     assert result["render"]["ratio"] > 0
