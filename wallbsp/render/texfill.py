@@ -323,11 +323,12 @@ def fill_textured(tables, tex, heights, state, view, e, light=True):
         counts = lengths[chosen]
         n = int(counts.sum())
         if n:
-            within = np.arange(n, dtype=np.int64)
-            within -= np.repeat(np.cumsum(counts) - counts, counts)
-            run = np.repeat(chosen, counts)
-            pixel = starts.take(run) + within
-            colour[pixel] = SHADERS[shape](s, run, pixel % height)
+            # pixel k of the batch: its run's start plus its place in the run
+            step = np.arange(n, dtype=np.int64) - np.repeat(np.cumsum(counts) - counts, counts)
+            start = starts[chosen]
+            row = np.repeat(start % height, counts) + step
+            colour[np.repeat(start, counts) + step] = SHADERS[shape](
+                s, np.repeat(chosen, counts), row)
     written = int(lengths[runs.kinds != KIND_NOTHING].sum())
     return colour.view(np.uint8).reshape(width, height, 4)[:, :, :3], runs, windows, written
 
