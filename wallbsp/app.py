@@ -41,7 +41,7 @@ from .image import save_png
 from .render import render
 from .window import (RESOLUTIONS, NoDisplayError, check_display, close_display,   # noqa: F401
                      next_resolution, no_window_system, on_resize, open_display,
-                     save_screenshot, toggle_fullscreen, toggle_mouse_grab)
+                     save_screenshot, show_caption, toggle_fullscreen, toggle_mouse_grab)
 
 _BAM = 360.0 / 2 ** 16                  # degrees per unit of DOOM's angleturn
 TURN_SLOW, TURN_WALK, TURN_RUN = 320 * _BAM, 640 * _BAM, 1280 * _BAM   # degrees a tic
@@ -306,6 +306,8 @@ def leave_level(walk):
     walk.world, walk.previous, walk.demo, walk.seen_message = World(tree), None, None, 0
     walk.map_cache, walk.partitions = (None, None), None
     say(walk, f"Level exited ({kind} exit): {where}", EXIT_SECONDS)
+    if walk.display is not None:
+        show_caption(walk)
 
 
 # -- drawing --------------------------------------------------------------------------------------

@@ -13,8 +13,9 @@ from .hud import say
 from .image import save_png
 
 __all__ = ["NoDisplayError", "RESOLUTIONS", "NO_DISPLAY_DRIVERS", "check_display",
-           "no_window_system", "open_display", "close_display", "toggle_mouse_grab",
-           "toggle_fullscreen", "on_resize", "next_resolution", "save_screenshot"]
+           "no_window_system", "open_display", "show_caption", "close_display",
+           "toggle_mouse_grab", "toggle_fullscreen", "on_resize", "next_resolution",
+           "save_screenshot"]
 
 RESOLUTIONS = ((160, 100), (320, 200), (640, 400), (800, 500), (1280, 800), (1600, 1000))
 SHOT_NAME = "wallbsp-shot-{:03d}.png"
@@ -51,8 +52,14 @@ def open_display(walk):
     pygame.display.init()
     pygame.font.init()
     walk.display = pygame.display.set_mode(walk.window, pygame.RESIZABLE)
-    pygame.display.set_caption(f"wallbsp - {walk.tree.level.name}")
+    show_caption(walk)
     walk.font = pygame.font.Font(None, 20)
+
+
+def show_caption(walk):
+    """The window's title: the level being walked."""
+    import pygame
+    pygame.display.set_caption(f"wallbsp - {walk.tree.level.name}")
 
 
 def close_display(walk):
