@@ -119,7 +119,7 @@ def test_render_draws_the_world_as_it_is_now():
     assert np.array_equal(opened.color, render(world.state, world.camera(), 64, 40).color)
 
 
-# -- doors ------------------------------------------------------------------------------------------
+# -- doors ----------------------------------------------------------------------------------
 
 def test_use_opens_the_door_and_the_player_walks_through():
     level = door_level()
@@ -181,7 +181,7 @@ def test_the_door_closes_when_the_player_has_gone():
     assert world.sector(1)[1] == 0.0 and world.rules.active_movers == 0
 
 
-# -- lifts, teleporters, exits, pickups ---------------------------------------------------------------
+# -- lifts, teleporters, exits, pickups ----------------------------------------------------
 
 def test_the_player_rides_a_lift_down_and_walk_over_fires_once_per_crossing():
     level = corridor([room(), room(floor=24, tag=3), room()],

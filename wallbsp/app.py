@@ -253,7 +253,7 @@ def _toggle_order(walk):
     say(walk, f"order: {walk.order}")
 
 
-# -- the world: held keys -> one tic's inputs ---------------------------------------------------------
+# -- the world: held keys -> one tic's inputs ---------------------------------------------
 
 def _axis(held, plus, minus) -> int:
     return any(k in held for k in plus) - any(k in held for k in minus)

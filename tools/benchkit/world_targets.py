@@ -170,8 +170,9 @@ def section(result: dict) -> str:
              f"≤ {frames['target']}", yes(frames["meets_target"])]]
     return "\n\n".join(head + [
         "Single tics timed with `time.perf_counter`, the player standing at the start; the "
-        f"idle world still runs its {idle['light_effects']} light effects; the 20 doors are "
-        "the map's slowest shut doors (not blazing), used at once. The render ratio is that of the summed frame "
+        f"idle world still runs its {idle['light_effects']} light effects; the "
+        f"{active['movers_started']} doors are the map's slowest shut doors (not blazing), "
+        "used at once. The render ratio is that of the summed frame "
         f"times of {frames['frames']} frames, world and tree interleaved, the median of "
         f"{frames['passes']} passes ({', '.join(map(str, frames['pass_ratios']))}); "
         f"every door of E1M1 opened at the start and a tic run before each frame (heights "
