@@ -158,7 +158,8 @@ def test_strict_turns_warnings_into_errors(tmp_path, capsys):
 
 
 def test_python_dash_m_and_help_work():
-    for argv in (["--help"], ["compile", "--help"], ["render", "--help"], ["walk", "--help"]):
+    for argv in (["--help"], ["compile", "--help"], ["render", "--help"], ["walk", "--help"],
+                 ["play", "--help"]):
         done = subprocess.run([sys.executable, "-m", "wallbsp", *argv], capture_output=True,
                               text=True)
         assert done.returncode == 0 and "usage" in done.stdout.lower()

@@ -168,3 +168,9 @@ def test_a_demo_on_e1m1_goes_through_the_first_door(tmp_path, capsys):
     state = json.loads(capsys.readouterr().out)
     assert (state["x"], state["y"]) == (world.player.x, world.player.y)
     assert tree.locate(state["x"], state["y"]) == behind
+
+
+def test_play_needs_a_level_and_a_demo(capsys):
+    assert main(["play"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "play" in err
