@@ -11,6 +11,7 @@ import numpy as np
 import pytest
 from hypothesis import given, settings
 from hypothesis import strategies as st
+from texref import wall_hits
 
 from pngread import load_png
 from wallbsp.image import png_bytes, save_png
@@ -304,13 +305,9 @@ def ray_cast_ids(level, camera, width, height):
     index = np.full((height, width), -1, dtype=np.int32)
     for col in range(width):
         ray = fwd + (col + 0.5 - width / 2) / f * right
-        denom = ray[0] * edge[:, 1] - ray[1] * edge[:, 0]
-        with np.errstate(divide="ignore", invalid="ignore"):
-            t = (to_p[:, 0] * edge[:, 1] - to_p[:, 1] * edge[:, 0]) / denom
-            s = (to_p[:, 0] * ray[1] - to_p[:, 1] * ray[0]) / denom
-        hits = np.nonzero((denom != 0) & (t > 0) & (s >= 0) & (s <= 1) & (near >= 0))[0]
+        hits, t = wall_hits(ray, to_p, edge, near)
         pending = np.ones(height, dtype=bool)
-        for w in hits[np.argsort(t[hits], kind="stable")]:
+        for w in hits:
             n, b = near[w], far[w]
             h = camera.z + v * t[w]
             ceiling = pending & (h > ceilings[n])

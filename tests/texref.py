@@ -146,6 +146,18 @@ class _Scene:
                 _near_integer(u) | _near_integer(t, ROW_EPS))
 
 
+def wall_hits(ray, to_p, edge, near):
+    """``(walls, t)``: the walls the ray (from the eye; ``to_p`` = wall starts - eye,
+    ``edge`` = wall ends - starts) meets with a side to see, nearest first, and every
+    wall's forward depth ``t`` along the ray."""
+    denom = ray[0] * edge[:, 1] - ray[1] * edge[:, 0]
+    with np.errstate(divide="ignore", invalid="ignore"):
+        t = (to_p[:, 0] * edge[:, 1] - to_p[:, 1] * edge[:, 0]) / denom
+        s = (to_p[:, 0] * ray[1] - to_p[:, 1] * ray[0]) / denom
+    hits = np.nonzero((denom != 0) & (t > 0) & (s >= 0) & (s <= 1) & (near >= 0))[0]
+    return hits[np.argsort(t[hits], kind="stable")], t
+
+
 class _Hit:
     def __init__(self, **kw):
         self.__dict__.update(kw)
@@ -167,13 +179,9 @@ def reference_frame(level, camera, width, height, resources=None):
     out = _Out(height, width)
     for col in range(width):
         ray = scene.forward + (col + 0.5 - width / 2) / scene.f * scene.right
-        denom = ray[0] * edge[:, 1] - ray[1] * edge[:, 0]
-        with np.errstate(divide="ignore", invalid="ignore"):
-            t = (to_p[:, 0] * edge[:, 1] - to_p[:, 1] * edge[:, 0]) / denom
-            s = (to_p[:, 0] * ray[1] - to_p[:, 1] * ray[0]) / denom
-        hits = np.nonzero((denom != 0) & (t > 0) & (s >= 0) & (s <= 1) & (near >= 0))[0]
+        hits, t = wall_hits(ray, to_p, edge, near)
         pending = np.ones(height, dtype=bool)
-        for w in hits[np.argsort(t[hits], kind="stable")]:
+        for w in hits:
             n, b, d = near[w], far[w], t[w]
             point = eye + d * ray
             start = p[w] if front[w] else q[w]

@@ -47,6 +47,18 @@ class _FrontToBackLayers(RunLayers):
         return drawsegs(self.e, self._windows)
 
 
+def _fill(order, tables, tex, heights, state, view, e, light):
+    """``(colour columns, runs, where, pixels written)``: ``where`` is the entries' windows
+    front to back, the per-pixel run numbers for the painter."""
+    if order == "front_to_back":
+        if tex is None:
+            return fill_flat(tables, state, view, e, light)
+        return fill_textured(tables, tex, heights, state, view, e, light)
+    if tex is None:
+        return fill_back_to_front(tables, state, view, e, light)
+    return paint_textured(tables, tex, heights, state, view, e, light)
+
+
 def render(source, camera: Camera, width: int, height: int, order: str = "front_to_back",
            light: bool = True, textures: bool = True) -> Frame:
     """Render one ``width × height`` frame of ``source`` (a tree, a ``WorldState`` or
@@ -67,23 +79,15 @@ def render(source, camera: Camera, width: int, height: int, order: str = "front_
     tex = level_textures(tables, state) if textures else None
     if order == "front_to_back":
         walk = walk_front_to_back(tables, heights.key_solid, view, walk_boxes(state))
-        e = Entries(tables, heights, view, walk.pieces)
-        if tex is None:
-            colour, runs, windows, written = fill_flat(tables, state, view, e, light)
-        else:
-            colour, runs, windows, written = fill_textured(tables, tex, heights, state, view,
-                                                           e, light)
-        layers = _FrontToBackLayers(view, heights, tables, e, runs, windows)
-        front = (walk, e, windows)
     else:
         walk = walk_back_to_front(tables, view)
-        e = Entries(tables, heights, view, walk.pieces)
-        if tex is None:
-            colour, runs, pixel_run, written = fill_back_to_front(tables, state, view, e, light)
-        else:
-            colour, runs, pixel_run, written = paint_textured(tables, tex, heights, state, view,
-                                                              e, light)
-        layers = RunLayers(view, heights, tables, e, runs, pixel_run=pixel_run)
+    e = Entries(tables, heights, view, walk.pieces)
+    colour, runs, where, written = _fill(order, tables, tex, heights, state, view, e, light)
+    if order == "front_to_back":
+        layers = _FrontToBackLayers(view, heights, tables, e, runs, where)
+        front = (walk, e, where)
+    else:
+        layers = RunLayers(view, heights, tables, e, runs, pixel_run=where)
         front = None                     # the things are clipped by a front-to-back walk
     walk.stats["pixels_written"] = written
     # sprites and masked middle textures, far to near, over the finished frame

@@ -10,13 +10,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..geometry import exact_side, side_tolerance
+from ..geometry import side_tolerance
 from .fill import colour_columns, row_numbers
 from .frame import KIND_CEILING, KIND_FLOOR, KIND_WALL
 from .project import make_box_check, make_projector
 from .shading import plane_stripes, wall_codes
 from .tables import key_light
-from .walk import Walk
+from .walk import Walk, eye_side
 
 __all__ = ["PAINTER_CHUNK", "walk_back_to_front", "fill_back_to_front", "paint_runs",
            "PainterRuns"]
@@ -55,10 +55,7 @@ def walk_back_to_front(tables, view) -> Walk:
                     add(((i << 1) | back, wa, wb, c1, c2))
         elif box_columns(*boxes[item]) is not None:
             visited += 1
-            a, b, c = lines[item]
-            s = a * ex + b * ey + c
-            if not (s < -tol or s > tol):             # too close to call in doubles
-                s = exact_side(a, b, c, ex, ey)
+            s = eye_side(lines[item], ex, ey, tol)
             k0, k1 = kids[item]
             near, far = (k0, k1) if s <= 0 else (k1, k0)
             if near >= 0:

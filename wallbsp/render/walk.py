@@ -25,7 +25,17 @@ from ..geometry import exact_side, side_tolerance
 from .columns import ClosedColumns
 from .project import make_box_check, make_projector
 
-__all__ = ["Walk", "walk_front_to_back"]
+__all__ = ["Walk", "walk_front_to_back", "eye_side"]
+
+
+def eye_side(line, ex, ey, tol):
+    """The side of the eye of a node's line, by its sign: doubles when they are clearly
+    right (beyond ``tol``, ``geometry.side_tolerance``), rationals otherwise."""
+    a, b, c = line
+    s = a * ex + b * ey + c
+    if not (s < -tol or s > tol):                     # too close to call in doubles
+        s = exact_side(a, b, c, ex, ey)
+    return s
 
 
 @dataclass
@@ -71,8 +81,8 @@ def walk_front_to_back(tables, solid, view, boxes=None) -> Walk:
                 continue                              # hidden behind one closed interval
             visited += 1
             a, b, c = lines[item]
-            s = a * ex + b * ey + c
-            if not (s < -tol or s > tol):             # too close to call in doubles
+            s = a * ex + b * ey + c                   # eye_side, inline: the hot path
+            if not (s < -tol or s > tol):
                 s = exact_side(a, b, c, ex, ey)
             k0, k1 = kids[item]
             if s <= 0:                                # on the line counts as in front
