@@ -32,8 +32,8 @@ from collections import deque
 
 import numpy as np
 
-from ..queries import (PLAYER_HEIGHT, PLAYER_RADIUS, segs_near, standing_heights,
-                       use_target, walls_crossed)
+from ..queries import (MAX_COORDINATE, PLAYER_HEIGHT, PLAYER_RADIUS, segs_near,
+                       standing_heights, use_target, walls_crossed)
 from ..segments import closest_point
 from ..thingtypes import SHOOTABLE
 from ..world import WorldState
@@ -45,6 +45,7 @@ from .rules import Rules
 __all__ = ["World", "MAX_TURN", "MESSAGE_LOG", "SKILLS"]
 
 MAX_TURN = 360.0          # degrees a tic, either way: more is no input anyone gives
+MAX_ANGLE = 36000.0       # a hundred turns either way, as the command line allows
 MESSAGE_LOG = 16
 SKILLS = range(1, 6)
 SUIT = "radiation suit"
@@ -122,7 +123,8 @@ class World:
     # -- changing it --------------------------------------------------------------------------
     def place_player(self, x, y, angle) -> None:
         """Put the player at (x, y) facing ``angle``, feet on the floor there, at rest."""
-        x, y, angle = (_finite(name, v) for name, v in (("x", x), ("y", y), ("angle", angle)))
+        x, y = _number("x", x, MAX_COORDINATE), _number("y", y, MAX_COORDINATE)
+        angle = _number("angle", angle, MAX_ANGLE)
         if self.tree.locate(x, y) is None:
             raise ValueError(f"place_player: ({x}, {y}) is outside the map")
         self.player = spawn_player(self.state, x, y, angle)
@@ -132,10 +134,8 @@ class World:
         """Advance the world 1/35 s with these inputs (module docstring).  ``forward``,
         ``strafe``: fractions of walking speed in [-1, 1]; ``turn``: degrees
         counter-clockwise, at most ``MAX_TURN`` either way; ``use``, ``run``: booleans."""
-        forward, strafe = _fraction("forward", forward), _fraction("strafe", strafe)
-        turn = _finite("turn", turn)
-        if abs(turn) > MAX_TURN:
-            raise ValueError(f"World.tic: turn must be within ±{MAX_TURN:g}, not {turn!r}")
+        forward, strafe = _number("forward", forward, 1.0), _number("strafe", strafe, 1.0)
+        turn = _number("turn", turn, MAX_TURN)
         use, run = _flag("use", use), _flag("run", run)
         if self.exited:
             return
@@ -344,22 +344,13 @@ def _distance_to_seg(x, y, seg) -> float:
     return math.hypot(x - qx, y - qy)
 
 
-def _finite(name, value) -> float:
-    if isinstance(value, bool):
-        raise ValueError(f"World: {name} must be a number, not {value!r}")
-    try:
-        number = float(value)
-    except (TypeError, ValueError, OverflowError):
-        raise ValueError(f"World: {name} must be a number, not {value!r}") from None
-    if not math.isfinite(number):
-        raise ValueError(f"World: {name} must be finite, not {value!r}")
-    return number
-
-
-def _fraction(name, value) -> float:
-    number = _finite(name, value)
-    if not -1.0 <= number <= 1.0:
-        raise ValueError(f"World.tic: {name} must be within [-1, 1], not {value!r}")
+def _number(name, value, limit) -> float:
+    """``value`` as a float within ±``limit`` (NaN is within nothing), else a ValueError."""
+    numeric = isinstance(value, (int, float, np.integer, np.floating)) \
+        and not isinstance(value, (bool, np.bool_))
+    number = float(value) if numeric else math.nan
+    if not -limit <= number <= limit:
+        raise ValueError(f"World: {name} must be a number within ±{limit:g}, not {value!r}")
     return number
 
 
@@ -367,4 +358,4 @@ def _flag(name, value) -> bool:
     if isinstance(value, (bool, np.bool_)) or (isinstance(value, (int, np.integer))
                                                and value in (0, 1)):
         return bool(value)
-    raise ValueError(f"World.tic: {name} must be true or false, not {value!r}")
+    raise ValueError(f"World: {name} must be true or false, not {value!r}")
