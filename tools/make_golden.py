@@ -16,11 +16,11 @@ from pathlib import Path
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
-from wallbsp.camera import Camera  # noqa: E402
+from wallbsp.camera import Camera, eye_camera  # noqa: E402
+from wallbsp.world import static_state  # noqa: E402
 
-# (name, level in levels/, x, y, angle, fov, (width, height)); the eye is EYE above the
-# floor of the sector at (x, y)
-EYE = 41
+# (name, level in levels/, x, y, angle, fov, (width, height)[, light]); the eye stands on
+# the floor of the sector at (x, y) (camera.eye_camera)
 VIEWS = [
     ("small_start", "small", 256, 96, 90, 90, (160, 100)),
     ("small_shrine", "small", 90, 640, 40, 90, (160, 100)),
@@ -30,20 +30,27 @@ VIEWS = [
     ("multi_stairs_down", "multi", 384, 1000, 270, 90, (160, 100)),
     ("multi_window", "multi", 560, 384, 0, 110, (200, 100)),
     ("multi_door", "multi", 220, 384, 180, 60, (128, 96)),
+    ("textured_start", "textured/multi", 256, 112, 60, 90, (160, 100)),
+    ("textured_window_fullbright", "textured/multi", 560, 384, 0, 110, (200, 100), False),
 ]
 
 
 def camera(tree, x, y, angle, fov) -> Camera:
-    """The view's camera: eye EYE above the floor of the sector under (x, y)."""
-    sector = tree.locate(x, y)
-    return Camera(x, y, tree.level.sectors[sector].floor + EYE, angle, fov)
+    """The view's camera: a player standing at (x, y)."""
+    return eye_camera(static_state(tree), x, y, angle, fov)
 
 
 def golden_frames(trees):
-    """``(name, frame)`` for every view; ``trees`` maps a level's stem to its tree."""
+    """``(name, frame)`` for every view; ``trees`` maps a level's name (as in VIEWS) to its
+    tree, and levels missing there are compiled."""
+    from wallbsp import compile_level, load_level
     from wallbsp.render import render
-    for name, level, x, y, angle, fov, (width, height) in VIEWS:
-        yield name, render(trees[level], camera(trees[level], x, y, angle, fov), width, height)
+    for name, level, x, y, angle, fov, (width, height), *light in VIEWS:
+        if level not in trees:
+            trees = {**trees, level: compile_level(load_level(ROOT / "levels" / f"{level}.json"))}
+        tree = trees[level]
+        yield name, render(tree, camera(tree, x, y, angle, fov), width, height,
+                           light=light[0] if light else True)
 
 
 def main() -> int:
