@@ -105,6 +105,17 @@ class _Packer:
         index = self.rgb_indices(_packed(np.array(_hex(color))))
         return self.add(np.full((side, side), index, dtype=np.int64))
 
+    def add_colours(self, colors) -> np.ndarray:
+        """A 1 × 1 texture for each of ``colors`` at once; returns their ids."""
+        texels = self.rgb_indices(_packed(np.array([_hex(c) for c in colors]).reshape(-1, 3)))
+        n, first = len(texels), len(self.base)
+        self.base.extend(range(self.size, self.size + n))
+        for sizes in (self.width, self.height, self.stride, self.pitch):
+            sizes.extend([1] * n)
+        self.pieces.append(texels)
+        self.size += n
+        return np.arange(first, first + n, dtype=np.int64)
+
     def lut(self) -> np.ndarray:
         """``(33, colours)`` packed rgb (see the module doc)."""
         levels = np.arange(LIGHT_LEVELS, dtype=np.float64)
@@ -145,10 +156,9 @@ class LevelTextures:
             return walls[name]
 
         self._key_textures(tables, state, wall_texture)
-        self.black = packer.add_colour("#000000")
-        self.wall_colour = np.array([[packer.add_colour(c) for c in (
-            w.drawn_upper_color, w.color, w.drawn_lower_color)] for w in level.walls],
-            dtype=np.int64).reshape(-1, 3)
+        self.black = int(packer.add_colours(["#000000"])[0])
+        self.wall_colour = packer.add_colours([c for w in level.walls for c in (
+            w.drawn_upper_color, w.color, w.drawn_lower_color)]).reshape(-1, 3)
         plane = np.full((len(level.sectors), 2), -1, dtype=np.int64)
         for s, sector in enumerate(level.sectors):
             names = (state.floor_texture(s), sector.ceiling_texture)
@@ -163,8 +173,7 @@ class LevelTextures:
         self.plane_texture = plane                       # (sectors, floor/ceiling)
         sky = resources.sky(level) if hasattr(resources, "sky") else None
         self.sky = -1 if sky is None else packer.add_picture(sky, True)
-        self.sky_colour = np.array([packer.add_colour(s.ceiling_color) for s in level.sectors],
-                                   dtype=np.int64)
+        self.sky_colour = packer.add_colours([s.ceiling_color for s in level.sectors])
         self.atlas = packer.atlas()
         self.lut = packer.lut()
         self.n_colours = self.lut.shape[1]
