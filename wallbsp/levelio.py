@@ -70,6 +70,8 @@ Errors and warnings
 """
 from __future__ import annotations
 
+import contextlib
+import gc
 import json
 import os
 from pathlib import Path
@@ -130,7 +132,8 @@ def parse_json(data: str | bytes, source: str) -> Any:
     if not text or text.isspace():      # (strip() would copy a big file's text)
         raise level_error(source, ROOT, "the file is empty (expected a JSON object)")
     try:
-        return json.loads(text)
+        with _gc_paused():
+            return json.loads(text)
     except json.JSONDecodeError as err:
         raise level_error(source, ROOT, f"malformed JSON at line {err.lineno}, column "
                                         f"{err.colno}: {err.msg}") from None
@@ -156,13 +159,29 @@ def level_from_dict(data: Any, source: str = "<level>", strict: bool = False,
     skips the search for duplicate, overlapping and crossing walls, which are warnings
     only (a compiled tree's level was searched when it was compiled)."""
     check = Checker(source)
-    fields = read_level(check, data)
+    with _gc_paused():
+        fields = read_level(check, data)
     level = Level(**fields, source=source, warnings=check.warnings,
                   source_dir=None if source_dir is None else Path(source_dir))
     _warn_suspicious(check, level, check_conflicts)
     if strict and check.warnings:
         raise LevelError(check.warnings[0])
     return level
+
+
+@contextlib.contextmanager
+def _gc_paused():
+    """Python's cycle collector off for a while.  Decoding and reading a big level makes
+    some 10^5 containers and frees none: the collector would walk the growing heap again
+    and again (a quarter of the time) to find nothing."""
+    if not gc.isenabled():
+        yield
+        return
+    gc.disable()
+    try:
+        yield
+    finally:
+        gc.enable()
 
 
 def save_level(level: Level, path) -> None:
