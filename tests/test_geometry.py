@@ -1,3 +1,4 @@
+import math
 from fractions import Fraction
 
 import numpy as np
@@ -86,3 +87,23 @@ def test_side_at_matches_fractions(p1, p2, q1, q2, n, d):
     expected = (value > 0) - (value < 0)
     got = side_at(np.array([s1]), np.array([s2]), np.array([n]), np.array([d]))
     assert got.tolist() == [expected]
+
+
+def test_direction_comes_from_a_table_of_16_bit_fractions_within_a_fine_angle():
+    from wallbsp.geometry import FINE_ANGLES, direction
+    for angle in [0, 30, 45, 89.99, 90, 180, 270, 359.999, -30, 725.5]:
+        cos, sin = direction(angle)
+        assert cos * 65536 == int(cos * 65536) and sin * 65536 == int(sin * 65536)
+        a = math.radians(angle)
+        step = 2 * math.pi / FINE_ANGLES
+        assert abs(cos - math.cos(a)) <= step and abs(sin - math.sin(a)) <= step
+    assert direction(30) == direction(30 + 360) == direction(30 - 720)
+
+
+def test_fine_cosines_are_far_from_a_rounding_tie():
+    """The table is the same on every platform: no entry is within a few ulps of a
+    half-step of 1/65536, where a maths library's last bit could change the rounding."""
+    step = 2 * math.pi / 8192
+    for i in range(8192):
+        scaled = math.cos(step * (i + 0.5)) * 65536
+        assert abs(abs(scaled - math.floor(scaled)) - 0.5) > 1e-9

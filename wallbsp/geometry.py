@@ -17,6 +17,7 @@ points closer than that (a hair from the line) are decided exactly, by ``exact_s
 """
 from __future__ import annotations
 
+import math
 from fractions import Fraction
 from math import isfinite
 from numbers import Rational
@@ -138,3 +139,29 @@ def side_of(a, b, c, x, y) -> int:
     if s > tol:
         return 1
     return exact_side(a, b, c, x, y)
+
+
+# --------------------------------------------------------------------------------------------
+# Directions for the game's motion
+
+FINE_ANGLES = 8192                     # DOOM's fine angles per turn (finesine's size)
+_FIXED = 65536                         # DOOM's 16.16 fixed point
+
+
+def _fine_cosines() -> tuple:
+    """cos at the middle of each fine angle, rounded to 1/65536 as DOOM's finecosine is:
+    the rounding absorbs the last-bit differences between platforms' maths libraries, so
+    a demo plays to the same state on any machine."""
+    step = 2 * math.pi / FINE_ANGLES
+    return tuple(round(math.cos(step * (i + 0.5)) * _FIXED) / _FIXED for i in range(FINE_ANGLES))
+
+
+_FINE_COS = _fine_cosines()
+
+
+def direction(angle) -> tuple:
+    """``(cos, sin)`` of an angle in degrees, from the fine-angle table (exact binary
+    fractions, the same everywhere); the angle is truncated to its fine angle, as DOOM's
+    ``angle >> ANGLETOFINESHIFT``."""
+    fine = int(angle % 360.0 * (FINE_ANGLES / 360.0)) % FINE_ANGLES
+    return _FINE_COS[fine], _FINE_COS[(fine - FINE_ANGLES // 4) % FINE_ANGLES]

@@ -56,6 +56,7 @@ from __future__ import annotations
 import math
 import weakref
 
+from .geometry import direction
 from .segments import SKIN, closest_point, crossing, slide
 from .world import state_of
 
@@ -352,10 +353,10 @@ def use_target(source, x, y, angle, reach=USE_RANGE):
     player)`` (0: its front); None when a one-sided or closed wall (no opening now) comes
     first, or nothing is in reach.  Open two-sided walls are reached through."""
     x, y = _point("use_target: point", x, y)
-    a = math.radians(_finite("use_target: angle", angle))
+    cos, sin = direction(_finite("use_target: angle", angle))
     reach = _finite("use_target: reach", reach, MAX_COORDINATE)
     _tree, geo, heights = _world(source)
-    for _t, wall in _walls_met(geo, x, y, x + reach * math.cos(a), y + reach * math.sin(a)):
+    for _t, wall in _walls_met(geo, x, y, x + reach * cos, y + reach * sin):
         if geo.special[wall]:
             return wall, _side(geo.wall_ends[wall], x, y)
         bottom, top = heights.opening(geo, wall)

@@ -34,6 +34,7 @@ import math
 from dataclasses import dataclass
 
 from ..camera import EYE_HEIGHT, Camera
+from ..geometry import direction
 from ..queries import PLAYER_HEIGHT, move, standing_heights
 
 __all__ = ["Player", "TICRATE", "spawn_player", "player_tic", "walk_by"]
@@ -125,10 +126,10 @@ def _number(name, value) -> float:
 
 def _thrust(player, forward, strafe, factor):
     """P_Thrust: forward along the view, strafe along its right (SPEC §4's R)."""
-    a = math.radians(player.angle)
+    cos, sin = direction(player.angle)
     push, side = forward * WALK_THRUST * factor, strafe * STRAFE_THRUST * factor
-    player.momx += push * math.cos(a) + side * math.sin(a)
-    player.momy += push * math.sin(a) - side * math.cos(a)
+    player.momx += push * cos + side * sin
+    player.momy += push * sin - side * cos
 
 
 def _move_by_momentum(source, player):
