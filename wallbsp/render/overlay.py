@@ -83,9 +83,12 @@ def _packed_pixels(colour_columns):
     """The frame as one packed uint32 per pixel, when ``colour_columns`` is the rgb view of
     such a buffer (as every fill makes it): one write a pixel instead of three bytes."""
     whole = colour_columns.base
-    if (isinstance(whole, np.ndarray) and whole.dtype == np.uint8
-            and whole.shape == colour_columns.shape[:2] + (4,) and whole.flags.c_contiguous):
-        return whole.reshape(-1).view("<u4")
+    width, height = colour_columns.shape[:2]
+    if (isinstance(whole, np.ndarray) and whole.dtype == np.dtype("<u4")
+            and whole.size == width * height and whole.flags.c_contiguous
+            and colour_columns.strides == (4 * height, 4, 1)
+            and colour_columns.ctypes.data == whole.ctypes.data):
+        return whole.reshape(-1)
     return None
 
 
