@@ -18,8 +18,9 @@ from wallbsp.wad import load_wad_level
 from wallbsp.world import WorldState
 
 ROOT = Path(__file__).resolve().parent.parent
-MAPS = [("things_e1m1.png", lambda: load_wad_level("/usr/share/games/doom/freedoom1.wad", "E1M1")),
-        ("things_map01.png", lambda: load_wad_level("/usr/share/games/doom/freedoom2.wad", "MAP01")),
+FREEDOOM = "/usr/share/games/doom/"
+MAPS = [("things_e1m1.png", lambda: load_wad_level(FREEDOOM + "freedoom1.wad", "E1M1")),
+        ("things_map01.png", lambda: load_wad_level(FREEDOOM + "freedoom2.wad", "MAP01")),
         ("things_multi.png", lambda: load_level(ROOT / "levels/textured/multi.json"))]
 
 

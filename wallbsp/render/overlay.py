@@ -157,7 +157,7 @@ def draw_masked(view, state, tables, walk, entries, drawsegs, colour_columns, re
     if len(ids):
         clip = ClipWindows(drawsegs, tables.key_near[entries.keys],
                            tables.key_far[entries.keys], view, state.floor, state.ceiling)
-        sprites, _, drawn = sprite_slices(view, state, things, ids, clip, atlas, light)
+        sprites, drawn = sprite_slices(view, state, things, ids, clip, atlas, light)
         stats["things_drawn"] = drawn
         if sprites is not None:
             parts.append(sprites)

@@ -74,15 +74,15 @@ def _picture(info, rotation, atlas):
 
 
 def sprite_slices(view, state, things, ids, clip, atlas, light=True):
-    """``(Slices, considered, drawn)``: the sprite columns of things ``ids`` (gathered from
-    the visited leaves) in front of the camera and not wholly hidden."""
-    considered = len(ids)
+    """``(Slices or None, drawn)``: the sprite columns of things ``ids`` (gathered from the
+    visited leaves) in front of the camera and not wholly hidden, and how many things have
+    one."""
     dx, dy = things.x[ids] - view.x, things.y[ids] - view.y
     depth = dx * view.fx + dy * view.fy
     ahead = depth >= MIN_DEPTH
     ids, dx, dy, depth = ids[ahead], dx[ahead], dy[ahead], depth[ahead]
     if not len(ids):
-        return None, considered, 0
+        return None, 0
     along = dx * view.rx + dy * view.ry
     # DOOM's R_ProjectSprite gives up on a thing four times further aside than ahead;
     # here, on one whose widest likely picture (four radii and 64) is outside the view
@@ -90,7 +90,7 @@ def sprite_slices(view, state, things, ids, clip, atlas, light=True):
     if not aside.all():
         ids, depth, along = ids[aside], depth[aside], along[aside]
         if not len(ids):
-            return None, considered, 0
+            return None, 0
     rotation = rotations(view.x, view.y, things.x[ids], things.y[ids], things.angle[ids])
     slot, mirrored = _pictures(things, ids, rotation, atlas)
     _, _, _, width, height, left, top, _ = atlas.arrays()
@@ -124,5 +124,5 @@ def sprite_slices(view, state, things, ids, clip, atlas, light=True):
     slices = Slices(col, row1, row2, slot[sprite], tx, t0[sprite], tstep[sprite],
                     level[sprite], np.full(len(col), KIND_THING, np.uint8), ids[sprite],
                     depth[sprite])
-    return slices, considered, drawn
+    return slices, drawn
 
