@@ -66,7 +66,9 @@ Errors and warnings
     warning) are collected in ``Level.warnings`` in a fixed order: unknown keys in document
     order, then sectors, walls, duplicates, overlaps and crossings by wall index, each of
     the last three capped at ``MAX_REPORTED`` lines plus one ``... and N more`` line.
-    With ``strict=True`` the first warning raises ``LevelError`` instead.
+    With ``strict=True`` the first warning raises ``LevelError`` instead;
+    ``check_conflicts=False`` leaves out the search for duplicate, overlapping and crossing
+    walls (the tree file's reader does: its level was searched when it was compiled).
 """
 from __future__ import annotations
 
