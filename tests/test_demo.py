@@ -149,8 +149,9 @@ def test_a_demo_on_e1m1_goes_through_the_first_door(tmp_path, capsys):
     level = load_wad_level(FREEDOOM1, "E1M1")
     tree = compile_level(level)
     world, demo = World(tree), demo_for(level)
-    # down the lift east of the start, across the hall, to the door in its north-east corner
-    for x, y in ((345, 304), (832, 440), (832, 490)):
+    # down the lift east of the start, across the hall (east of the former human standing
+    # at (816, 448): solid things block), to the door in its north-east corner
+    for x, y in ((345, 304), (870, 420), (870, 490), (832, 490)):
         assert steer_to(world, demo, x, y)
     door = 10
     assert world.sector(door)[1] == world.sector(door)[0]            # shut

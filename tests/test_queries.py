@@ -383,3 +383,56 @@ def test_use_passes_open_walls_and_stops_at_closed_ones():
     state = WorldState(tree)
     state.set_sector(1, ceiling=0)                                     # B shuts
     assert queries.use_target(state, 250, 128, 0, reach=300) is None
+
+
+# -- solid things (DOOM's PIT_CheckThing: boxes, height ignored) ----------------------------------
+
+BARREL, HEALTH_BONUS = 2035, 2014           # radius 10, solid; radius 20, an item
+
+
+def with_things(*things):
+    """Room A of ``two_rooms`` (closed) holding ``things`` (type, x, y)."""
+    from wallbsp.level import Thing
+    tree = two_rooms(east_open=False)
+    level = tree.level
+    return compile_level(Level(level.name, level.vertices, level.sectors, level.walls,
+                               level.start, version=2,
+                               things=tuple(Thing(x, y, 0, t, 7) for t, x, y in things)))
+
+
+def test_a_barrel_stops_the_player_its_radius_plus_the_players_away():
+    tree = with_things((BARREL, 128, 128))
+    x, y = walk(tree, 40.0, 128.0, 8.0, 0.0, 30)
+    assert x == pytest.approx(128 - 10 - RADIUS, abs=1e-3) and y == 128.0
+    state = WorldState(tree)
+    state.things.remove(0)                  # gone: the way is clear
+    assert queries.move(state, x, y, 8.0, 0.0, 0.0) == (x + 8.0, y)
+
+
+def distance_to_box(x, y, cx, cy, half):
+    return math.hypot(max(abs(x - cx) - half, 0.0), max(abs(y - cy) - half, 0.0))
+
+
+def test_a_player_slides_round_a_barrel_and_never_enters_its_box():
+    tree = with_things((BARREL, 128, 128))
+    x, y = 40.0, 128.0 + 20                 # a glancing walk: the circle meets the corner
+    ys = []
+    for _ in range(30):
+        x, y = queries.move(tree, x, y, 8.0, 0.0, 0.0)
+        ys.append(y)
+        assert distance_to_box(x, y, 128, 128, 10) >= RADIUS - 1e-6
+    assert x > 128 + 10 + RADIUS            # got past it ...
+    assert max(ys) > 128 + 20               # ... pushed aside round the corner
+    x, y = 90.0, 90.0                       # diagonally at its corner: round it, never in
+    for _ in range(30):
+        x, y = queries.move(tree, x, y, 6.0, 6.0, 0.0)
+        assert distance_to_box(x, y, 128, 128, 10) >= RADIUS - 1e-6
+    assert x > 128 + 10 and y > 128 + 10
+
+
+def test_items_never_block_and_a_tree_without_things_moves_as_before():
+    tree = with_things((HEALTH_BONUS, 128, 128))
+    plain = two_rooms(east_open=False)
+    moved = queries.move(tree, 40.0, 128.0, 100.0, 0.0, 0.0)
+    assert moved == queries.move(plain, 40.0, 128.0, 100.0, 0.0, 0.0)
+    assert moved == pytest.approx((140.0, 128.0))

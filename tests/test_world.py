@@ -273,3 +273,17 @@ def test_damaging_floor_hurts_and_a_status_reports_it():
     assert status["health"] == 90 and status["tics"] == 64
     assert {"tics", "x", "y", "z", "angle", "exited"} <= set(status)
     assert math.isfinite(status["x"])
+
+
+def test_a_barrel_blocks_the_player_and_a_health_bonus_is_walked_through_and_taken():
+    barrel, bonus = 2035, 2014
+    level = corridor([room(), room()], things=[Thing(150, 64, 0, bonus, 7),
+                                               Thing(200, 64, 0, barrel, 7)])
+    world = world_of(level)
+    world.place_player(100, 64, 0)
+    assert not walk_to(world, 200, limit=120)          # the barrel is in the way
+    assert world.player.x == pytest.approx(200 - 10 - 16, abs=1e-3)
+    assert not world.things.alive[0] and world.inventory.health == 101
+    assert world.things.alive[1]
+    world.place_player(100, 64 + 30, 0)                # past its side: the way is clear
+    assert walk_to(world, 230)

@@ -15,6 +15,12 @@ blocks it when
   of the two sectors now; a closed door (floor >= ceiling) is the extreme case, or
 - the opening's bottom ``max(floors)`` is more than ``step`` (DOOM: 24) above ``z_floor``.
 
+**Solid things** (barrels, pillars, monsters: DOOM's MF_SOLID) block too, by DOOM's
+PIT_CheckThing: the sides of a square of half-size the thing's radius
+(``Things.solid_sides`` of the source's state) are blocking segs for the sweep, so the
+circle stops ``radius`` away from the square and slides round it; height plays no part,
+as in vanilla DOOM.  A tree's static state has the level's things.
+
 Dropping down is never limited.  ``move`` never lets the circle come closer than ``radius`` to
 a blocking seg: each sub-step (no longer than the radius, so the near segs gathered for it
 are all that it can meet) sweeps the circle against the nearby blocking segs, stops it at the
@@ -212,6 +218,7 @@ def move(source, x, y, dx, dy, z_floor, radius=PLAYER_RADIUS, step=MAX_STEP,
     length = math.hypot(dx, dy)
     if length == 0:
         return x, y
+    things = state_of(source).things
     limit = geo.extent + 2 * radius
     if length > limit:                # bounded cost: no run longer than the map
         dx, dy, length = dx * limit / length, dy * limit / length, limit
@@ -219,17 +226,21 @@ def move(source, x, y, dx, dy, z_floor, radius=PLAYER_RADIUS, step=MAX_STEP,
     sx, sy = dx / pieces, dy / pieces
     rules = (z_floor, radius, step, headroom)
     for _ in range(pieces):
-        nx, ny = _try_move(geo, heights, x, y, sx, sy, rules)
+        nx, ny = _try_move(geo, heights, things, x, y, sx, sy, rules)
         if nx == x and ny == y:
             break                     # stuck: every further sub-step would be this one
         x, y = nx, ny
     return x, y
 
 
-def _try_move(geo, heights, x, y, dx, dy, rules):
-    """One sub-step: slide; if stuck, try the x and y parts alone (P_SlideMove's fallback)."""
+def _try_move(geo, heights, things, x, y, dx, dy, rules):
+    """One sub-step: slide; if stuck, try the x and y parts alone (P_SlideMove's fallback).
+    Solid things' boxes block as walls do (module docstring)."""
     radius = rules[1]
-    walls = _blocking_segs(geo, heights, x, y, math.hypot(dx, dy) + radius + 2 * SKIN, rules)
+    reach = math.hypot(dx, dy) + radius + 2 * SKIN
+    walls = _blocking_segs(geo, heights, x, y, reach, rules)
+    if len(things):
+        walls += things.solid_sides(x, y, reach)
     if not walls:
         return x + dx, y + dy
     big = radius + SKIN
