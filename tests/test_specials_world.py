@@ -1,7 +1,7 @@
 """Switches, teleporters, exits, sector specials, light effects and the specials table."""
 import pytest
 
-from wallbsp.game.rules import Rules, spawns
+from wallbsp.game.rules import Rules
 from wallbsp.game.specials import LINE_SPECIALS, describe
 from wallbsp.game.switches import BUTTON_TIME, switched_name
 from wallbsp.level import Side, Thing
@@ -76,7 +76,6 @@ def test_teleporter_sends_you_to_the_destination_in_the_tagged_sector_facing_its
 
 
 def test_teleport_destinations_of_another_skill_or_multiplayer_are_absent():
-    assert spawns(7, 3) and not spawns(1, 3) and spawns(1, 2) and not spawns(7 | 16, 3)
     level = teleport_level(flags=4)                 # skills 4 and 5 only
     rules, _ = rules_for(level, skill=3)
     assert rules.cross_line(wall_between(level, 0), 0) is None

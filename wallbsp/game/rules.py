@@ -27,6 +27,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
+from ..things import spawned_at
 from . import actions, lights
 from .actions import FloorKind
 from .movers import CLOSE30_WAIT, RAISE_IN_5_MINS_WAIT, Ceiling, CeilingKind, Door, DoorKind, Plat
@@ -34,7 +35,7 @@ from .neighbours import Neighbours
 from .specials import LINE_SPECIALS, LineSpecial
 from .switches import Buttons
 
-__all__ = ["Rules", "Teleport", "SectorEvent", "spawns", "describe_sector_special",
+__all__ = ["Rules", "Teleport", "SectorEvent", "describe_sector_special",
            "TELEPORT_DESTINATION", "TELEPORT_FREEZE", "SECRET"]
 
 TELEPORT_DESTINATION = 14   # the thing type a teleporter sends you to
@@ -91,14 +92,6 @@ class SectorEvent:
 
 
 NOTHING = SectorEvent()
-
-
-def spawns(flags: int, skill: int) -> bool:
-    """Whether a thing with THINGS ``flags`` is in a single-player game at ``skill`` (1-5)."""
-    if flags & 16:                    # multiplayer only
-        return False
-    bit = 1 if skill <= 2 else 2 if skill == 3 else 4
-    return bool(flags & bit)
 
 
 def _scrolling_walls(specials, rate: int) -> np.ndarray:
@@ -328,7 +321,7 @@ class Rules:
             locate = self._locate or self.state.tree.locate
             self._destinations = [(locate(t.x, t.y), t) for t in self.level.things
                                   if t.type == TELEPORT_DESTINATION
-                                  and spawns(t.flags, self.skill)]
+                                  and spawned_at(t.flags, self.skill)]
         for s in self.neighbours.tagged(self.level.walls[wall].tag):
             for sector, thing in self._destinations:
                 if sector == s:
