@@ -81,32 +81,22 @@ class RunSurfaces:
         self.column = np.full(n_runs, tex.base[tex.black], dtype=np.int64)
         self.t_rel, self.t1, self.kx, self.ky = (np.zeros(n_runs) for _ in range(4))
         self.level = np.full(n_runs, UNLIT * tex.n_colours, dtype=np.int64)
+        self.wrap = np.ones(n_runs, dtype=np.int64)     # column runs: the texture's height
         self.plane_slot = np.zeros(n_runs, dtype=np.int64)
         wall = kinds == KIND_WALL
         sector = np.where(wall | (kinds == KIND_NOTHING), 0, indices).astype(np.int64)
-        sky = (kinds == KIND_CEILING) & tables.sector_sky[sector]
-        plane = ((kinds == KIND_CEILING) | (kinds == KIND_FLOOR)) & ~sky
-        column_runs = wall | sky
-        self.stride = np.full(n_runs, np.inf)           # column runs: their column's length
-        self.wrap = np.ones(n_runs, dtype=np.int64)     # and the texture's height
-        # the rows each part covers, unclipped: texture rows are reduced at its start
-        part = np.minimum(parts, 3)
-        reference = last_row = np.zeros(n_runs, dtype=np.int64)
-        if len(e.col):
-            reference = np.stack([np.zeros_like(e.p1), e.p1, e.l, e.fl])[part, entry]
-            last_row = np.stack([e.p1, e.u, e.fl, np.full_like(e.p1, view.height)])[
-                part, entry] - 1
+        ceiling = kinds == KIND_CEILING
+        sky = ceiling & tables.sector_sky[sector]
+        plane = (ceiling | (kinds == KIND_FLOOR)) & ~sky
         if wall.any():
             self._walls(np.flatnonzero(wall), tables, tex, heights, state, view, e,
-                        entry[wall], parts[wall], reference[wall])
+                        entry[wall], col[wall], parts[wall] == 1)
         if sky.any():
-            self._sky(np.flatnonzero(sky), tex, view, view.u[col[sky]], sector[sky])
+            self._sky(np.flatnonzero(sky), tex, view, e, entry[sky], col[sky], parts[sky] == 1,
+                      sector[sky])
         if plane.any():
             self._planes(np.flatnonzero(plane), tex, heights, state, view, view.u[col[plane]],
-                         sector[plane], kinds[plane] == KIND_CEILING)
-        end = self.t_rel + self.t1 * (last_row + 1.0)
-        self.shape[column_runs & ((end >= self.stride - 1) | (self.stride >= FIX_LIMIT)
-                                  | (self.t1 >= FIX_LIMIT))] = 2
+                         sector[plane], ceiling[plane])
         self._fixed_point()
         self.column32 = self.column.astype(np.int32)
         self.level32 = self.level.astype(np.int32)
@@ -120,53 +110,62 @@ class RunSurfaces:
         self.t_fix = ((start + (1 << 31)) % (1 << 32) - (1 << 31)).astype(np.int32)
         self.s_fix = np.rint(np.where(plain, self.t1, 0.0) * FIX_ONE).astype(np.int32)
 
-    def _column_texture(self, runs, texture, column, t0, t1, reference):
-        """Column runs of ``texture`` at texture column ``column``: rows ``t0 + t1*row``."""
-        tex = self.tex
-        height = tex.height[texture]
+    def _column_texture(self, runs, texture, column, t0, t1, rows):
+        """Column runs at texture column ``column`` of a texture given as ``(base, pitch,
+        stride, height)``: texture rows ``t0 + t1*row`` for the part's unclipped screen
+        ``rows`` ``(first, last)``."""
+        base, pitch, stride, height = texture
+        first, last = rows
         t1 = np.where(height > 1, t1, 0.0)                  # a colour: one texel
-        at_reference = t0 + t1 * reference
-        self.t_rel[runs] = at_reference - height * np.floor(at_reference / height) \
-            - t1 * reference
+        at_first = t0 + t1 * first
+        t_rel = at_first - height * np.floor(at_first / height) - t1 * first
+        self.t_rel[runs] = t_rel
         self.t1[runs] = t1
-        self.column[runs] = tex.base[texture] + column * tex.pitch[texture]
-        self.stride[runs] = tex.stride[texture]
+        self.column[runs] = base + column * pitch
         self.wrap[runs] = height
+        end = t_rel + t1 * (last + 1.0)
+        wrapped = (end >= stride - 1) | (stride >= FIX_LIMIT) | (t1 >= FIX_LIMIT)
+        self.shape[runs] = np.where(wrapped, 2, 0)
 
-    def _walls(self, runs, tables, tex, heights, state, view, e, entry, part, reference):
+    def _walls(self, runs, tables, tex, heights, state, view, e, entry, col, upper):
         key = np.repeat(e.keys, e.counts)[entry]
-        one_sided = tables.key_far[key] < 0
-        tpart = np.where(part == 1, 0, np.where(one_sided, 1, 2))    # upper, middle, lower
-        texture = tex.key_texture[tpart, key]
-        wall = tables.key_wall[key]
-        texture = np.where(texture >= 0, texture, tex.wall_colour[wall, tpart])
-        width = tex.width[texture]
-        depth = 1.0 / e.w[entry]
-        ray = view.u[e.col[entry]]
-        px = view.x + depth * (view.fx + ray * view.rx) - tex.start[key, 0]
-        py = view.y + depth * (view.fy + ray * view.ry) - tex.start[key, 1]
-        along = np.abs(px * tex.direction[key, 0] + py * tex.direction[key, 1])
-        x_offset = tex.x_offset[key] + np.where(key & 1, 0.0, state.wall_x_offset[wall])
-        column = np.floor(x_offset + along).astype(np.int64) % width
-        top = _tops(tables, tex, heights, key, tpart, tex.height[texture])
+        part = np.where(upper, 0, 2 - (tables.key_far[key] < 0))  # upper, middle, lower
+        (base, pitch, stride, height, width, sx, sy, dx, dy, x_offset, y_offset, which,
+         plus) = tex.part_table[part, key].T
+        w = e.w[entry]
+        depth = 1.0 / w
+        ray = view.u[col]
+        px = (view.x - sx) + depth * (view.fx + ray * view.rx)
+        py = (view.y - sy) + depth * (view.fy + ray * view.ry)
+        along = np.abs(px * dx + py * dy)
+        if state.wall_x_offset.any():                      # scrolling walls: front sides
+            wall = tables.key_wall[key]
+            x_offset = x_offset + np.where(key & 1, 0.0, state.wall_x_offset[wall])
+        column = np.floor(x_offset + along) % width
+        top = heights.key_heights[which.astype(np.int64), key] + plus
         step = depth / view.f
-        self._column_texture(runs, texture, column,
-                             top + tex.y_offset[key] - view.z - view.y0 * step, step, reference)
+        rows = (np.where(upper, e.p1[entry], e.l[entry]),
+                np.where(upper, e.u[entry], e.fl[entry]) - 1)
+        self._column_texture(runs, (base, pitch, stride, height), column,
+                             top + y_offset - view.z - view.y0 * step, step, rows)
         if self.light:
-            level = light_levels(key_light(tables, state)[key], e.w[entry])
-            self.level[runs] = level * tex.n_colours
+            self.level[runs] = light_levels(key_light(tables, state)[key], w) * tex.n_colours
 
-    def _sky(self, runs, tex, view, ray, sector):
+    def _sky(self, runs, tex, view, e, entry, col, upper, sector):
+        rows = (np.where(upper, e.p1[entry], 0), np.where(upper, e.u[entry], e.p1[entry]) - 1)
         if tex.sky < 0:
             texture = tex.sky_colour[sector]
-            self._column_texture(runs, texture, 0, 0.0, 0.0, 0)
+            self._column_texture(runs, (tex.base[texture], tex.pitch[texture],
+                                        tex.stride[texture], tex.height[texture]),
+                                 0, 0.0, 0.0, rows)
         else:
-            width = tex.width[tex.sky]
-            angle = view.angle - np.degrees(np.arctan(ray))
-            column = np.floor(SKY_COLUMNS * angle / 360.0).astype(np.int64) % width
-            self._column_texture(runs, np.full(len(runs), tex.sky), column,
+            sky = tex.sky
+            angle = view.angle - np.degrees(np.arctan(view.u[col]))
+            column = np.floor(SKY_COLUMNS * angle / 360.0).astype(np.int64) % tex.width[sky]
+            self._column_texture(runs, (tex.base[sky], tex.pitch[sky], tex.stride[sky],
+                                        tex.height[sky]), column,
                                  SKY_ROW - SKY_ROWS_PER_V * view.y0 / view.f,
-                                 SKY_ROWS_PER_V / view.f, 0)
+                                 SKY_ROWS_PER_V / view.f, rows)
         if self.light:
             self.level[runs] = FULL_BRIGHT * tex.n_colours      # the sky is never dimmed
 
@@ -195,18 +194,6 @@ def _plane_levels(tex, heights, state, view, planes, light):
     inverse_depth = distance[None, :] / np.maximum(fz, 1e-9)[:, None]
     level = light_levels(far_level(state.light[sector])[:, None], inverse_depth)
     return level * tex.n_colours
-
-
-def _tops(tables, tex, heights, key, tpart, tex_height):
-    """The texture's top (SPEC §4b's pegging table) for wall parts of ``key``."""
-    near_ceiling, near_floor, far_ceiling, far_floor = heights.key_heights[:, key]
-    wall = tables.key_wall[key]
-    upper_unpegged, lower_unpegged = tex.upper_unpegged[wall], tex.lower_unpegged[wall]
-    both_sky = tables.key_upper_sky[key]
-    upper = np.where(upper_unpegged, near_ceiling, far_ceiling + tex_height)
-    middle = np.where(lower_unpegged, near_floor + tex_height, near_ceiling)
-    lower = np.where(lower_unpegged, np.where(both_sky, far_ceiling, near_ceiling), far_floor)
-    return np.choose(tpart, [upper, middle, lower])
 
 
 _ROW_TABLES: dict = {}

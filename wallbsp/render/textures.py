@@ -35,6 +35,8 @@ FLAT_SIDE = 64
 PAD = 256                     # texels a wall column is repeated beyond its height, so rows
                               # of a part up to this tall need no wrapping
 PARTS = ("upper", "middle", "lower")
+PART_FIELDS = ("base", "pitch", "stride", "height", "width", "start_x", "start_y",
+               "direction_x", "direction_y", "x_offset", "y_offset", "which", "plus")
 
 
 def _packed(rgb) -> np.ndarray:
@@ -185,9 +187,33 @@ class LevelTextures:
         self.pitch = np.array(packer.pitch, dtype=np.int64)
         (self.start, self.direction, self.x_offset, self.y_offset,
          self.has_side) = side_geometry(tables, level)
-        walls_ = level.walls
-        self.upper_unpegged = np.array([w.upper_unpegged for w in walls_], dtype=bool)
-        self.lower_unpegged = np.array([w.lower_unpegged for w in walls_], dtype=bool)
+        self.part_table = self._part_table(tables, level)
+
+    def _part_table(self, tables, level):
+        """``(3, keys, PART_FIELDS)``: for each part (upper, middle, lower) of each side key,
+        its texture (or colour) as ``base, pitch, stride, height, width``, the side's
+        ``S`` and direction, offsets, and its top (SPEC §4b's pegging table) as ``top =
+        heights[which] + plus`` over the key's ``(N.ceiling, N.floor, B.ceiling,
+        B.floor)``."""
+        key_wall = tables.key_wall
+        texture = np.where(self.key_texture >= 0, self.key_texture,
+                           self.wall_colour[key_wall[None, :], np.arange(3)[:, None]])
+        height = self.height[texture].astype(np.float64)
+        upper_unpegged = np.array([w.upper_unpegged for w in level.walls], dtype=bool)[key_wall]
+        lower_unpegged = np.array([w.lower_unpegged for w in level.walls], dtype=bool)[key_wall]
+        n_ceiling, n_floor, b_ceiling, b_floor = range(4)
+        which = np.stack([np.where(upper_unpegged, n_ceiling, b_ceiling),
+                          np.where(lower_unpegged, n_floor, n_ceiling),
+                          np.where(lower_unpegged, np.where(tables.key_upper_sky, b_ceiling,
+                                                            n_ceiling), b_floor)])
+        plus = np.stack([np.where(upper_unpegged, 0.0, height[0]),
+                         np.where(lower_unpegged, height[1], 0.0), np.zeros_like(height[2])])
+        per_key = [self.start[:, 0], self.start[:, 1], self.direction[:, 0],
+                   self.direction[:, 1], self.x_offset, self.y_offset]
+        fields = [self.base[texture], self.pitch[texture], self.stride[texture], height,
+                  self.width[texture]] + [np.broadcast_to(f, texture.shape) for f in per_key] \
+            + [which, plus]
+        return np.stack([np.asarray(f, dtype=np.float64) for f in fields], axis=-1)
 
     def _key_textures(self, tables, state, wall_texture):
         """``key_texture`` (3, keys): the texture of each part of each side key, -1 none."""
