@@ -142,3 +142,93 @@ def test_following_maps_follow_the_one_being_played():
                                lambda wad: DOOM2[:3])
     assert [following("normal") for _ in range(3)] == ["MAP02", "MAP03", None]
     assert made == ["MAP02", "MAP03"]
+
+
+# -- things on the automap, what the player holds, textures or flat colours ---------------------
+
+MONSTER, MEDIKIT, BLUE_CARD, BARREL = 3004, 2012, 5, 2035
+
+
+def things_tree():
+    from wallbsp.level import Thing
+    return compile_level(corridor([room(), room()], things=[
+        Thing(200, 24, 90, MONSTER, 7), Thing(160, 100, 0, MEDIKIT, 7),
+        Thing(230, 100, 0, BLUE_CARD, 7), Thing(24, 104, 0, BARREL, 7)]))
+
+
+def colour_near(walk, x, y, colour):
+    """Whether ``colour`` is on the window within 3 pixels of the map point (x, y)."""
+    from wallbsp.mapview import MapView, level_bounds
+    view = MapView.centred(level_bounds(walk.tree), walk.display.get_size())
+    px, py = (round(v) for v in view(x, y))
+    patch = pygame.surfarray.array3d(walk.display)[px - 3:px + 4, py - 3:py + 4]
+    return bool((patch == colour).all(axis=-1).any())
+
+
+def test_the_automap_shows_things_by_kind_and_t_toggles_them(opened):
+    from wallbsp.mapview import THING_KINDS
+    walk = opened(things_tree())
+    walk.display = pygame.display.set_mode((640, 400))
+    shown = {(200, 24): "monsters", (160, 100): "pickups", (230, 100): "keys",
+             (24, 104): "decorations"}
+    pygame.event.post(pygame.event.Event(pygame.KEYDOWN, key=pygame.K_TAB, mod=0))
+    frames(walk, 1)
+    assert walk.show_map and walk.show_things
+    for (x, y), kind in shown.items():
+        assert colour_near(walk, x, y, THING_KINDS[kind]), kind
+    pygame.event.post(pygame.event.Event(pygame.KEYDOWN, key=pygame.K_t, mod=0))
+    frames(walk, 1)
+    assert not walk.show_things and "off" in walk.message
+    for (x, y), kind in shown.items():
+        assert not colour_near(walk, x, y, THING_KINDS[kind]), kind
+    assert "T things" in " ".join(hud.HELP)
+
+
+def test_a_thing_picked_up_leaves_the_automap(opened):
+    from wallbsp.mapview import THING_KINDS
+    walk = opened(things_tree())
+    walk.display = pygame.display.set_mode((640, 400))
+    walk.show_map = True
+    walk.world.inventory.health = 50
+    walk.world.place_player(160, 70, 90)
+    frames(walk, 1)
+    assert colour_near(walk, 160, 100, THING_KINDS["pickups"])
+    walk.held = {pygame.K_w}
+    frames(walk, 6)
+    assert walk.world.inventory.health == 75 and "medikit" in walk.message
+    assert not colour_near(walk, 160, 100, THING_KINDS["pickups"])
+
+
+def test_the_readout_shows_health_armour_ammo_and_keys(opened):
+    walk = opened(things_tree())
+    frames(walk, 1)
+    lines = hud.readout_lines(walk)
+    assert "health 100  armour 0  keys none" in lines
+    assert "ammo  bullets 50  shells 0  rockets 0  cells 0" in lines
+    walk.world.place_player(200, 100, 0)            # onto the blue keycard
+    walk.held = {pygame.K_w}
+    frames(walk, 8)
+    assert any(line.endswith("keys blue card") for line in hud.readout_lines(walk))
+
+
+def test_textures_by_default_and_x_toggles_flat_colours(opened):
+    from wallbsp import load_level
+    from importlib.resources import files
+    walk = opened(compile_level(load_level(files("wallbsp") / "data" / "textured.json")))
+    frames(walk, 1)
+    camera = walk.world.camera(walk.fov)
+    textured = render(walk.world, camera, *walk.size).color
+    assert walk.textures and np.array_equal(walk.frame.color, textured)
+    assert hud.readout_lines(walk)[0].endswith("textures")
+    pygame.event.post(pygame.event.Event(pygame.KEYDOWN, key=pygame.K_x, mod=0))
+    frames(walk, 1)
+    flat = render(walk.world, camera, *walk.size, textures=False).color
+    assert not walk.textures and np.array_equal(walk.frame.color, flat)
+    assert not np.array_equal(flat, textured)
+    assert walk.message == "view: flat colours"
+    assert hud.readout_lines(walk)[0].endswith("flat colours")
+
+
+def test_a_level_without_textures_says_so(opened):
+    walk = opened(door_tree())
+    assert hud.texture_mode(walk) == "flat colours (no textures)"

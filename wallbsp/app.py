@@ -14,8 +14,9 @@ it again, or goes on to the tree that ``next_level(exit)`` gives (a WAD's next m
 Keys: W/S or Up/Down forward/back, A/D strafe, Left/Right or the mouse (grab with M) to turn
 (DOOM's key turning: slow for ``SLOW_TURN_TICS`` tics, then ``TURN_WALK``/``TURN_RUN`` a
 tic), Shift run, E or Space use, Tab automap, O map overlay/full, L partition lines on the
-map, R or F1 readout, P front-to-back / painter's, [ ] internal resolution, F or F11
-fullscreen, K or F12 screenshot (``wallbsp-shot-NNN.png`` here), H help line, Esc quit.
+map, T things on the map, X textures / flat colours (textures by default), R or F1 readout,
+P front-to-back / painter's, [ ] internal resolution, F or F11 fullscreen, K or F12
+screenshot (``wallbsp-shot-NNN.png`` here), H help line, Esc quit.
 
 Headless (``frames=N``): N frames with no input, each followed by one tic turning ``turn``
 degrees, under SDL's dummy driver when there is no window system.  An interactive
@@ -36,7 +37,7 @@ from types import SimpleNamespace
 from .camera import Camera
 from .game.player import TICRATE
 from .game.world import World
-from .hud import draw_overlays, say
+from .hud import draw_overlays, say, texture_mode
 from .image import save_png
 from .render import render
 from .window import (RESOLUTIONS, NoDisplayError, check_display, close_display,   # noqa: F401
@@ -83,6 +84,8 @@ class Walkthrough:
     show_map: bool = False
     map_overlay: bool = False
     show_partitions: bool = False
+    show_things: bool = True         # the things on the automap
+    textures: bool = True            # textured view (a level with resources), else flat
     show_readout: bool = False
     mouse_grab: bool = False
     fullscreen: bool = False
@@ -198,6 +201,8 @@ def bindings():
             pygame.K_TAB: _toggle("show_map"),
             pygame.K_o: _toggle("map_overlay"),
             pygame.K_l: _toggle("show_partitions"),
+            pygame.K_t: _toggle_things,
+            pygame.K_x: _toggle_textures,
             pygame.K_r: _toggle("show_readout"), pygame.K_F1: _toggle("show_readout"),
             pygame.K_h: _toggle("show_help"),
             pygame.K_p: _toggle_order,
@@ -246,6 +251,16 @@ def _toggle(name):
     def toggle(walk):
         setattr(walk, name, not getattr(walk, name))
     return toggle
+
+
+def _toggle_things(walk):
+    walk.show_things = not walk.show_things
+    say(walk, f"things on the map: {'on' if walk.show_things else 'off'}")
+
+
+def _toggle_textures(walk):
+    walk.textures = not walk.textures
+    say(walk, f"view: {texture_mode(walk)}")
 
 
 def _toggle_order(walk):
@@ -335,7 +350,8 @@ def render_view(walk, blend=1.0):
     """Render at the internal resolution; one blit_array, one scale into the window."""
     import pygame
     width, height = walk.size
-    walk.frame = render(walk.world, view_camera(walk, blend), width, height, order=walk.order)
+    walk.frame = render(walk.world, view_camera(walk, blend), width, height, order=walk.order,
+                        textures=walk.textures)
     if walk.surface is None or walk.surface.get_size() != walk.size:
         walk.surface = pygame.Surface(walk.size, 0, walk.display)   # the window's format
     pygame.surfarray.blit_array(walk.surface, walk.frame.color_columns)

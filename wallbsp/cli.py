@@ -235,7 +235,7 @@ def cmd_walk(args):
     from .game.demo import demo_for, save_demo
     if args.level is None:
         from importlib.resources import files
-        args.level = str(files("wallbsp") / "data" / "default.json")
+        args.level = str(files("wallbsp") / "data" / "textured.json")
     check_outputs("walk", [args.screenshot, args.record], [args.level])
     try:
         if args.frames is None:
@@ -316,7 +316,8 @@ def build_parser() -> argparse.ArgumentParser:
     sub.required = True
 
     p = sub.add_parser("walk", help="the pygame walkthrough")
-    p.add_argument("level", nargs="?", help="level, tree or WAD:MAP (default: the bundled level)")
+    p.add_argument("level", nargs="?",
+                   help="level, tree or WAD:MAP (default: the bundled level, textured)")
     p.add_argument("--size", type=_size, default=(320, 200), metavar="WxH",
                    help="internal resolution (default 320x200)")
     p.add_argument("--frames", type=_bounded(1, 10 ** 7, _integer, "a whole number"),
