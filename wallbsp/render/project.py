@@ -44,7 +44,8 @@ def make_projector(view: Projection):
             c2 = ceil(x0 + f * (r2 + (near - d2) / (d1 - d2) * (r1 - r2)) / near)
         else:
             c2 = ceil(x0 + f * r2 / d2)
-        c1, c2 = max(c1, 0), min(c2, width)
+        c1 = c1 if c1 > 0 else 0                      # (conditionals: no calls, hot loop)
+        c2 = c2 if c2 < width else width
         if c1 >= c2:
             return None
         return c1, c2, (r2 - r1) / k, (d1 - d2) / k
@@ -84,7 +85,8 @@ def make_box_check(view: Projection):
             return None
         lo = floor(x0 + f * (px * rx + py * ry) / dp) if dp > 1e-9 else 0
         hi = floor(x0 + f * (qx * rx + qy * ry) / dq) + 2 if dq > 1e-9 else width
-        lo, hi = max(lo, 0), min(hi, width)
+        lo = lo if lo > 0 else 0
+        hi = hi if hi < width else width
         return None if lo >= hi else (lo, hi)
 
     return box_columns
