@@ -43,6 +43,11 @@ def coded_textures(folder: Path) -> Path:
     return folder
 
 
+def packed_rgb(rgb):
+    rgb = rgb.astype(np.int64)
+    return (rgb[..., 0] << 16) | (rgb[..., 1] << 8) | rgb[..., 2]
+
+
 def decode(rgb):
     """(u, t) of GRID texels."""
     rgb = rgb.astype(np.int64)
@@ -232,3 +237,19 @@ def test_freedoom_textured_starts_match_the_reference(wad, map_name):
     a, b = render(tree, camera, 64, 40), render(tree, camera, 64, 40, order="back_to_front")
     for name in ("color", "kind", "index", "depth"):
         assert np.array_equal(getattr(a, name), getattr(b, name)), name
+
+
+@pytest.mark.skipif(not (FREEDOOM / "freedoom1.wad").exists(), reason="Freedoom not installed")
+def test_wad_textures_are_lit_through_the_colormap():
+    """With light, every texel of a WAD texture is a palette colour (COLORMAP maps palette
+    indices to palette indices), and darker than its full-bright self on average."""
+    from wallbsp.wad import load_wad_level
+    level = load_wad_level(freedoom("freedoom1.wad"), "E1M1")
+    tree = compile_level(level)
+    start = level.start
+    camera = Camera(start.x, start.y, level.sectors[tree.locate(start.x, start.y)].floor + 41,
+                    start.angle)
+    lit, bright = render(tree, camera, 64, 40), render(tree, camera, 64, 40, light=False)
+    palette = level_resources(tree).palette
+    assert np.isin(packed_rgb(lit.color), packed_rgb(palette)).all()
+    assert lit.color.astype(int).sum() < bright.color.astype(int).sum()
