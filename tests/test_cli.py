@@ -288,3 +288,14 @@ def test_render_saves_the_depth_buffer_and_draws_fullbright(tmp_path, capsys):
     _one_line_exit_2(argv[:-1] + [tmp_path / "nodir" / "d.npy", "-o", tmp_path / "x.png"],
                      capsys, "nodir")
     assert not (tmp_path / "x.png").exists()
+
+
+@pytest.mark.parametrize("argv", [["walk"], ["play", "l.json", "d.json"], ["compile", "l.json"],
+                                  ["render", "l.json", "-o", "x.png"], ["stats", "l.json"],
+                                  ["draw", "l.json", "-o", "x.png"],
+                                  ["import-wad", "x.wad", "E1M1", "-o", "l.json"]])
+def test_each_command_parses_to_its_function(argv):
+    from wallbsp.cli import COMMANDS
+    from wallbsp.cliargs import build_parser
+    args = build_parser(COMMANDS).parse_args(argv)
+    assert args.command == argv[0] and args.func is COMMANDS[argv[0]]
