@@ -7,8 +7,8 @@
   removed from the world; one it refuses stays where it is.  Call it after the player's
   move every tic, at the new position (DOOM touches items while checking the new spot).
 - ``blocked_at(things, x, y)``: whether a player there overlaps a solid thing's box
-  (DOOM's P_CheckPosition refusal).  The sides of those boxes, for the movement's sweep,
-  are ``Things.solid_sides`` (world stage, so ``queries.move`` can use them).
+  (DOOM's P_CheckPosition refusal).  ``queries.move`` keeps the player out of those
+  boxes itself: their sides (``Things.solid_sides``) block its sweep as walls do.
 """
 from __future__ import annotations
 
