@@ -98,6 +98,8 @@ class RunSurfaces:
             self._planes(np.flatnonzero(plane), tex, heights, state, view, view.u[col[plane]],
                          sector[plane], ceiling[plane])
         self._fixed_point()
+        self.kxy = np.stack([self.kx, -self.ky])
+        self.xy0 = np.array([[view.x + FLAT_OFFSET], [FLAT_OFFSET - view.y]])
         self.column32 = self.column.astype(np.int32)
         self.level32 = self.level.astype(np.int32)
 
@@ -248,14 +250,16 @@ def shade_wrapped(s: RunSurfaces, run, row):
 def shade_planes(s: RunSurfaces, run, row):
     """Packed rgb of plane-run pixels."""
     tex, view = s.tex, s.view
-    inverse = _inverse_rows(view).take(row)
-    # far from zero, so that truncation is floor; a multiple of 64 keeps the texel
+    # world x and -y of each pixel, offset far from zero (a multiple of 64) so that
+    # truncation is floor
+    xy = np.take(s.kxy, run, axis=1)
+    xy *= _inverse_rows(view).take(row)
+    xy += s.xy0
     with np.errstate(invalid="ignore"):                 # a row through the horizon
-        x = (s.kx.take(run) * inverse + (view.x + FLAT_OFFSET)).astype(np.int32)
-        y = ((FLAT_OFFSET - view.y) - s.ky.take(run) * inverse).astype(np.int32)
-    x &= FLAT_SIDE - 1
+        texel = xy.astype(np.int32)
+    texel &= FLAT_SIDE - 1
+    x, y = texel
     x <<= 6
-    y &= FLAT_SIDE - 1
     x |= y
     x += s.column32.take(run)
     colour = tex.atlas.take(x).astype(np.int32)
