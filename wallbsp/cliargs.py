@@ -101,8 +101,13 @@ def _add_build_options(p):
                    metavar="N", help="seed of the candidate draw, 0 or more (default 0)")
 
 
-def _add_strict(p):
+def _finish(p, func, build=True):
+    """The options every command ends with (the build's, unless ``build`` is False, and
+    ``--strict``), and the function that runs it."""
+    if build:
+        _add_build_options(p)
     p.add_argument("--strict", action="store_true", help="treat level warnings as errors")
+    p.set_defaults(func=func)
 
 
 def build_parser(commands) -> argparse.ArgumentParser:
@@ -127,8 +132,7 @@ def build_parser(commands) -> argparse.ArgumentParser:
                    help="frame cap (default: none)")
     p.add_argument("--record", metavar="DEMO",
                    help="write the inputs of every tic on the first level to this demo (JSON)")
-    _add_build_options(p), _add_strict(p)
-    p.set_defaults(func=commands["walk"])
+    _finish(p, commands["walk"])
 
     p = sub.add_parser("play", help="replay a demo headless and print the final state")
     p.add_argument("level", help="the level, tree or WAD:MAP the demo was recorded on")
@@ -137,16 +141,14 @@ def build_parser(commands) -> argparse.ArgumentParser:
     p.add_argument("--size", type=_size, default=(320, 200), metavar="WxH",
                    help="screenshot size (default 320x200)")
     p.add_argument("--json", action="store_true", help="the final state as one JSON object")
-    _add_build_options(p), _add_strict(p)
-    p.set_defaults(func=commands["play"])
+    _finish(p, commands["play"])
 
     p = sub.add_parser("compile", help="compile a level into a tree file")
     p.add_argument("level", help="level file or WAD:MAP")
     p.add_argument("-o", "--output", metavar="TREE",
                    help="tree file (default: the level's path with .wbsp)")
     p.add_argument("--json", action="store_true", help="statistics as one JSON object")
-    _add_build_options(p), _add_strict(p)
-    p.set_defaults(func=commands["compile"])
+    _finish(p, commands["compile"])
 
     p = sub.add_parser("render", help="render one frame to PNG, headless")
     p.add_argument("source", metavar="LEVEL_OR_TREE")
@@ -166,27 +168,23 @@ def build_parser(commands) -> argparse.ArgumentParser:
                    help="also save the depth buffer (float32) to this .npy")
     p.add_argument("--fullbright", action="store_true", help="no light diminishing")
     p.add_argument("--json", action="store_true", help="print the frame's stats as JSON")
-    _add_build_options(p), _add_strict(p)
-    p.set_defaults(func=commands["render"])
+    _finish(p, commands["render"])
 
     p = sub.add_parser("stats", help="the tree's statistics")
     p.add_argument("source", metavar="LEVEL_OR_TREE")
     p.add_argument("--json", action="store_true", help="one JSON object")
-    _add_build_options(p), _add_strict(p)
-    p.set_defaults(func=commands["stats"])
+    _finish(p, commands["stats"])
 
     p = sub.add_parser("draw", help="a picture of the partition (PNG)")
     p.add_argument("source", metavar="LEVEL_OR_TREE")
     p.add_argument("-o", "--output", required=True, metavar="PNG", help="PNG to write")
     p.add_argument("--size", type=_bounded(64, MAX_SIDE, _integer, "a whole number"),
                    default=1024, help=f"longest side in pixels, 64 to {MAX_SIDE} (default 1024)")
-    _add_build_options(p), _add_strict(p)
-    p.set_defaults(func=commands["draw"])
+    _finish(p, commands["draw"])
 
     p = sub.add_parser("import-wad", help="convert a DOOM-format map into a level")
     p.add_argument("wad")
     p.add_argument("map", help="map name, e.g. E1M1 or MAP01")
     p.add_argument("-o", "--output", required=True, metavar="LEVEL", help="level JSON to write")
-    _add_strict(p)
-    p.set_defaults(func=commands["import-wad"])
+    _finish(p, commands["import-wad"], build=False)
     return parser
