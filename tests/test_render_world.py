@@ -148,3 +148,10 @@ def test_both_orders_accept_a_world_state(order):
     a = render(state, CAMERA, 40, 30, order=order)
     b = render(compile_level(two_rooms(door_ceiling=64)), CAMERA, 40, 30, order=order)
     assert np.array_equal(a.color, b.color) and np.array_equal(a.index, b.index)
+
+
+def test_an_eye_at_whole_map_units_needs_no_rational_side_test():
+    from wallbsp.render.walk import eye_tolerance
+    assert eye_tolerance((3.0, 5.0, 2.0 ** 40), 1280, -4704) == -1.0
+    assert eye_tolerance((3.0, 5.0, 2.0 ** 40), 1280.5, -4704) > 0
+    assert eye_tolerance((2.0 ** 30, 5.0, 0.0), 2.0 ** 24, 0) > 0     # past 2**53: not exact

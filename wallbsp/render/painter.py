@@ -10,13 +10,12 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..geometry import side_tolerance
 from .fill import colour_columns, row_numbers
 from .frame import KIND_CEILING, KIND_FLOOR, KIND_WALL
 from .project import make_box_check, make_projector
 from .shading import plane_stripes, wall_codes
 from .tables import key_light
-from .walk import Walk, eye_side
+from .walk import Walk, eye_side, eye_tolerance
 
 __all__ = ["PAINTER_CHUNK", "walk_back_to_front", "fill_back_to_front", "paint_runs",
            "PainterRuns"]
@@ -32,7 +31,7 @@ def walk_back_to_front(tables, view) -> Walk:
     ends, flips, one_sided = tables.seg_ends, tables.seg_flip, tables.seg_one_sided
     project, box_columns = make_projector(view), make_box_check(view)
     ex, ey = view.x, view.y
-    tol = side_tolerance(*tables.line_max, ex, ey)
+    tol = eye_tolerance(tables.line_max, ex, ey)
     pieces = []
     add = pieces.extend
     visited = 0

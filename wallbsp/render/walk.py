@@ -25,7 +25,18 @@ from ..geometry import exact_side, side_tolerance
 from .columns import ClosedColumns
 from .project import make_box_check, make_projector
 
-__all__ = ["Walk", "walk_front_to_back", "eye_side"]
+__all__ = ["Walk", "walk_front_to_back", "eye_side", "eye_tolerance"]
+
+
+def eye_tolerance(line_max, ex, ey) -> float:
+    """``geometry.side_tolerance`` for the eye, or -1 when ``a*x + b*y + c`` is exact in
+    doubles (an eye at whole map units, as players start: every partial sum an integer
+    below 2**53), so that even an eye on a line needs no rationals."""
+    a, b, c = line_max
+    if float(ex).is_integer() and float(ey).is_integer() \
+            and a * abs(ex) + b * abs(ey) + c < 2.0 ** 53:
+        return -1.0
+    return side_tolerance(a, b, c, ex, ey)
 
 
 def eye_side(line, ex, ey, tol):
@@ -60,7 +71,7 @@ def walk_front_to_back(tables, solid, view, boxes=None) -> Walk:
     closed = ClosedColumns(view.width)
     starts, stops, clip = closed.starts, closed.ends, closed.clip
     ex, ey = view.x, view.y
-    tol = side_tolerance(*tables.line_max, ex, ey)
+    tol = eye_tolerance(tables.line_max, ex, ey)
     pieces, leaves = [], []
     add, enter = pieces.extend, leaves.append
     visited = segs_drawn = 0
