@@ -273,3 +273,23 @@ def test_the_throughput_script_reports_every_configuration():
     assert all(v > 0 for v in report["one_env_steps_per_s"].values())
     assert report["explore_reset"]["walls_median"] > 300
     assert set(report["meets"]) == {"one_env", "explore_reset", "async_2_speedup"}
+
+
+def test_a_forked_worker_starts_without_the_parents_trees(tmp_path, exit_level):
+    from wallbsp.envs import levels
+    path = tmp_path / "level.json"
+    save_level(replace(exit_level.level, resources=(str(TEXTURE_DIR),)), path)
+    parent = levels.given_tree(path)
+    read, write = os.pipe()
+    pid = os.fork()
+    if pid == 0:                                  # the child: a tree of its own
+        os.close(read)
+        fresh = levels.given_tree(path) is not parent
+        os.write(write, b"1" if fresh else b"0")
+        os._exit(0)
+    os.close(write)
+    answer = os.read(read, 1)
+    os.waitpid(pid, 0)
+    os.close(read)
+    assert answer == b"1"
+    assert levels.given_tree(path) is parent      # the parent keeps its own

@@ -5,8 +5,9 @@
     python tools/env_throughput.py --envs 8   # N for the vector runs (default: 2 x nproc)
 
 The full run also rewrites the "environments" section of docs/benchmarks.md.  Nothing is
-trained: a seeded uniform-random policy over the Discrete actions (a new episode when one
-ends) drives every environment.
+trained: one seeded uniform-random sequence of Discrete actions (a new episode when one
+ends) drives every environment, every sub-environment of a vector env getting the same
+action, so every configuration walks the same way and draws the same views.
 
 Throughput is the best of a few rounds, the configurations taking turns round by round (a
 busy machine only ever takes speed away).
@@ -61,39 +62,58 @@ def exit_options(level, **extra) -> dict:
 
 
 class RandomDriver:
-    """An Env or a VectorEnv under a seeded uniform-random policy, stepped in rounds."""
+    """An Env or a VectorEnv driven by one seeded uniform-random sequence of Discrete
+    actions, stepped in rounds.  Every sub-environment of a vector env gets the same
+    action, so all of them, and a single env under the same sequence, walk the same way
+    and draw the same views: the configurations do the same work per step."""
 
     def __init__(self, env, seed: int = 0):
         self.env, self.count = env, getattr(env, "num_envs", 1)
-        self.best_cpu = 0.0             # steps per second of this process's CPU time
-        env.action_space.seed(seed)
+        self.best_cpu = 0.0             # steps per CPU second (this process and its workers)
+        single = getattr(env, "single_action_space", env.action_space)
+        self.actions = np.random.default_rng(seed).integers(single.n, size=1 << 16)
+        self.next = 0
         env.reset(seed=seed)
 
-    def rate(self, steps: int) -> float:
-        """Steps a second over ``steps`` calls, counting every sub-environment's step (a
+    def rate(self, calls: int) -> float:
+        """Steps a second over ``calls`` steps, counting every sub-environment's step (a
         vector env resets its own; a single one is reset here when its episode ends).
-        Also keeps the best rate per CPU second of this process, which other work on the
-        machine does not lower (it means something when the work is in this process)."""
-        env, space = self.env, self.env.action_space
-        started, cpu = time.perf_counter(), time.process_time()
-        for _ in range(steps):
-            _, _, terminated, truncated, _ = env.step(space.sample())
+        Also keeps the best rate per CPU second spent by this process and the vector env's
+        worker processes, which other work on the machine does not lower."""
+        env = self.env
+        started, cpu = time.perf_counter(), cpu_seconds(env)
+        for _ in range(calls):
+            action = self.actions[self.next % len(self.actions)]
+            self.next += 1
+            _, _, terminated, truncated, _ = env.step(
+                action if self.count == 1 else np.full(self.count, action))
             if self.count == 1 and (terminated or truncated):
                 env.reset()
-        cpu = time.process_time() - cpu
+        cpu = cpu_seconds(env) - cpu
         if cpu > 0:
-            self.best_cpu = max(self.best_cpu, self.count * steps / cpu)
-        return self.count * steps / (time.perf_counter() - started)
+            self.best_cpu = max(self.best_cpu, self.count * calls / cpu)
+        return self.count * calls / (time.perf_counter() - started)
+
+
+def cpu_seconds(env) -> float:
+    """CPU seconds used so far by this process and by ``env``'s worker processes (an
+    ``AsyncVectorEnv``'s ``processes``; /proc/PID/stat's utime + stime)."""
+    total = time.process_time()
+    for process in getattr(env, "processes", ()):
+        with open(f"/proc/{process.pid}/stat") as f:
+            fields = f.read().rsplit(")", 1)[1].split()
+        total += (int(fields[11]) + int(fields[12])) / os.sysconf("SC_CLK_TCK")
+    return total
 
 
 def best_rates(drivers: dict, steps: int, rounds: int) -> dict:
-    """Each driver's best steps/s over ``rounds`` rounds of ``steps // count`` calls, the
-    drivers taking turns round by round, so a busy spell on the machine hits all alike
-    and the best round is the one least disturbed."""
+    """Each driver's best steps/s over ``rounds`` rounds of ``steps`` calls, the drivers
+    taking turns round by round (each round the same stretch of the walk for all), so a
+    busy spell on the machine hits all alike and the best round is the least disturbed."""
     best = {name: 0.0 for name in drivers}
     for _ in range(rounds):
         for name, driver in drivers.items():
-            best[name] = max(best[name], driver.rate(max(1, steps // driver.count)))
+            best[name] = max(best[name], driver.rate(steps))
     return {name: round(v, 1) for name, v in best.items()}
 
 
@@ -181,7 +201,11 @@ def vector_envs(level, counts, steps: int, rounds: int) -> dict:
     for driver in drivers.values():
         driver.env.close()
     out["speedup_async_2"] = round(out["async 2"] / out["1"], 2)
-    return out
+    cpu = {name: round(d.best_cpu, 1) for name, d in drivers.items()}
+    # on an idle machine with 2 cores: 2 cores' worth of the async run's CPU rate, and
+    # never more than two single environments
+    bound = min(2.0 * cpu["async 2"], 2.0 * cpu["1"]) / cpu["1"] if cpu["1"] else None
+    return out, cpu, None if bound is None else round(bound, 2)
 
 
 def main(argv=None) -> int:
@@ -193,18 +217,19 @@ def main(argv=None) -> int:
 
 def run(args) -> dict:
     import wallbsp.envs  # noqa: F401 - registers the ids
-    steps, rounds = (10, 1) if args.quick else (200, 5)
+    steps, rounds = (10, 1) if args.quick else (150, 5)
     level = exit_level(args.quick)
     counts = sorted({2, args.envs})
     single, single_cpu = one_env(level, steps, rounds)
     reset = explore_reset(1 if args.quick else 40)
-    vectors = vector_envs(level, counts, steps, rounds)
+    vectors, vectors_cpu, bound = vector_envs(level, counts, steps, rounds)
     return {"machine": machine(), "load_average": os.getloadavg()[0], "quick": args.quick,
             "level": getattr(level, "name", level), "size": f"{SIZE[0]}x{SIZE[1]}",
             "steps": steps, "rounds": rounds,
             "one_env_steps_per_s": single, "one_env_steps_per_cpu_s": single_cpu,
             "step_ms_median": step_parts(level, steps // 3),
             "explore_reset": reset, "vector_steps_per_s": vectors,
+            "vector_steps_per_cpu_s": vectors_cpu, "async_2_speedup_cpu_bound": bound,
             "targets": {"one_env_steps_per_s": TARGET_STEPS,
                         "explore_reset_ms": TARGET_RESET_MS,
                         "async_2_speedup": TARGET_SPEEDUP},
@@ -232,9 +257,10 @@ def section(report) -> str:
         f"Regenerate: `python tools/env_throughput.py`. {machine_line(report['machine'])} "
         f"Load average when it started: {report['load_average']:.1f}. "
         f"`wallbsp/Exit-v0` on `{report['level']}`, {report['size']}, frame skip 1, a "
-        f"seeded random policy; steps/s is the best of {report['rounds']} rounds of "
-        f"{report['steps']} steps (all environments together), the configurations taking "
-        "turns round by round.",
+        f"seeded random sequence of Discrete actions, the same for every environment; "
+        f"steps/s is the best of {report['rounds']} rounds of {report['steps']} calls of "
+        "step (counting all environments' steps), the configurations taking turns round by "
+        "round.",
         targets,
         "Steps per second of one environment (and per second of the process's CPU time, "
         "which other work on the machine does not lower):",
@@ -245,6 +271,12 @@ def section(report) -> str:
         f"`Explore-v0` reset over {reset['resets']} seeds (~{reset['walls_median']} walls): "
         f"median {reset['reset_ms_median']} ms; parts (median ms): "
         + ", ".join(f"{k} {v}" for k, v in reset["parts_ms_median"].items()) + ".",
-        "Vector environments (steps/s, all environments together):",
-        markdown_table(["environments", "steps/s"],
-                       [[k, v] for k, v in vec.items() if k != "speedup_async_2"])])
+        "Vector environments (all environments' steps together; per CPU second counts this "
+        "process and the workers):",
+        markdown_table(["environments", "steps/s", "steps per CPU s"],
+                       [[k, v, report["vector_steps_per_cpu_s"][k]] for k, v in vec.items()
+                        if k != "speedup_async_2"]),
+        f"Measured speed-up of AsyncVectorEnv with 2 over one environment: "
+        f"{vec['speedup_async_2']}; what the CPU time allows on an idle 2-core machine "
+        f"(2 × the async run's steps per CPU second, at most 2 × one's, over one's): "
+        f"{report['async_2_speedup_cpu_bound']}."])

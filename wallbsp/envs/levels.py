@@ -1,6 +1,11 @@
 """Where an environment's levels come from: a given level (compiled once per process, so
 the environments of a ``SyncVectorEnv`` share one tree), or a fresh generated one per
-episode."""
+episode.
+
+A forked process (``AsyncVectorEnv``'s workers on Linux) starts with none of its parent's
+trees and WADs: a tree's textures keep a WAD file open, and a parent and child reading
+through one inherited handle move one shared file position, so their reads would race
+(a sprite read in one process would come back cut short in the other)."""
 from __future__ import annotations
 
 import os
@@ -9,10 +14,20 @@ from pathlib import Path
 from ..build import compile_level
 from ..level import Level
 from ..tree import BSPTree
+from ..wad import forget_wads
 
-__all__ = ["given_tree", "generated_tree"]
+__all__ = ["given_tree", "generated_tree", "forget_given_trees"]
 
 _TREES: dict = {}               # (spec, file stamp) -> BSPTree, for this process
+
+
+def forget_given_trees() -> None:
+    """Empty this process's trees and WAD caches (done in every forked child)."""
+    _TREES.clear()
+    forget_wads()
+
+
+os.register_at_fork(after_in_child=forget_given_trees)
 
 
 def given_tree(level) -> BSPTree:
