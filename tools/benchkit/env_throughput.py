@@ -163,12 +163,13 @@ def explore_reset(resets: int) -> dict:
     from wallbsp.generate import generate_level
     env = gym.make("wallbsp/Explore-v0", size=SIZE, observations=VIEW).unwrapped
     env.reset(seed=0)                     # imports and first-use tables out of the way
-    whole, parts = [], {"generate": [], "compile": [], "world": [], "first_frame": []}
+    whole, cpu, parts = [], [], {"generate": [], "compile": [], "world": [], "first_frame": []}
     walls = []
     for seed in range(1, resets + 1):
-        t0 = time.perf_counter()
+        t0, c0 = time.perf_counter(), time.process_time()
         env.reset(seed=seed)
         whole.append(time.perf_counter() - t0)
+        cpu.append(time.process_time() - c0)
         t0 = time.perf_counter()
         generated = generate_level(seed)
         t1 = time.perf_counter()
@@ -182,6 +183,7 @@ def explore_reset(resets: int) -> dict:
         for key, value in zip(parts, (t1 - t0, t2 - t1, t3 - t2, t4 - t3)):
             parts[key].append(value)
     return {"reset_ms_median": round(1000 * statistics.median(whole), 1),
+            "reset_cpu_ms_median": round(1000 * statistics.median(cpu), 1),
             "parts_ms_median": {k: round(1000 * statistics.median(v), 1)
                                 for k, v in parts.items()},
             "walls_median": int(statistics.median(walls)), "resets": resets}
@@ -217,13 +219,14 @@ def main(argv=None) -> int:
 
 def run(args) -> dict:
     import wallbsp.envs  # noqa: F401 - registers the ids
+    load = os.getloadavg()[0]
     steps, rounds = (10, 1) if args.quick else (150, 5)
     level = exit_level(args.quick)
     counts = sorted({2, args.envs})
     single, single_cpu = one_env(level, steps, rounds)
     reset = explore_reset(1 if args.quick else 40)
     vectors, vectors_cpu, bound = vector_envs(level, counts, steps, rounds)
-    return {"machine": machine(), "load_average": os.getloadavg()[0], "quick": args.quick,
+    return {"machine": machine(), "load_average": load, "quick": args.quick,
             "level": getattr(level, "name", level), "size": f"{SIZE[0]}x{SIZE[1]}",
             "steps": steps, "rounds": rounds,
             "one_env_steps_per_s": single, "one_env_steps_per_cpu_s": single_cpu,
@@ -269,7 +272,8 @@ def section(report) -> str:
         f"Where a step goes (median ms): the World's tic {parts['tic']}, the frame "
         f"{parts['frame']}, the observation arrays {parts['arrays']}.",
         f"`Explore-v0` reset over {reset['resets']} seeds (~{reset['walls_median']} walls): "
-        f"median {reset['reset_ms_median']} ms; parts (median ms): "
+        f"median {reset['reset_ms_median']} ms ({reset['reset_cpu_ms_median']} ms of CPU "
+        f"time); parts (median ms): "
         + ", ".join(f"{k} {v}" for k, v in reset["parts_ms_median"].items()) + ".",
         "Vector environments (all environments' steps together; per CPU second counts this "
         "process and the workers):",
