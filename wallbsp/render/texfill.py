@@ -101,7 +101,7 @@ class RunSurfaces:
         self.kxy = np.stack([self.kx, -self.ky])
         self.xy0 = np.array([[view.x + FLAT_OFFSET], [FLAT_OFFSET - view.y]])
         self.column32 = self.column.astype(np.int32)
-        self.level32 = self.level.astype(np.int32)
+        self.level_ix = self.level.astype(tex.index_dtype)
 
     def _fixed_point(self):
         """``t_rel`` and ``t1`` in fixed point (``FIX`` fraction bits) for the plain column
@@ -181,7 +181,7 @@ class RunSurfaces:
         plane = 2 * sector + ceiling
         ids, self.plane_slot[runs] = np.unique(plane, return_inverse=True)
         self.plane_levels = _plane_levels(tex, heights, state, view, ids, self.light).astype(
-            np.int32).reshape(-1)
+            tex.index_dtype).reshape(-1)
 
 
 def _plane_levels(tex, heights, state, view, planes, light):
@@ -230,9 +230,7 @@ def shade_columns(s: RunSurfaces, run, row):
     t += s.t_fix.take(run)
     t >>= FIX
     t += s.column32.take(run)
-    colour = s.tex.atlas.take(t).astype(np.int32)
-    colour += s.level32.take(run)
-    return s.tex.lut_flat.take(colour)
+    return lit(s.tex, t, s.level_ix.take(run))
 
 
 def shade_wrapped(s: RunSurfaces, run, row):
@@ -242,9 +240,7 @@ def shade_wrapped(s: RunSurfaces, run, row):
     texel = t.astype(np.int64)
     texel %= s.wrap.take(run)
     texel += s.column.take(run)
-    colour = s.tex.atlas.take(texel).astype(np.int32)
-    colour += s.level32.take(run)
-    return s.tex.lut_flat.take(colour)
+    return lit(s.tex, texel, s.level_ix.take(run))
 
 
 def shade_planes(s: RunSurfaces, run, row):
@@ -262,11 +258,19 @@ def shade_planes(s: RunSurfaces, run, row):
     x <<= 6
     x |= y
     x += s.column32.take(run)
-    colour = tex.atlas.take(x).astype(np.int32)
     slot = s.plane_slot.take(run)
     slot *= view.height
     slot += row
-    colour += s.plane_levels.take(slot)
+    return lit(tex, x, s.plane_levels.take(slot))
+
+
+def lit(tex, texel, level):
+    """Packed rgb of atlas texels at lut row offsets ``level`` (``tex.index_dtype``: uint16
+    when the whole lut fits, so the sum needs no wider copy)."""
+    colour = tex.atlas.take(texel)
+    if colour.dtype != tex.index_dtype:
+        colour = colour.astype(tex.index_dtype)
+    colour += level
     return tex.lut_flat.take(colour)
 
 
@@ -305,9 +309,7 @@ def fill_textured(tables, tex, heights, state, view, e, light=True):
     t += np.repeat(s.t_fix, lengths)
     t >>= FIX
     t += np.repeat(np.where(s.shape == 0, s.column32, tex.base[tex.black]), lengths)
-    colour = tex.atlas.take(t).astype(np.int32)
-    colour += np.repeat(s.level32, lengths)
-    colour = tex.lut_flat.take(colour)
+    colour = lit(tex, t, np.repeat(s.level_ix, lengths))
     starts = np.cumsum(lengths) - lengths
     for shape in (1, 2):
         chosen = np.flatnonzero(s.shape == shape)

@@ -180,6 +180,8 @@ class LevelTextures:
         self.lut = packer.lut()
         self.n_colours = self.lut.shape[1]
         self.lut_flat = self.lut.reshape(-1)
+        # a texel's lut index (level * colours + colour) in the narrowest type that holds it
+        self.index_dtype = np.uint16 if self.lut.size <= 1 << 16 else np.int32
         self.base = np.array(packer.base, dtype=np.int64)
         self.width = np.array(packer.width, dtype=np.int64)
         self.height = np.array(packer.height, dtype=np.int64)
