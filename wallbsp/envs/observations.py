@@ -63,8 +63,9 @@ def view_observation(frame, keys) -> dict:
     if "depth" in keys:
         out["depth"] = np.asarray(frame.depth, dtype=np.float32).copy()
     if "labels" in keys:
-        out["labels"] = np.stack([frame.kind.astype(np.int32),
-                                  frame.index.astype(np.int32)], axis=-1)
+        labels = np.empty(frame.kind.shape + (2,), dtype=np.int32)
+        labels[..., 0], labels[..., 1] = frame.kind, frame.index
+        out["labels"] = labels
     return out
 
 
