@@ -163,7 +163,7 @@ def row_numbers(width, height):
 
 def colour_columns(stripes, pixel_stripe_rows, width, height):
     """The ``(width, height, 3)`` uint8 view of the stripe texels the pixels pick."""
-    flat = stripes.reshape(-1).take(pixel_stripe_rows)
+    flat = stripes.reshape(-1).take(pixel_stripe_rows, mode="clip")   # in range: no check
     return flat.view(np.uint8).reshape(width, height, 4)[:, :, :3]
 
 

@@ -109,7 +109,7 @@ class RunSurfaces:
         stride)`` in the end (``FIX_LIMIT`` keeps it there)."""
         plain = self.shape == 0
         start = np.floor(np.where(plain, self.t_rel, 0.0) * FIX_ONE + 0.5).astype(np.int64)
-        self.t_fix = ((start + (1 << 31)) % (1 << 32) - (1 << 31)).astype(np.int32)
+        self.t_fix = _wrap32(start)
         self.s_fix = np.rint(np.where(plain, self.t1, 0.0) * FIX_ONE).astype(np.int32)
 
     def _column_texture(self, runs, texture, column, t0, t1, rows):
@@ -201,15 +201,6 @@ def _plane_levels(tex, heights, state, view, planes, light):
 _ROW_TABLES: dict = {}
 
 
-def _rows32(width, height):
-    """Row of every pixel of a column-major frame, flat, int32 (cached)."""
-    key = ("rows", width, height)
-    rows = _ROW_TABLES.get(key)
-    if rows is None:
-        rows = _ROW_TABLES[key] = np.tile(np.arange(height, dtype=np.int32), width)
-    return rows
-
-
 def _inverse_rows(view):
     """``1 / (y0 - row)`` per screen row (inf at a row through the horizon)."""
     key = view.height
@@ -225,22 +216,22 @@ def _inverse_rows(view):
 
 def shade_columns(s: RunSurfaces, run, row):
     """Packed rgb of column-run pixels (``run``, ``row``: their runs and screen rows)."""
-    t = s.s_fix.take(run)
+    t = s.s_fix.take(run, mode="clip")
     t *= row.astype(np.int32)
-    t += s.t_fix.take(run)
+    t += s.t_fix.take(run, mode="clip")
     t >>= FIX
-    t += s.column32.take(run)
-    return lit(s.tex, t, s.level_ix.take(run))
+    t += s.column32.take(run, mode="clip")
+    return lit(s.tex, t, s.level_ix.take(run, mode="clip"))
 
 
 def shade_wrapped(s: RunSurfaces, run, row):
     """Packed rgb of pixels of column runs that pass their padded column's end."""
-    t = s.t_rel.take(run)
-    t += s.t1.take(run) * row
+    t = s.t_rel.take(run, mode="clip")
+    t += s.t1.take(run, mode="clip") * row
     texel = t.astype(np.int64)
-    texel %= s.wrap.take(run)
-    texel += s.column.take(run)
-    return lit(s.tex, texel, s.level_ix.take(run))
+    texel %= s.wrap.take(run, mode="clip")
+    texel += s.column.take(run, mode="clip")
+    return lit(s.tex, texel, s.level_ix.take(run, mode="clip"))
 
 
 def shade_planes(s: RunSurfaces, run, row):
@@ -248,8 +239,8 @@ def shade_planes(s: RunSurfaces, run, row):
     tex, view = s.tex, s.view
     # world x and -y of each pixel, offset far from zero (a multiple of 64) so that
     # truncation is floor
-    xy = np.take(s.kxy, run, axis=1)
-    xy *= _inverse_rows(view).take(row)
+    xy = np.take(s.kxy, run, axis=1, mode="clip")
+    xy *= _inverse_rows(view).take(row, mode="clip")
     xy += s.xy0
     with np.errstate(invalid="ignore"):                 # a row through the horizon
         texel = xy.astype(np.int32)
@@ -257,21 +248,22 @@ def shade_planes(s: RunSurfaces, run, row):
     x, y = texel
     x <<= 6
     x |= y
-    x += s.column32.take(run)
-    slot = s.plane_slot.take(run)
+    x += s.column32.take(run, mode="clip")
+    slot = s.plane_slot.take(run, mode="clip")
     slot *= view.height
     slot += row
-    return lit(tex, x, s.plane_levels.take(slot))
+    return lit(tex, x, s.plane_levels.take(slot, mode="clip"))
 
 
 def lit(tex, texel, level):
     """Packed rgb of atlas texels at lut row offsets ``level`` (``tex.index_dtype``: uint16
-    when the whole lut fits, so the sum needs no wider copy)."""
-    colour = tex.atlas.take(texel)
+    when the whole lut fits, so the sum needs no wider copy).  The hot gathers take
+    ``mode="clip"``: their indices are in range, and numpy skips its bounds check."""
+    colour = tex.atlas.take(texel, mode="clip")
     if colour.dtype != tex.index_dtype:
         colour = colour.astype(tex.index_dtype)
     colour += level
-    return tex.lut_flat.take(colour)
+    return tex.lut_flat.take(colour, mode="clip")
 
 
 SHADERS = (shade_columns, shade_planes, shade_wrapped)
@@ -280,12 +272,32 @@ SHADERS = (shade_columns, shade_planes, shade_wrapped)
 def shade(surfaces: RunSurfaces, run, row):
     """Packed rgb of any pixels given their runs and screen rows."""
     out = np.empty(len(run), dtype="<u4")
-    shape = surfaces.shape.take(run)
+    shape = surfaces.shape.take(run, mode="clip")
     for k, shader in enumerate(SHADERS):
         mine = shape == k
         if mine.any():
             out[mine] = shader(surfaces, run[mine], row[mine])
     return out
+
+
+def _wrap32(values):
+    """int64 values as int32, modulo 2**32 (two's complement)."""
+    return ((values + (1 << 31)) % (1 << 32) - (1 << 31)).astype(np.int32)
+
+
+def _column_rows(s: RunSurfaces, lengths, starts, height):
+    """``t_fix + s_fix*row`` (int32, modulo 2**32, as ``shade_columns`` computes it) for
+    every pixel of the frame, made as one running sum: each run's step repeated, and at
+    each run's first pixel the jump from where the run before ended.  Modular sums are
+    exact, so this is the same bits as the product."""
+    step = s.s_fix.astype(np.int64)
+    first_row = starts % height
+    at_first = s.t_fix + step * first_row
+    at_last = at_first + step * (lengths - 1)
+    jump = at_first - np.concatenate([[0], at_last[:-1]])
+    t = np.repeat(s.s_fix, lengths)
+    t[starts] = _wrap32(jump)
+    return np.cumsum(t, dtype=np.int32, out=t)
 
 
 class _PartRuns:
@@ -304,13 +316,11 @@ def fill_textured(tables, tex, heights, state, view, e, light=True):
     runs, windows = front_to_back_runs(tables, view, e, None, entry_parts(tables, tex, e))
     s = RunSurfaces(tables, tex, heights, state, view, e, _PartRuns(runs), light)
     lengths = runs.lengths
-    t = np.repeat(s.s_fix, lengths)             # the column pass: shade_columns, by runs
-    t *= _rows32(width, height)
-    t += np.repeat(s.t_fix, lengths)
+    starts = np.cumsum(lengths) - lengths
+    t = _column_rows(s, lengths, starts, height)
     t >>= FIX
     t += np.repeat(np.where(s.shape == 0, s.column32, tex.base[tex.black]), lengths)
     colour = lit(tex, t, np.repeat(s.level_ix, lengths))
-    starts = np.cumsum(lengths) - lengths
     for shape in (1, 2):
         chosen = np.flatnonzero(s.shape == shape)
         counts = lengths[chosen]
