@@ -171,7 +171,12 @@ class LevelTextures:
                     picture = resources.flat(name)
                     flats[name] = -1 if picture is None else packer.add_picture(picture)
                 found = -1 if name is None else flats[name]
-                plane[s, k] = found if found >= 0 else packer.add_colour(colours[k], FLAT_SIDE)
+                if found < 0:                            # its colour, as a 64 x 64 block
+                    key = ("colour", colours[k])
+                    if key not in flats:
+                        flats[key] = packer.add_colour(colours[k], FLAT_SIDE)
+                    found = flats[key]
+                plane[s, k] = found
         self.plane_texture = plane                       # (sectors, floor/ceiling)
         sky = resources.sky(level) if hasattr(resources, "sky") else None
         self.sky = -1 if sky is None else packer.add_picture(sky, True)
