@@ -132,3 +132,16 @@ def test_resources_quick_loads_e1m1_textures_and_a_bounded_bomb():
     assert set(rows) == {"e1m1", "bombs"}
     assert all(row["seconds"] > 0 and row["peak_mb"] > 0 for row in rows.values())
     assert rows["bombs"]["wad_kb"] > 0 and isinstance(rows["bombs"]["met"], bool)
+
+
+@pytest.mark.skipif(not FREEDOOM_BOTH, reason="needs freedoom1.wad and freedoom2.wad")
+def test_compare_interleaved_refuses_a_baseline_that_imports_itself_by_name(tmp_path):
+    package = tmp_path / "wallbsp"
+    package.mkdir()
+    (package / "__init__.py").write_text("from .sub import x\n")
+    (package / "sub.py").write_text("import wallbsp.other\nx = 1\n")
+    done = subprocess.run([sys.executable, str(ROOT / "tools" / "bench_compare.py"),
+                           "--baseline", str(tmp_path), "--interleaved", "--quick", "--no-docs"],
+                          capture_output=True, text=True, timeout=300, cwd=ROOT)
+    assert done.returncode == 2 and done.stdout == ""
+    assert "sub.py: imports wallbsp by name" in done.stderr

@@ -15,13 +15,22 @@ on the machine falls on both alike. A round measures:
   over all rounds, and a hash of the tree's arrays: the same tree both ways? (--quick
   compiles E1M1 instead: a smoke run.)
 
-Prints one JSON object; rewrites the "compare" section of docs/benchmarks.md (not with
---quick or --no-docs). Target: each figure within 10 % of the baseline.
+--interleaved: both checkouts in one process instead, taking turns frame by frame and
+compile by compile, so that load from elsewhere falls on both alike to the frame (the
+baseline's wallbsp/ is copied under another package name, which needs it to import itself
+only relatively); a round is then one such process.
+
+Prints one JSON object; rewrites the "compare" (or "compare_interleaved") section of
+docs/benchmarks.md (not with --quick or --no-docs). Target: each figure within 10 % of the
+baseline.
 """
 from __future__ import annotations
 
 import json
+import re
+import shutil
 import statistics
+import tempfile
 from pathlib import Path
 
 from wallbsp import compile_level
@@ -40,6 +49,8 @@ COMPILE_REPEAT = 3
 QUICK_FRAMES = 10
 TOLERANCE = 0.10
 RUNNER = Path(__file__).resolve().parent / "compare_run.py"
+BASELINE_PACKAGE = "wallbsp_baseline"      # the baseline's copy, for --interleaved
+SELF_IMPORT = re.compile(r"^\s*(from|import)\s+wallbsp\b", re.MULTILINE)
 
 
 def main(argv=None) -> int:
@@ -47,19 +58,33 @@ def main(argv=None) -> int:
     parser.add_argument("--baseline", type=Path, required=True,
                         help="the other checkout (its wallbsp/ is imported from there)")
     parser.add_argument("--rounds", type=positive_int, default=None,
-                        help="rounds, each checkout once a round (default 5; --quick 1)")
+                        help="rounds, each checkout once a round (default 5; --interleaved "
+                             "and --quick 1)")
+    parser.add_argument("--interleaved", action="store_true",
+                        help="both checkouts in one process, taking turns frame by frame")
     args = parser.parse_args(argv)
     if not (args.baseline / "wallbsp" / "__init__.py").is_file():
         parser.error(f"{args.baseline}: no wallbsp/ package there")
     missing = [str(w) for w, _ in {WALK_MAP, COMPILE_MAP} if not w.exists()]
     if missing:
         parser.error("needs the Freedoom WADs: " + ", ".join(missing))
-    report(run(args), args, "compare", section)
+    if args.interleaved and self_importing(args.baseline):
+        parser.error(f"{self_importing(args.baseline)}: imports wallbsp by name, so it "
+                     "cannot be loaded beside the current one (--interleaved)")
+    report(run(args), args, "compare_interleaved" if args.interleaved else "compare", section)
     return 0
 
 
+def self_importing(checkout: Path) -> Path | None:
+    """The first module of ``checkout``'s wallbsp/ that imports ``wallbsp`` by name."""
+    for path in sorted((checkout / "wallbsp").rglob("*.py")):
+        if SELF_IMPORT.search(path.read_text(encoding="utf-8", errors="replace")):
+            return path
+    return None
+
+
 def run(args) -> dict:
-    rounds = args.rounds or (1 if args.quick else 5)
+    rounds = args.rounds or (1 if args.quick or args.interleaved else 5)
     frames = QUICK_FRAMES if args.quick else walk_frames()
     tree = compile_level(load_map(*WALK_MAP))
     compiled = WALK_MAP if args.quick else COMPILE_MAP
@@ -71,6 +96,11 @@ def run(args) -> dict:
     checkouts = {"baseline": args.baseline.resolve(), "current": ROOT}
     runs = {name: [] for name in checkouts}
     for r in range(rounds):
+        if args.interleaved:
+            both = run_interleaved(checkouts["baseline"], job)
+            for name in checkouts:
+                runs[name].append(both[name])
+            continue
         order = list(checkouts) if r % 2 == 0 else list(reversed(checkouts))
         for name in order:
             runs[name].append(run_round(checkouts[name], dict(job, as_shipped=name == "current")))
@@ -84,6 +114,21 @@ def run_round(checkout: Path, job: dict) -> dict:
     if Path(out["wallbsp"]).resolve() != expected.resolve():
         raise RuntimeError(f"{checkout}: the round imported {out['wallbsp']}, not {expected}")
     return out
+
+
+def run_interleaved(baseline: Path, job: dict) -> dict:
+    """compare_run.py in one fresh Python holding both: the current wallbsp, and the
+    baseline's copied as BASELINE_PACKAGE."""
+    with tempfile.TemporaryDirectory(prefix="bench_compare.") as folder:
+        shutil.copytree(baseline / "wallbsp", Path(folder) / BASELINE_PACKAGE,
+                        ignore=shutil.ignore_patterns("__pycache__"))
+        both = python_json([str(RUNNER)], [folder, ROOT],
+                           stdin=json.dumps(dict(job, interleave=BASELINE_PACKAGE,
+                                                 as_shipped=True)))
+    expected = ROOT / "wallbsp" / "__init__.py"
+    if Path(both["current"]["wallbsp"]).resolve() != expected.resolve():
+        raise RuntimeError(f"the current side imported {both['current']['wallbsp']}")
+    return both
 
 
 def summarise(args, checkouts, runs, rounds: int, frames: int, compiled) -> dict:
@@ -100,8 +145,9 @@ def summarise(args, checkouts, runs, rounds: int, frames: int, compiled) -> dict
     same_frames = {f"{w}x{h}": len({r["frames"][f"{w}x{h}"]["sha256"]
                                     for rs in runs.values() for r in rs}) == 1 for w, h in SIZES}
     same_tree = len({r["compile"]["sha256"] for rs in runs.values() for r in rs}) == 1
-    command = COMMAND + f" --baseline {args.baseline}" + (" --quick" if args.quick else "")
-    return {"command": command,
+    command = COMMAND + f" --baseline {args.baseline}" + (" --quick" if args.quick else "") \
+        + (" --interleaved" if args.interleaved else "")
+    return {"command": command, "interleaved": args.interleaved,
             "machine": machine(), "checkouts": {k: str(v) for k, v in checkouts.items()},
             "rounds": rounds, "walk_frames": frames, "walk": f"{WALK_MAP[0].name}:{WALK_MAP[1]}",
             "compile": f"{compiled[0].name}:{compiled[1]}", "figures": figures,
@@ -141,12 +187,16 @@ def section(result: dict) -> str:
             for key in result["current_over_baseline"]]
     same = ", ".join(f"{size}: {'yes' if ok else '**no**'}"
                      for size, ok in result["same_frames"].items())
+    how = ("in one process, taking turns frame by frame and compile by compile (the "
+           "baseline's package copied under another name)" if result["interleaved"] else
+           "each running both checkouts in fresh processes in alternating order")
     return "\n\n".join([
-        "## This checkout against the baseline (issue 9: no slower)",
+        "## This checkout against the baseline (issue 9: no slower)"
+        + (", interleaved frame by frame" if result["interleaved"] else ""),
         f"Regenerate: `{result['command']}`. {machine_line(result['machine'])}",
         f"Baseline: `{result['checkouts']['baseline']}`; current: "
-        f"`{result['checkouts']['current']}`. {result['rounds']} round(s), each running both "
-        "checkouts in fresh processes in alternating order. The walk: the first "
+        f"`{result['checkouts']['current']}`. {result['rounds']} round(s), {how}. "
+        "The walk: the first "
         f"{result['walk_frames']} frames of the scripted walk on {result['walk']} (the same "
         "cameras for both), fps = 1 / the median frame time over all rounds; "
         f"{result['compile']} compiled at the default settings, the median over all rounds. "
