@@ -8,13 +8,16 @@ Two renderers share every piece of arithmetic and give the same pixels:
 
 Only the walks are Python, touching each visited node and seg once; they record the drawn
 pieces, and all pixel work is batched in numpy: ``rows`` turns pieces into per-column rows,
-``fill`` the rows into runs and the runs into pixels, ``shading`` gives light levels and
-colours, ``layers`` the id and depth buffers on demand.  Heights and light come from the
-``WorldState`` of the source each frame (``tables``).
+``fill`` the rows into runs and the runs into pixels (flat colours), ``texfill`` the runs
+into texels (SPEC §4b) from the level's ``textures`` (one atlas, one lit colour table),
+``shading`` gives light levels and colours, ``layers`` the id and depth buffers on demand.
+Heights and light come from the ``WorldState`` of the source each frame (``tables``).
+Things and masked middle textures are drawn over the finished frame (``overlay``).
 
 Modules: ``tables`` (what the tree and the world give), ``project`` (segs and boxes to
 columns), ``columns`` (the closed-column list), ``walk``, ``painter``, ``rows``, ``fill``,
-``shading``, ``layers``, ``frame``.
+``texfill``, ``textures``, ``shading``, ``layers``, ``frame``; the masked pass: ``overlay``,
+``sprites``, ``masked``, ``clipping``, ``atlas``.
 """
 from __future__ import annotations
 
