@@ -179,7 +179,9 @@ class RunSurfaces:
         self.kx[runs] = fz * (view.fx + ray * view.rx)
         self.ky[runs] = fz * (view.fy + ray * view.ry)
         plane = 2 * sector + ceiling
-        ids, self.plane_slot[runs] = np.unique(plane, return_inverse=True)
+        present = np.bincount(plane, minlength=2 * len(heights.floor)) > 0  # no sort needed
+        self.plane_slot[runs] = (np.cumsum(present) - 1)[plane]
+        ids = np.flatnonzero(present)
         self.plane_levels = _plane_levels(tex, heights, state, view, ids, self.light).astype(
             tex.index_dtype).reshape(-1)
 
