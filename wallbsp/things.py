@@ -31,7 +31,6 @@ none of them costs one dictionary look-up, however many things the map has.
 """
 from __future__ import annotations
 
-import itertools
 import math
 import weakref
 
@@ -143,59 +142,56 @@ def _pad(x, y, reach) -> float:
     return reach + 1.0 + (abs(x) + abs(y) + reach) * 2.0 ** -40
 
 
-def _cells(x, y, pad) -> tuple:
-    """``(xs, ys, count)``: the cells a box of half-size ``pad`` at (x, y) meets, as
-    ``range``s, and how many (``len`` of a range overflows past 2**63)."""
-    xs = range(math.floor((x - pad) / BLOCK), math.floor((x + pad) / BLOCK) + 1)
-    ys = range(math.floor((y - pad) / BLOCK), math.floor((y + pad) / BLOCK) + 1)
-    return xs, ys, (xs.stop - xs.start) * (ys.stop - ys.start)
+def _listing(ids, x0, y0, nx, ny) -> dict:
+    """``{(cx, cy): ids listed there, ascending}`` for things ``ids`` (ascending) each
+    listed in the ``nx`` by ``ny`` cells from cell (x0, y0): in batches, then one slice a cell."""
+    count = nx * ny
+    k = np.repeat(np.arange(len(ids)), count)
+    if not k.size:
+        return {}
+    at = np.arange(k.size) - np.repeat(np.cumsum(count) - count, count)
+    order = np.lexsort((k, y0[k] + at % ny[k], x0[k] + at // ny[k]))   # by cell, then id
+    k, at = k[order], at[order]
+    cx, cy = x0[k] + at // ny[k], y0[k] + at % ny[k]
+    first = np.flatnonzero(np.concatenate([[True], (cx[1:] != cx[:-1]) | (cy[1:] != cy[:-1])]))
+    ends = np.append(first, k.size).tolist()
+    cells = map(ids[k].tolist().__getitem__, map(slice, ends[:-1], ends[1:]))
+    return dict(zip(zip(cx[first].tolist(), cy[first].tolist()), cells))
 
 
 class _Blockmap:
     """Some things by ``BLOCK`` cell, with their boxes ``(x, y, r)`` and ``box_sides``.
 
     A thing is listed, in index order, in every cell that its box grown by ``REACH`` meets,
-    so a mover reaching no further than that finds all it may touch in the one cell under
-    its centre (``x // BLOCK``, a float equal to the key).  A wider query gathers the cells
-    its own box meets; a thing wider than ``WIDE`` cells is tested by every query."""
+    so a mover reaching no further finds all it may touch in the one cell under its centre
+    (``x // BLOCK``, a float equal to the key).  A wider query, or any query while a thing
+    spans more than ``WIDE`` cells, tests every box in one batch."""
 
     REACH = 64.0
     WIDE = 64
 
     def __init__(self, ids, x, y, r, sides):
-        self.ids = ids
-        self.box = dict(zip(ids, zip(x, y, r)))
-        self.sides = dict(zip(ids, (sides[4 * k:4 * k + 4] for k in range(len(ids)))))
-        self.cells: dict = {}
-        self.wide = []
-        for i, tx, ty, tr in zip(ids, x, y, r):
-            xs, ys, count = _cells(tx, ty, _pad(tx, ty, tr + self.REACH))
-            if count > self.WIDE:
-                self.wide.append(i)
-                continue
-            for key in itertools.product(xs, ys):
-                self.cells.setdefault(key, []).append(i)
+        """Things ``ids`` (ascending) at ``x``, ``y`` of radius ``r`` (arrays); ``sides``
+        their ``box_sides``, four each."""
+        self.ids, self.x, self.y, self.r = ids, x, y, r
+        self.box = dict(zip(ids.tolist(), zip(x.tolist(), y.tolist(), r.tolist())))
+        self.sides = dict(zip(ids.tolist(), zip(*[iter(sides)] * 4)))     # four at a time
+        pad = _pad(x, y, r + self.REACH)
+        x0, y0 = np.floor((x - pad) / BLOCK), np.floor((y - pad) / BLOCK)
+        nx, ny = np.floor((x + pad) / BLOCK) - x0 + 1, np.floor((y + pad) / BLOCK) - y0 + 1
+        listed = nx * ny <= self.WIDE                 # not NaN either
+        self.everywhere = not listed.all()
+        self.cells = _listing(ids[listed], x0[listed], y0[listed],
+                              nx[listed].astype(np.int64), ny[listed].astype(np.int64))
 
     def near(self, x, y, reach) -> list:
         """The things whose box meets a mover of ``reach`` at (x, y) by
         ``Things.overlapping``'s test, in index order."""
-        pad = _pad(x, y, reach)
-        if pad <= self.REACH and not self.wide:
-            found = self.cells.get((x // BLOCK, y // BLOCK))
-            if found is None:
-                return []
-        elif not math.isfinite(pad):
-            found = self.ids                       # an odd query: the test decides
-        else:
-            xs, ys, count = _cells(x, y, pad)
-            if count > 4 * len(self.ids) + 16:
-                found = self.ids                   # a wide query: fewer tests than cells
-            else:
-                get = self.cells.get
-                found = {i for key in itertools.product(xs, ys) for i in get(key, ())}
-                found = sorted(found.union(self.wide))
+        if _pad(x, y, reach) > self.REACH or self.everywhere:
+            r = self.r + reach
+            return self.ids[(np.abs(self.x - x) < r) & (np.abs(self.y - y) < r)].tolist()
         hits = []
-        for i in found:
+        for i in self.cells.get((x // BLOCK, y // BLOCK), ()):
             bx, by, r = self.box[i]
             if abs(bx - x) < r + reach and abs(by - y) < r + reach:
                 hits.append(i)
@@ -372,8 +368,7 @@ class Things:
         if found is None:
             ids = np.flatnonzero(self.alive & ((self.flags & flags) != 0))
             found = self._blockmaps[flags] = _Blockmap(
-                ids.tolist(), self.x[ids].tolist(), self.y[ids].tolist(),
-                self.radius[ids].tolist(), self.box_sides(ids))
+                ids, self.x[ids], self.y[ids], self.radius[ids], self.box_sides(ids))
         return found
 
     def box_sides(self, i) -> list:
