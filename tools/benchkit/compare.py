@@ -146,7 +146,8 @@ def summarise(args, checkouts, runs, rounds: int, frames: int, compiled) -> dict
                                     for rs in runs.values() for r in rs}) == 1 for w, h in SIZES}
     same_tree = len({r["compile"]["sha256"] for rs in runs.values() for r in rs}) == 1
     command = COMMAND + f" --baseline {args.baseline}" + (" --quick" if args.quick else "") \
-        + (" --interleaved" if args.interleaved else "")
+        + (" --interleaved" if args.interleaved else "") \
+        + (f" --rounds {args.rounds}" if args.rounds else "")
     return {"command": command, "interleaved": args.interleaved,
             "machine": machine(), "checkouts": {k: str(v) for k, v in checkouts.items()},
             "rounds": rounds, "walk_frames": frames, "walk": f"{WALK_MAP[0].name}:{WALK_MAP[1]}",
