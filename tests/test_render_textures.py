@@ -192,6 +192,36 @@ def test_light_scales_png_texels_in_32_levels(folder):
     assert np.array_equal(lit.color[wall], expected)
 
 
+def test_a_pressed_switch_and_a_changed_floor_keep_the_atlas(tmp_path):
+    """The atlas holds every texture the world can swap to (switch partners, every floor's
+    flat): pressing a switch or changing a floor re-gathers the per-key tables only."""
+    from wallbsp.game.switches import Buttons
+    from wallbsp.render.tables import tree_tables
+    from wallbsp.render.textures import level_textures
+    from wallbsp.world import WorldState
+    folder = coded_textures(tmp_path)
+    for name, rgb in (("SW1GRID", (200, 0, 0)), ("SW2GRID", (0, 200, 0))):
+        save_png(folder / f"{name}.png", np.broadcast_to(np.uint8(rgb), (8, 8, 3)).copy())
+    level = step_level(folder)
+    walls = list(level.walls)
+    walls[1] = dataclasses.replace(walls[1], front_side=Side("GRID", "SW1GRID", "GRID"))
+    tree = compile_level(dataclasses.replace(level, walls=walls))
+    state = WorldState(tree)
+    camera = Camera(128, 200, 40, 270)                   # facing the south wall (wall 1)
+    before = render(state, camera, 64, 40, light=False)
+    atlas = level_textures(tree_tables(tree), state).atlas
+    south = (before.kind == 1) & (before.index == 1)
+    assert south.sum() > 200 and (before.color[south] == (200, 0, 0)).all()
+    assert Buttons(state).change(1, use_again=False) == "middle"
+    after = render(state, camera, 64, 40, light=False)
+    assert (after.color[south] == (0, 200, 0)).all()
+    floor = (after.kind == 2) & (after.index == 0)
+    state.set_floor_texture(0, "CEILF")
+    changed = render(state, camera, 64, 40, light=False)
+    assert (changed.color[floor][:, 2] == 150).all() and (after.color[floor][:, 2] == 50).all()
+    assert level_textures(tree_tables(tree), state).atlas is atlas
+
+
 def test_textured_painter_equals_front_to_back(folder):
     trees = [compile_level(step_level(folder, True, False, y_offset=3)),
              compile_level(load_level(ROOT / "levels" / "textured" / "multi.json"))]

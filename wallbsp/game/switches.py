@@ -11,23 +11,13 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
+from ..render.textures import switched_name
+
 __all__ = ["BUTTON_TIME", "PARTS", "switched_name", "Button", "Buttons"]
 
 BUTTON_TIME = 35                       # tics a button stays pressed (one second)
 PARTS = ("upper", "middle", "lower")   # the order DOOM tries a side's textures in
 FRONT = 0
-
-
-def switched_name(name: str | None) -> str | None:
-    """The other texture of a switch pair (``SW1BRCOM`` ↔ ``SW2BRCOM``), or None."""
-    if not name:
-        return None
-    upper = name.upper()
-    if upper.startswith("SW1") and len(upper) > 3:
-        return "SW2" + name[3:]
-    if upper.startswith("SW2") and len(upper) > 3:
-        return "SW1" + name[3:]
-    return None
 
 
 @dataclass

@@ -22,7 +22,7 @@ from .clipping import Slices, clipped, texture_rows
 from .frame import KIND_WALL
 from .shading import FULL_BRIGHT, light_levels
 from .tables import key_light
-from .textures import side_geometry
+from .textures import side_geometry, switched_name
 
 __all__ = ["masked_slices", "has_masked_walls"]
 
@@ -40,6 +40,9 @@ class _MaskedKeys:
             slot = None if name is None else atlas.wall_slot(name)
             if slot is not None:
                 self.slot[key] = slot
+                partner = switched_name(name)       # packed now: a press adds no slot later
+                if partner is not None:
+                    atlas.wall_slot(partner)
         self.any = bool((self.slot >= 0).any())
         if self.any:
             self.start, self.direction, self.x_offset, self.y_offset, _ = side_geometry(

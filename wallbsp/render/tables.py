@@ -58,6 +58,7 @@ class TreeTables:
         self.heights = weakref.WeakKeyDictionary()               # state -> HeightTables
         self.lights = weakref.WeakKeyDictionary()                # state -> (light, per key)
         self.textures = weakref.WeakKeyDictionary()              # state -> LevelTextures
+        self.texture_pack = None                                 # textures.TexturePack
 
     def _key_tables(self, level, seg_wall):
         wall = np.repeat(seg_wall, 2)

@@ -27,14 +27,15 @@ import numpy as np
 from ..resources import ResourceSet
 from .shading import LIGHT_LEVELS
 
-__all__ = ["LevelTextures", "UNLIT", "FLAT_SIDE", "side_geometry", "level_textures",
-           "level_resources"]
+__all__ = ["TexturePack", "LevelTextures", "UNLIT", "FLAT_SIDE", "side_geometry",
+           "switched_name", "level_textures", "level_resources"]
 
 UNLIT = LIGHT_LEVELS          # lut row of a texel's own colour
 FLAT_SIDE = 64
 PAD = 256                     # texels a wall column is repeated beyond its height, so rows
                               # of a part up to this tall need no wrapping
 PARTS = ("upper", "middle", "lower")
+NO_NAME = -2                  # a part with no texture named (-1: named, no picture)
 PART_FIELDS = ("base", "pitch", "stride", "height", "width", "start_x", "start_y",
                "direction_x", "direction_y", "x_offset", "y_offset", "which", "plus")
 
@@ -46,6 +47,19 @@ def _packed(rgb) -> np.ndarray:
 
 def _hex(color: str):
     return int(color[1:3], 16), int(color[3:5], 16), int(color[5:7], 16)
+
+
+def switched_name(name: str | None) -> str | None:
+    """The other texture of a switch pair (``SW1BRCOM`` ↔ ``SW2BRCOM``), or None: DOOM's
+    switch list pairs only names of this form, so the rule is the naming convention."""
+    if not name:
+        return None
+    upper = name.upper()
+    if upper.startswith("SW1") and len(upper) > 3:
+        return "SW2" + name[3:]
+    if upper.startswith("SW2") and len(upper) > 3:
+        return "SW1" + name[3:]
+    return None
 
 
 def side_geometry(tables, level):
@@ -141,43 +155,34 @@ class _Packer:
         return np.concatenate(self.pieces).astype(dtype) if self.pieces else np.zeros(1, dtype)
 
 
-class LevelTextures:
-    """The textures of one tree's level, as the world names them now (``texture_version``)."""
+class TexturePack:
+    """Every texture a tree's level can come to show, packed once: the walls' own textures
+    and the other texture of every switch pair among them, every sector's flats (a floor
+    that changes takes another sector's floor), the sky and the fallback colours; plus
+    ``extra`` names a world set that the level never named.  A texture change in the world
+    then only re-gathers the per-key tables of a ``LevelTextures`` (same atlas, same lut)."""
 
-    def __init__(self, tables, state, resources):
-        level = state.tree.level
-        self.texture_version = state.texture_version
+    def __init__(self, tables, level, resources, extra_walls=(), extra_flats=()):
+        self.extra_walls, self.extra_flats = frozenset(extra_walls), frozenset(extra_flats)
         self.packer = packer = _Packer(resources.palette, resources.colormap)
-        walls: dict = {}
-        flats: dict = {}
-
-        def wall_texture(name):
-            if name not in walls:
-                picture = resources.wall(name)
-                walls[name] = -1 if picture is None else packer.add_picture(picture, True)
-            return walls[name]
-
-        self._key_textures(tables, state, wall_texture)
+        own = [[(None, None, None) if s is None else (s.upper, s.middle, s.lower)
+                for s in (w.front_side, w.back_side)] for w in level.walls]
+        names = {n for wall in own for side in wall for n in side if n is not None}
+        names |= {switched_name(n) for n in names} - {None}
+        self.walls = {}                                  # name -> texture id (-1: no picture)
+        for name in sorted(names | self.extra_walls):
+            picture = resources.wall(name)
+            self.walls[name] = -1 if picture is None else packer.add_picture(picture, True)
+        ids = np.array([[[self.wall_id(n) for n in side] for side in wall] for wall in own],
+                       dtype=np.int64).reshape(-1, 2, 3)
+        back = np.arange(len(tables.key_wall)) & 1
+        self.key_texture = ids[tables.key_wall, back].T          # (3, keys), -1: none
+        self.key_named = (self.key_texture != NO_NAME)
+        self.key_texture = np.maximum(self.key_texture, -1)
         self.black = int(packer.add_colours(["#000000"])[0])
         self.wall_colour = packer.add_colours([c for w in level.walls for c in (
             w.drawn_upper_color, w.color, w.drawn_lower_color)]).reshape(-1, 3)
-        plane = np.full((len(level.sectors), 2), -1, dtype=np.int64)
-        for s, sector in enumerate(level.sectors):
-            names = (state.floor_texture(s), sector.ceiling_texture)
-            colours = (sector.floor_color, sector.ceiling_color)
-            for k in (0, 1):
-                name = names[k]
-                if name is not None and name not in flats:
-                    picture = resources.flat(name)
-                    flats[name] = -1 if picture is None else packer.add_picture(picture)
-                found = -1 if name is None else flats[name]
-                if found < 0:                            # its colour, as a 64 x 64 block
-                    key = ("colour", colours[k])
-                    if key not in flats:
-                        flats[key] = packer.add_colour(colours[k], FLAT_SIDE)
-                    found = flats[key]
-                plane[s, k] = found
-        self.plane_texture = plane                       # (sectors, floor/ceiling)
+        self._flats(level, resources)
         sky = resources.sky(level) if hasattr(resources, "sky") else None
         self.sky = -1 if sky is None else packer.add_picture(sky, True)
         self.sky_colour = packer.add_colours([s.ceiling_color for s in level.sectors])
@@ -187,27 +192,57 @@ class LevelTextures:
         self.lut_flat = self.lut.reshape(-1)
         # a texel's lut index (level * colours + colour) in the narrowest type that holds it
         self.index_dtype = np.uint16 if self.lut.size <= 1 << 16 else np.int32
-        self.base = np.array(packer.base, dtype=np.int64)
-        self.width = np.array(packer.width, dtype=np.int64)
-        self.height = np.array(packer.height, dtype=np.int64)
-        self.stride = np.array(packer.stride, dtype=np.int64)
-        self.pitch = np.array(packer.pitch, dtype=np.int64)
+        for field in ("base", "width", "height", "stride", "pitch"):
+            setattr(self, field, np.array(getattr(packer, field), dtype=np.int64))
         (self.start, self.direction, self.x_offset, self.y_offset,
          self.has_side) = side_geometry(tables, level)
-        self.part_table = self._part_table(tables, level)
+        self.upper_unpegged, self.lower_unpegged = (
+            np.array([getattr(w, f) for w in level.walls], dtype=bool)[tables.key_wall]
+            for f in ("upper_unpegged", "lower_unpegged"))
+        self.part_table = self.parts(tables, self.key_texture)
 
-    def _part_table(self, tables, level):
+    def wall_id(self, name) -> int:
+        """The texture of wall texture ``name`` (-1: no picture, ``NO_NAME`` for None);
+        KeyError for a name not packed."""
+        return NO_NAME if name is None else self.walls[name]
+
+    def _flats(self, level, resources):
+        floors = [s.floor_texture for s in level.sectors] + list(self.extra_flats)
+        names = {n for n in floors + [s.ceiling_texture for s in level.sectors] if n is not None}
+        self.flats = {}                                  # name -> texture id (-1: no picture)
+        for name in sorted(names):
+            picture = resources.flat(name)
+            self.flats[name] = -1 if picture is None else self.packer.add_picture(picture)
+        self.blocks = {}                                 # colour -> 64 x 64 block of it
+        if any(self.flats.get(n, -1) < 0 for n in floors):     # a floor may come to show one
+            for sector in level.sectors:
+                self.plane_id(None, sector.floor_color)
+        self.plane_texture = np.array(
+            [[self.plane_id(s.floor_texture, s.floor_color),
+              self.plane_id(s.ceiling_texture, s.ceiling_color)] for s in level.sectors],
+            dtype=np.int64).reshape(-1, 2)               # (sectors, floor/ceiling)
+
+    def plane_id(self, name, colour) -> int:
+        """The texture of flat ``name``, else a block of ``colour`` (added while packing);
+        KeyError for a name, or a colour block, not packed."""
+        found = -1 if name is None else self.flats[name]
+        if found >= 0:
+            return found
+        if colour not in self.blocks and not hasattr(self, "atlas"):
+            self.blocks[colour] = self.packer.add_colour(colour, FLAT_SIDE)
+        return self.blocks[colour]
+
+    def parts(self, tables, key_texture):
         """``(3, keys, PART_FIELDS)``: for each part (upper, middle, lower) of each side key,
         its texture (or colour) as ``base, pitch, stride, height, width``, the side's
         ``S`` and direction, offsets, and its top (SPEC §4b's pegging table) as ``top =
         heights[which] + plus`` over the key's ``(N.ceiling, N.floor, B.ceiling,
         B.floor)``."""
         key_wall = tables.key_wall
-        texture = np.where(self.key_texture >= 0, self.key_texture,
+        texture = np.where(key_texture >= 0, key_texture,
                            self.wall_colour[key_wall[None, :], np.arange(3)[:, None]])
         height = self.height[texture].astype(np.float64)
-        upper_unpegged = np.array([w.upper_unpegged for w in level.walls], dtype=bool)[key_wall]
-        lower_unpegged = np.array([w.lower_unpegged for w in level.walls], dtype=bool)[key_wall]
+        upper_unpegged, lower_unpegged = self.upper_unpegged, self.lower_unpegged
         n_ceiling, n_floor, b_ceiling, b_floor = range(4)
         which = np.stack([np.where(upper_unpegged, n_ceiling, b_ceiling),
                           np.where(lower_unpegged, n_floor, n_ceiling),
@@ -222,18 +257,43 @@ class LevelTextures:
             + [which, plus]
         return np.stack([np.asarray(f, dtype=np.float64) for f in fields], axis=-1)
 
-    def _key_textures(self, tables, state, wall_texture):
-        """``key_texture`` (3, keys): the texture of each part of each side key, -1 none."""
-        n_keys = len(tables.key_wall)
-        found = np.full((3, n_keys), -1, dtype=np.int64)
-        named = np.zeros((3, n_keys), dtype=bool)
-        for key, wall in enumerate(tables.key_wall.tolist()):
-            for p, part in enumerate(PARTS):
-                name = state.wall_texture(wall, key & 1, part)
-                if name is not None:
-                    named[p, key] = True
-                    found[p, key] = wall_texture(name)
-        self.key_texture, self.key_named = found, named
+
+SHARED = ("atlas", "lut", "n_colours", "lut_flat", "index_dtype", "base", "width", "height",
+          "stride", "pitch", "black", "wall_colour", "sky", "sky_colour", "start",
+          "direction", "x_offset", "y_offset", "has_side")
+
+
+class LevelTextures:
+    """The textures of one world state as it names them now (``texture_version``): the
+    tree's ``TexturePack`` (its arrays under the same names) and, per side key and part,
+    the texture now (``key_texture``, ``key_named``, ``part_table``) and per sector its
+    planes' (``plane_texture``).  Raises KeyError for a name the pack does not hold."""
+
+    def __init__(self, pack: TexturePack, tables, state):
+        self.pack = pack
+        for name in SHARED:
+            setattr(self, name, getattr(pack, name))
+        self.texture_version = state.texture_version
+        self.key_texture, self.key_named = pack.key_texture, pack.key_named
+        self.plane_texture, self.part_table = pack.plane_texture, pack.part_table
+        if state.wall_textures:
+            self._switched(pack, tables, state.wall_textures)
+        if state.floor_textures:
+            sectors = state.tree.level.sectors
+            self.plane_texture = plane = pack.plane_texture.copy()
+            for s, name in state.floor_textures.items():
+                plane[s, 0] = pack.plane_id(name, sectors[s].floor_color)
+
+    def _switched(self, pack, tables, wall_textures):
+        key_side = 2 * tables.key_wall + (np.arange(len(tables.key_wall)) & 1)
+        texture, named = pack.key_texture.copy(), pack.key_named.copy()
+        for (wall, side, part), name in wall_textures.items():
+            keys = np.flatnonzero(key_side == 2 * wall + side)
+            found = pack.wall_id(name)
+            texture[PARTS.index(part), keys] = max(found, -1)
+            named[PARTS.index(part), keys] = found != NO_NAME
+        self.key_texture, self.key_named = texture, named
+        self.part_table = pack.parts(tables, texture)
 
 
 _RESOURCES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
@@ -256,12 +316,25 @@ def _open_resources(level):
 
 
 def level_textures(tables, state):
-    """The ``LevelTextures`` of ``state`` (None when its level names no resources), rebuilt
-    when a texture changes (``texture_version``)."""
+    """The ``LevelTextures`` of ``state`` (None when its level names no resources), remade
+    when a texture changes (``texture_version``) over the tree's one ``TexturePack``; the
+    pack is rebuilt only for a name the level never named (with the names the state holds)."""
     resources = level_resources(state.tree)
     if resources is None:
         return None
     cached = tables.textures.get(state)
-    if cached is None or cached.texture_version != state.texture_version:
-        cached = tables.textures[state] = LevelTextures(tables, state, resources)
+    if cached is not None and cached.texture_version == state.texture_version:
+        return cached
+    pack = tables.texture_pack
+    if pack is None:
+        pack = tables.texture_pack = TexturePack(tables, state.tree.level, resources)
+    try:
+        cached = LevelTextures(pack, tables, state)
+    except KeyError:
+        walls = pack.extra_walls | (set(state.wall_textures.values()) - {None})
+        flats = pack.extra_flats | set(state.floor_textures.values())   # None: a colour
+        pack = tables.texture_pack = TexturePack(tables, state.tree.level, resources, walls,
+                                                 flats)
+        cached = LevelTextures(pack, tables, state)
+    tables.textures[state] = cached
     return cached
