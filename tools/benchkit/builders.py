@@ -243,12 +243,9 @@ def plot(result: dict) -> str | None:
             xs, ys = zip(*points)
             median = result["summary"]["builders"][builder]["median_split_ratio"]
             ax.scatter(xs, ys, marker=style, s=22, label=f"{builder} (median {median})")
-    ax.set_xscale("log")
-    ax.set_xlabel("linedefs in the map")
-    ax.set_ylabel("split ratio: segs per wall side")
-    ax.set_title(f"Node builders on {len(rows)} Freedoom maps")
+    ax.set(xscale="log", xlabel="linedefs in the map", ylabel="split ratio: segs per wall side",
+           title=f"Node builders on {len(rows)} Freedoom maps")
     ax.legend(fontsize=8)
-    fig.tight_layout()
     return save_plot(fig, PLOT)
 
 

@@ -301,7 +301,6 @@ def plot(result: dict):
         ax.grid(True, which="both", alpha=0.3)
     axes[0][0].set_ylabel(f"ms per {result['grid_frame']} frame (median of views)")
     axes[0][0].legend(fontsize=7)
-    figure.tight_layout()
     return save_plot(figure, PLOT)
 
 

@@ -167,8 +167,9 @@ def locked(directory: Path):
 
 
 def save_plot(figure, path: Path) -> str:
-    """Writes a matplotlib figure as PNG, atomically like the doc, and closes it; returns
-    the path relative to the repository, as the JSON reports it."""
+    """Lays out a matplotlib figure, writes it as PNG, atomically like the doc, and closes
+    it; returns the path relative to the repository, as the JSON reports it."""
+    figure.tight_layout()
     png = io.BytesIO()
     figure.savefig(png, format="png", dpi=110)
     write_atomically(path, png.getvalue())

@@ -176,11 +176,9 @@ def plot(result: dict) -> str | None:
             label="Fuchs, Abram & Grant, Table 1, median")
     ax.axhline(2, color="black", linewidth=0.8, linestyle=":")
     ax.set_xticks(x, [str(k) for k in KS])
-    ax.set_xlabel("candidates per node, k")
-    ax.set_ylabel("tree size: segs per input wall")
-    ax.set_title("Tree size against k (least-crossed among k random candidates)")
+    ax.set(xlabel="candidates per node, k", ylabel="tree size: segs per input wall",
+           title="Tree size against k (least-crossed among k random candidates)")
     ax.legend()
-    fig.tight_layout()
     return save_plot(fig, PLOT)
 
 
