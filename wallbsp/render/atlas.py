@@ -14,19 +14,9 @@ import weakref
 
 import numpy as np
 
-from .shading import LIGHT_LEVELS
+from .shading import lit_palette, pack_rgb, scaled_rgb
 
-__all__ = ["Atlas", "atlas_for", "pack_rgb"]
-
-
-def pack_rgb(rgb) -> np.ndarray:
-    """``(..., 3)`` uint8 colours as little-endian packed uint32 (a uint8 view reads r, g, b)."""
-    rgb = np.asarray(rgb, dtype=np.uint32)
-    return (rgb[..., 0] | (rgb[..., 1] << 8) | (rgb[..., 2] << 16)).astype("<u4")
-
-
-def _unpack(packed):
-    return np.stack([packed & 255, (packed >> 8) & 255, (packed >> 16) & 255], axis=-1)
+__all__ = ["Atlas", "atlas_for"]
 
 
 class Atlas:
@@ -47,14 +37,9 @@ class Atlas:
     def _lit_palette(self):
         """``(32, 256)`` packed rgb of every palette index at every light level, or None."""
         res = self.resources
-        palette = None if res is None else res.palette
-        if palette is None:
+        if res is None or res.palette is None:
             return None
-        colormap = res.colormap
-        if colormap is not None and len(colormap) >= LIGHT_LEVELS:
-            rows = colormap[LIGHT_LEVELS - 1 - np.arange(LIGHT_LEVELS)]      # (32, 256)
-            return pack_rgb(palette[rows])
-        return _scaled(pack_rgb(palette)[None, :], np.arange(LIGHT_LEVELS)[:, None])
+        return lit_palette(res.palette, res.colormap)
 
     # -- slots ---------------------------------------------------------------------------------
     def add_picture(self, picture) -> int:
@@ -126,15 +111,8 @@ class Atlas:
             out[paletted] = self.lit_palette[level[paletted], texels[paletted]]
         rgb = ~paletted
         if rgb.any():
-            out[rgb] = _scaled(texels[rgb], level[rgb])
+            out[rgb] = scaled_rgb(texels[rgb], level[rgb])
         return out
-
-
-def _scaled(packed, level):
-    """Packed rgb at level ``k``: ``rgb * (k + 1) / 32``, rounded (as the flat colours)."""
-    scale = (np.asarray(level, dtype=np.float64) + 1.0) / LIGHT_LEVELS
-    rgb = np.rint(_unpack(np.asarray(packed, dtype=np.uint32)) * scale[..., None])
-    return pack_rgb(rgb.astype(np.uint32))
 
 
 _ATLASES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()

@@ -16,7 +16,8 @@ from __future__ import annotations
 import numpy as np
 
 __all__ = ["LIGHT_LEVELS", "LIGHT_DISTANCE", "FULL_BRIGHT", "far_level", "light_levels",
-           "colour_table", "plane_stripes", "wall_codes"]
+           "hex_rgb", "pack_rgb", "unpack_rgb", "scaled_rgb", "lit_palette", "colour_table",
+           "plane_stripes", "wall_codes"]
 
 LIGHT_LEVELS = 32
 FULL_BRIGHT = LIGHT_LEVELS - 1
@@ -34,8 +35,36 @@ def light_levels(far, inverse_depth):
     return np.clip(level, 0, LIGHT_LEVELS - 1).astype(np.int64)
 
 
-def _rgb(color: str):
+def hex_rgb(color: str):
+    """``"#rrggbb"`` as ``(r, g, b)``."""
     return int(color[1:3], 16), int(color[3:5], 16), int(color[5:7], 16)
+
+
+def pack_rgb(rgb) -> np.ndarray:
+    """``(..., 3)`` colours as little-endian packed uint32 (a uint8 view reads r, g, b, 0)."""
+    rgb = np.asarray(rgb, dtype=np.uint32)
+    return (rgb[..., 0] | (rgb[..., 1] << 8) | (rgb[..., 2] << 16)).astype("<u4")
+
+
+def unpack_rgb(packed) -> np.ndarray:
+    """Packed colours as ``(..., 3)`` uint32 r, g, b."""
+    packed = np.asarray(packed, dtype=np.uint32)
+    return np.stack([packed & 255, (packed >> 8) & 255, (packed >> 16) & 255], axis=-1)
+
+
+def scaled_rgb(packed, level) -> np.ndarray:
+    """Packed colours at light level ``k`` (broadcast): ``rgb * (k + 1) / 32``, rounded."""
+    scale = (np.asarray(level, dtype=np.float64) + 1.0) / LIGHT_LEVELS
+    return pack_rgb(np.rint(unpack_rgb(packed) * scale[..., None]).astype(np.uint32))
+
+
+def lit_palette(palette, colormap) -> np.ndarray:
+    """``(32, 256)`` packed colours of every palette index at every light level: the WAD's
+    COLORMAP row ``31 - k`` at level ``k`` (DOOM's 0 is its brightest), or the palette
+    scaled as flat colours when there is no COLORMAP."""
+    if colormap is not None and len(colormap) >= LIGHT_LEVELS:
+        return pack_rgb(palette[colormap[LIGHT_LEVELS - 1 - np.arange(LIGHT_LEVELS)]])
+    return scaled_rgb(pack_rgb(palette)[None, :], np.arange(LIGHT_LEVELS)[:, None])
 
 
 def colour_table(walls, sectors) -> np.ndarray:
@@ -44,13 +73,11 @@ def colour_table(walls, sectors) -> np.ndarray:
     then sector s -> 3*walls + 2s (floor), + 2s+1 (ceiling)."""
     colours = []
     for w in walls:
-        colours += [_rgb(w.color), _rgb(w.drawn_upper_color), _rgb(w.drawn_lower_color)]
+        colours += [hex_rgb(w.color), hex_rgb(w.drawn_upper_color), hex_rgb(w.drawn_lower_color)]
     for s in sectors:
-        colours += [_rgb(s.floor_color), _rgb(s.ceiling_color)]
-    base = np.array(colours, dtype=np.float64).reshape(-1, 1, 3)
-    scale = (np.arange(LIGHT_LEVELS, dtype=np.float64) + 1.0) / LIGHT_LEVELS
-    rgb = np.rint(base * scale[None, :, None]).astype(np.uint32).reshape(-1, 3)
-    return (rgb[:, 0] | (rgb[:, 1] << 8) | (rgb[:, 2] << 16)).astype("<u4")
+        colours += [hex_rgb(s.floor_color), hex_rgb(s.ceiling_color)]
+    packed = pack_rgb(np.array(colours, dtype=np.uint32).reshape(-1, 3))
+    return scaled_rgb(packed[:, None], np.arange(LIGHT_LEVELS)[None, :]).reshape(-1)
 
 
 def plane_stripes(tables, state, view, keys, light=True):

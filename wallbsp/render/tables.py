@@ -59,6 +59,7 @@ class TreeTables:
         self.lights = weakref.WeakKeyDictionary()                # state -> (light, per key)
         self.textures = weakref.WeakKeyDictionary()              # state -> LevelTextures
         self.texture_pack = None                                 # textures.TexturePack
+        self.side_geometry = None                                # textures.side_geometry
 
     def _key_tables(self, level, seg_wall):
         wall = np.repeat(seg_wall, 2)

@@ -10,13 +10,16 @@ level 0-31 — the WAD's COLORMAP row ``31 - level`` for palette indices, ``rgb 
 Textures sit in ``atlas`` column-major, like ``Picture.pixels``: texel ``(u, t)`` of texture
 ``i`` is ``atlas[base[i] + u*pitch[i] + t]``.  A wall texture's column is repeated down to
 ``stride`` texels (``PAD`` beyond its height) and led by its last texel, so any ``t`` in
-``[-1, stride)`` reads texel ``t mod height`` with no division.  A flat is 64 × 64 with ``u`` its world x and
-``t`` its world -y.  A surface whose texture no resource holds is drawn in its colour: a
-1 × 1 texture for wall parts, a 64 × 64 block for planes.
+``[-1, stride)`` reads texel ``t mod height`` with no division.  A flat is 64 × 64 with
+``u`` its world x and ``t`` its world -y.  A surface whose texture no resource holds is
+drawn in its colour: a 1 × 1 texture for wall parts, a 64 × 64 block for planes.
 
-Per side key (``2*seg + back``) and part (0 upper, 1 middle, 2 lower) ``key_texture`` names
-the texture (-1: none: the part shows the plane behind it), with where the side's texture
-starts (S: v1 seen from the front, v2 from behind) and runs, its offsets and pegging.
+The atlas and lut are made once per tree (``TexturePack``) with every texture the world can
+come to show; per world state and texture change only the small tables are re-gathered
+(``LevelTextures``): per side key (``2*seg + back``) and part (0 upper, 1 middle, 2 lower)
+``key_texture`` names the texture (-1: none: the part shows the plane behind it), with
+where the side's texture starts (S: v1 seen from the front, v2 from behind) and runs, its
+offsets and pegging.
 """
 from __future__ import annotations
 
@@ -25,7 +28,7 @@ import weakref
 import numpy as np
 
 from ..resources import ResourceSet
-from .shading import LIGHT_LEVELS
+from .shading import LIGHT_LEVELS, hex_rgb, lit_palette, pack_rgb, scaled_rgb
 
 __all__ = ["TexturePack", "LevelTextures", "UNLIT", "FLAT_SIDE", "side_geometry",
            "switched_name", "level_textures", "level_resources"]
@@ -38,15 +41,6 @@ PARTS = ("upper", "middle", "lower")
 NO_NAME = -2                  # a part with no texture named (-1: named, no picture)
 PART_FIELDS = ("base", "pitch", "stride", "height", "width", "start_x", "start_y",
                "direction_x", "direction_y", "x_offset", "y_offset", "which", "plus")
-
-
-def _packed(rgb) -> np.ndarray:
-    rgb = np.asarray(rgb, dtype=np.uint32)
-    return (rgb[..., 0] | (rgb[..., 1] << 8) | (rgb[..., 2] << 16)).astype("<u4")
-
-
-def _hex(color: str):
-    return int(color[1:3], 16), int(color[3:5], 16), int(color[5:7], 16)
 
 
 def switched_name(name: str | None) -> str | None:
@@ -64,7 +58,14 @@ def switched_name(name: str | None) -> str | None:
 
 def side_geometry(tables, level):
     """Per side key: ``start`` (S, (keys, 2)), unit ``direction`` along the wall from S,
-    the side's ``x_offset``, ``y_offset`` (0 without a side) and ``has_side``."""
+    the side's ``x_offset``, ``y_offset`` (0 without a side) and ``has_side``; made once
+    per tree (the walls and the masked pass share it)."""
+    if tables.side_geometry is None:
+        tables.side_geometry = _side_geometry(tables, level)
+    return tables.side_geometry
+
+
+def _side_geometry(tables, level):
     ends = level.segments().astype(np.float64)[tables.key_wall]
     back = (np.arange(len(tables.key_wall)) & 1).astype(bool)
     start = np.where(back[:, None], ends[:, 2:], ends[:, :2])
@@ -115,15 +116,16 @@ class _Packer:
     def add_picture(self, picture, pad: bool = False) -> int:
         if picture.paletted:
             return self.add(picture.pixels.astype(np.int64), pad)
-        return self.add(self.rgb_indices(_packed(picture.pixels)), pad)
+        return self.add(self.rgb_indices(pack_rgb(picture.pixels)), pad)
 
     def add_colour(self, color: str, side: int = 1) -> int:
-        index = self.rgb_indices(_packed(np.array(_hex(color))))
+        index = self.rgb_indices(pack_rgb(np.array(hex_rgb(color))))
         return self.add(np.full((side, side), index, dtype=np.int64))
 
     def add_colours(self, colors) -> np.ndarray:
         """A 1 × 1 texture for each of ``colors`` at once; returns their ids."""
-        texels = self.rgb_indices(_packed(np.array([_hex(c) for c in colors]).reshape(-1, 3)))
+        rgb = np.array([hex_rgb(c) for c in colors]).reshape(-1, 3)
+        texels = self.rgb_indices(pack_rgb(rgb))
         n, first = len(texels), len(self.base)
         self.base.extend(range(self.size, self.size + n))
         for sizes in (self.width, self.height, self.stride, self.pitch):
@@ -134,19 +136,13 @@ class _Packer:
 
     def lut(self) -> np.ndarray:
         """``(33, colours)`` packed rgb (see the module doc)."""
-        levels = np.arange(LIGHT_LEVELS, dtype=np.float64)
+        levels = np.arange(LIGHT_LEVELS)[:, None]
         rgb = np.array(sorted(self.rgb, key=self.rgb.get), dtype=np.uint32)
-        rgb = np.stack([rgb & 255, (rgb >> 8) & 255, (rgb >> 16) & 255], axis=-1)
-        scaled = np.rint(rgb[None] * ((levels + 1.0) / LIGHT_LEVELS)[:, None, None])
-        rows = np.concatenate([_packed(scaled.astype(np.uint32)), _packed(rgb)[None]])
+        rows = np.concatenate([scaled_rgb(rgb[None, :], levels), rgb[None, :]])
         if self.palette is None:
             return rows
-        palette = self.palette.astype(np.uint32)
-        if self.colormap is not None and len(self.colormap) >= LIGHT_LEVELS:
-            lit = palette[self.colormap[LIGHT_LEVELS - 1 - np.arange(LIGHT_LEVELS)]]
-        else:
-            lit = np.rint(palette[None] * ((levels + 1.0) / LIGHT_LEVELS)[:, None, None])
-        wad = np.concatenate([_packed(lit.astype(np.uint32)), _packed(palette)[None]])
+        wad = np.concatenate([lit_palette(self.palette, self.colormap),
+                              pack_rgb(self.palette)[None]])
         return np.concatenate([wad, rows], axis=1)
 
     def atlas(self) -> np.ndarray:
