@@ -28,6 +28,13 @@ from ..files import InputError, open_regular, write_atomically
 from ..level import LevelError
 
 HEADER = struct.Struct("<4sii")
+
+
+def _read_at(f, pos: int, size: int) -> bytes:
+    if hasattr(os, "pread"):
+        return os.pread(f.fileno(), size, pos) if size else b""
+    f.seek(pos)                       # no pread (Windows): not safe across a fork, as there
+    return f.read(size)
 DIRENTRY = np.dtype([("pos", "<i4"), ("size", "<i4"), ("name", "S8")])
 CACHE_SIZE = 8          # WAD directories kept: a session rarely uses more than an IWAD + PWADs
 
@@ -73,8 +80,9 @@ class Wad:
         if pos < 0 or size < 0 or pos + size > d.file_size:
             raise LevelError(f"{self.label}: directory[{i}]: lump {d.names[i]} at offset {pos} "
                              f"({size} bytes) lies outside the file ({d.file_size} bytes)")
-        self.file.seek(pos)
-        raw = self.file.read(size)
+        # pread, not seek + read: processes forked with this file open (vector environments)
+        # share its position, and a seek in one would move the other's read
+        raw = _read_at(self.file, pos, size)
         if len(raw) != size:   # the file shrank under us
             raise LevelError(f"{self.label}: directory[{i}]: lump {d.names[i]} is truncated")
         return raw
