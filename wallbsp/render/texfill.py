@@ -101,7 +101,6 @@ class RunSurfaces:
         self.kxy = np.stack([self.kx, -self.ky])
         self.xy0 = np.array([[view.x + FLAT_OFFSET], [FLAT_OFFSET - view.y]])
         self.column32 = self.column.astype(np.int32)
-        self.level_ix = self.level.astype(tex.index_dtype)
 
     def _fixed_point(self):
         """``t_rel`` and ``t1`` in fixed point (``FIX`` fraction bits) for the plain column
@@ -111,6 +110,10 @@ class RunSurfaces:
         start = np.floor(np.where(plain, self.t_rel, 0.0) * FIX_ONE + 0.5).astype(np.int64)
         self.t_fix = _wrap32(start)
         self.s_fix = np.rint(np.where(plain, self.t1, 0.0) * FIX_ONE).astype(np.int32)
+        # the texel address in fixed point, int64 (no wrapping): column << FIX + row; the
+        # other runs read the black texel here (their pixels are drawn over)
+        self.at_fix = np.where(plain, self.column, self.tex.base[self.tex.black]) << FIX
+        self.at_fix += np.where(plain, start, 0)
 
     def _column_texture(self, runs, texture, column, t0, t1, rows):
         """Column runs at texture column ``column`` of a texture given as ``(base, pitch,
@@ -182,8 +185,7 @@ class RunSurfaces:
         present = np.bincount(plane, minlength=2 * len(heights.floor)) > 0  # no sort needed
         self.plane_slot[runs] = (np.cumsum(present) - 1)[plane]
         ids = np.flatnonzero(present)
-        self.plane_levels = _plane_levels(tex, heights, state, view, ids, self.light).astype(
-            tex.index_dtype).reshape(-1)
+        self.plane_levels = _plane_levels(tex, heights, state, view, ids, self.light).reshape(-1)
 
 
 def _plane_levels(tex, heights, state, view, planes, light):
@@ -223,25 +225,35 @@ def shade_columns(s: RunSurfaces, run, row):
     t += s.t_fix.take(run, mode="clip")
     t >>= FIX
     t += s.column32.take(run, mode="clip")
-    return lit(s.tex, t, s.level_ix.take(run, mode="clip"))
+    return lit(s.tex, t, s.level.take(run, mode="clip"))
 
 
-def shade_wrapped(s: RunSurfaces, run, row):
+def shade_wrapped(s: RunSurfaces, run, row, counts=None):
     """Packed rgb of pixels of column runs that pass their padded column's end."""
+    if counts is not None:
+        run = np.repeat(run, counts)
     t = s.t_rel.take(run, mode="clip")
     t += s.t1.take(run, mode="clip") * row
     texel = t.astype(np.int64)
     texel %= s.wrap.take(run, mode="clip")
     texel += s.column.take(run, mode="clip")
-    return lit(s.tex, texel, s.level_ix.take(run, mode="clip"))
+    return lit(s.tex, texel, s.level.take(run, mode="clip"))
 
 
-def shade_planes(s: RunSurfaces, run, row):
-    """Packed rgb of plane-run pixels."""
+def _per_pixel(values, run, counts):
+    """``values`` of the pixels' runs: gathered per pixel, or, for whole runs in order
+    (``counts``: pixels of each of ``run``), each run's value repeated (a cheaper pass)."""
+    if counts is None:
+        return values.take(run, axis=-1, mode="clip")
+    return np.repeat(values.take(run, axis=-1), counts, axis=-1)
+
+
+def shade_planes(s: RunSurfaces, run, row, counts=None):
+    """Packed rgb of plane-run pixels (``counts``: see ``_per_pixel``)."""
     tex, view = s.tex, s.view
     # world x and -y of each pixel, offset far from zero (a multiple of 64) so that
     # truncation is floor
-    xy = np.take(s.kxy, run, axis=1, mode="clip")
+    xy = _per_pixel(s.kxy, run, counts)
     xy *= _inverse_rows(view).take(row, mode="clip")
     xy += s.xy0
     with np.errstate(invalid="ignore"):                 # a row through the horizon
@@ -250,21 +262,19 @@ def shade_planes(s: RunSurfaces, run, row):
     x, y = texel
     x <<= 6
     x |= y
-    x += s.column32.take(run, mode="clip")
-    slot = s.plane_slot.take(run, mode="clip")
+    x += _per_pixel(s.column32, run, counts)
+    slot = _per_pixel(s.plane_slot, run, counts)
     slot *= view.height
     slot += row
     return lit(tex, x, s.plane_levels.take(slot, mode="clip"))
 
 
 def lit(tex, texel, level):
-    """Packed rgb of atlas texels at lut row offsets ``level`` (``tex.index_dtype``: uint16
-    when the whole lut fits, so the sum needs no wider copy).  The hot gathers take
+    """Packed rgb of atlas texels at lut row offsets ``level`` (int64: the sum of the narrow
+    texels and the levels is then made as the index type numpy gathers with, instead of
+    numpy converting a narrow index array inside the gather).  The hot gathers take
     ``mode="clip"``: their indices are in range, and numpy skips its bounds check."""
-    colour = tex.atlas.take(texel, mode="clip")
-    if colour.dtype != tex.index_dtype:
-        colour = colour.astype(tex.index_dtype)
-    colour += level
+    colour = np.add(tex.atlas.take(texel, mode="clip"), level)
     return tex.lut_flat.take(colour, mode="clip")
 
 
@@ -287,19 +297,21 @@ def _wrap32(values):
     return ((values + (1 << 31)) % (1 << 32) - (1 << 31)).astype(np.int32)
 
 
-def _column_rows(s: RunSurfaces, lengths, starts, height):
-    """``t_fix + s_fix*row`` (int32, modulo 2**32, as ``shade_columns`` computes it) for
-    every pixel of the frame, made as one running sum: each run's step repeated, and at
-    each run's first pixel the jump from where the run before ended.  Modular sums are
-    exact, so this is the same bits as the product."""
+def _column_addresses(s: RunSurfaces, lengths, starts, height):
+    """The atlas address ``column + floor(t_rel + t1*row)`` of every pixel of the frame as
+    column runs read it (int64 fixed point ``at_fix + s_fix*row``, then shifted), made as
+    one running sum: each run's step repeated, and at each run's first pixel the jump from
+    where the run before ended.  Integer sums are exact, so this is the product's value."""
     step = s.s_fix.astype(np.int64)
-    first_row = starts % height
-    at_first = s.t_fix + step * first_row
+    at_first = s.at_fix + step * (starts % height)
     at_last = at_first + step * (lengths - 1)
-    jump = at_first - np.concatenate([[0], at_last[:-1]])
-    t = np.repeat(s.s_fix, lengths)
-    t[starts] = _wrap32(jump)
-    return np.cumsum(t, dtype=np.int32, out=t)
+    jump = at_first
+    jump[1:] -= at_last[:-1]
+    t = np.repeat(step, lengths)
+    t[starts] = jump
+    np.cumsum(t, out=t)
+    t >>= FIX
+    return t
 
 
 class _PartRuns:
@@ -319,21 +331,21 @@ def fill_textured(tables, tex, heights, state, view, e, light=True):
     s = RunSurfaces(tables, tex, heights, state, view, e, _PartRuns(runs), light)
     lengths = runs.lengths
     starts = np.cumsum(lengths) - lengths
-    t = _column_rows(s, lengths, starts, height)
-    t >>= FIX
-    t += np.repeat(np.where(s.shape == 0, s.column32, tex.base[tex.black]), lengths)
-    colour = lit(tex, t, np.repeat(s.level_ix, lengths))
+    t = _column_addresses(s, lengths, starts, height)
+    colour = lit(tex, t, np.repeat(s.level, lengths))
     for shape in (1, 2):
         chosen = np.flatnonzero(s.shape == shape)
         counts = lengths[chosen]
         n = int(counts.sum())
         if n:
-            # pixel k of the batch: its run's start plus its place in the run
-            step = np.arange(n, dtype=np.int64) - np.repeat(np.cumsum(counts) - counts, counts)
+            # pixel k of the batch is k plus its run's start less the pixels of the runs
+            # before it; its row, that less its column's first pixel
             start = starts[chosen]
-            row = np.repeat(start % height, counts) + step
-            colour[np.repeat(start, counts) + step] = SHADERS[shape](
-                s, np.repeat(chosen, counts), row)
+            pixel = np.repeat(start - (np.cumsum(counts) - counts), counts)
+            pixel += np.arange(n, dtype=np.int64)
+            row = np.repeat(start % height - start, counts)
+            row += pixel
+            colour[pixel] = SHADERS[shape](s, chosen, row, counts)
     written = int(lengths[runs.kinds != KIND_NOTHING].sum())
     return colour.view(np.uint8).reshape(width, height, 4)[:, :, :3], runs, windows, written
 
