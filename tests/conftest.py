@@ -19,6 +19,35 @@ def compiled_levels():
     return {path.stem: compile_level(load_level(path)) for path in LEVELS}
 
 
+class FreedoomCache:
+    """Freedoom maps imported (as Levels) and compiled once for the whole session, since
+    several test files look at the same few maps. Levels are frozen; the trees are only read
+    (a test that changes heights does so in its own WorldState). Skips when a WAD is absent."""
+
+    def __init__(self):
+        self.levels, self.trees = {}, {}
+
+    def level(self, wad: str, map_name: str):
+        from test_wad import freedoom
+        from wallbsp.wad import load_wad_level
+        key = (wad, map_name)
+        if key not in self.levels:
+            self.levels[key] = load_wad_level(freedoom(wad), map_name)
+        return self.levels[key]
+
+    def tree(self, wad: str, map_name: str):
+        from wallbsp import compile_level
+        key = (wad, map_name)
+        if key not in self.trees:
+            self.trees[key] = compile_level(self.level(wad, map_name))
+        return self.trees[key]
+
+
+@pytest.fixture(scope="session")
+def freedoom_cache():
+    return FreedoomCache()
+
+
 DELETE = object()
 
 
