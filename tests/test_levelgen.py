@@ -1,6 +1,7 @@
 """The level generator: valid, connected, compilable, reproducible, varied.
 
-200 seeds here keep the suite fast; tools/check_levelgen.py runs the same checks on 1,000.
+80 seeds here keep the suite fast; tools/check_levelgen.py runs the same checks (strict reload,
+reachable goal, compile, validate, start sector) on 1,000.
 """
 import json
 import sys
@@ -16,7 +17,7 @@ from wallbsp.level import Level, Sector, Start, Wall
 from wallbsp.levelio import content_hash, level_from_dict, level_to_dict, load_level
 from wallbsp.thingtypes import thing_info
 
-SEEDS = range(200)
+SEEDS = range(80)
 
 
 @pytest.fixture(scope="module")
@@ -38,7 +39,7 @@ def test_walls_near_the_default_of_500(levels):
     assert counts[0] >= 300 and counts[-1] <= 700
 
 
-@pytest.mark.parametrize("seed", [0, 7, 19, 42, 99, 123, 150, 199])
+@pytest.mark.parametrize("seed", [0, 7, 19, 31, 42, 55, 63, 79])
 def test_compiles_with_the_start_and_things_inside(levels, seed):
     made = levels[seed]
     tree = compile_level(made.level)
@@ -47,7 +48,7 @@ def test_compiles_with_the_start_and_things_inside(levels, seed):
     assert all(tree.locate(t.x, t.y) is not None for t in made.level.things)
 
 
-@pytest.mark.parametrize("seed", [3, 11, 64, 100])
+@pytest.mark.parametrize("seed", [3, 11, 64, 70])
 def test_things_and_the_start_keep_clear_of_walls(levels, seed):
     level = levels[seed].level
     ends = level.segments().astype(float)
@@ -70,7 +71,7 @@ def test_exit_is_a_one_sided_switch_in_the_goal_sector(levels):
 
 def test_target_goal_is_a_thing_of_the_target_type(levels):
     targets = [m for m in levels.values() if m.target is not None]
-    assert len(targets) == 50
+    assert len(targets) == len(SEEDS) // 4
     for made in targets:
         assert made.level.things[made.target].type == TARGET_TYPE
         assert not made.goal_walls
@@ -89,7 +90,7 @@ def test_doors_are_closed_and_open_high_enough(levels):
                       for v in level.walls if w.back in (v.front, v.back) and v.back is not None]
             assert min(around) - 4 - door.floor >= 56
             doors_seen += 1
-    assert doors_seen > 200
+    assert doors_seen > len(SEEDS)
 
 
 def test_steps_are_climbable_and_heights_vary(levels):
