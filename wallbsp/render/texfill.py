@@ -68,7 +68,7 @@ class RunSurfaces:
     wrap``) when its part, unclipped, runs past the padded column — decided per part, so
     both renderers take the same path for the same pixel.  Plane runs: world point ``(ex,
     ey) + (kx, ky) / (y0 - row)`` in the flat at ``column``, light from the frame's
-    per-plane, per-row table (``plane_slot``).  ``runs`` has ``kinds``, ``indices``,
+    per-plane, per-row table (``plane_row0``: where the run's plane's row 0 is in it).  ``runs`` has ``kinds``, ``indices``,
     ``parts`` (0-3, 4 nothing) and ``entries``."""
 
     def __init__(self, tables, tex, heights, state, view, e, runs, light=True):
@@ -82,7 +82,7 @@ class RunSurfaces:
         self.t_rel, self.t1, self.kx, self.ky = (np.zeros(n_runs) for _ in range(4))
         self.level = np.full(n_runs, UNLIT * tex.n_colours, dtype=np.int64)
         self.wrap = np.ones(n_runs, dtype=np.int64)     # column runs: the texture's height
-        self.plane_slot = np.zeros(n_runs, dtype=np.int64)
+        self.plane_row0 = np.zeros(n_runs, dtype=np.int64)
         wall = kinds == KIND_WALL
         sector = np.where(wall | (kinds == KIND_NOTHING), 0, indices).astype(np.int64)
         ceiling = kinds == KIND_CEILING
@@ -183,7 +183,7 @@ class RunSurfaces:
         self.ky[runs] = fz * (view.fy + ray * view.ry)
         plane = 2 * sector + ceiling
         present = np.bincount(plane, minlength=2 * len(heights.floor)) > 0  # no sort needed
-        self.plane_slot[runs] = (np.cumsum(present) - 1)[plane]
+        self.plane_row0[runs] = (np.cumsum(present) - 1)[plane] * view.height
         ids = np.flatnonzero(present)
         self.plane_levels = _plane_levels(tex, heights, state, view, ids, self.light).reshape(-1)
 
@@ -263,8 +263,7 @@ def shade_planes(s: RunSurfaces, run, row, counts=None):
     x <<= 6
     x |= y
     x += _per_pixel(s.column32, run, counts)
-    slot = _per_pixel(s.plane_slot, run, counts)
-    slot *= view.height
+    slot = _per_pixel(s.plane_row0, run, counts)
     slot += row
     return lit(tex, x, s.plane_levels.take(slot, mode="clip"))
 

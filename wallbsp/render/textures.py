@@ -186,8 +186,6 @@ class TexturePack:
         self.lut = packer.lut()
         self.n_colours = self.lut.shape[1]
         self.lut_flat = self.lut.reshape(-1)
-        # a texel's lut index (level * colours + colour) in the narrowest type that holds it
-        self.index_dtype = np.uint16 if self.lut.size <= 1 << 16 else np.int32
         for field in ("base", "width", "height", "stride", "pitch"):
             setattr(self, field, np.array(getattr(packer, field), dtype=np.int64))
         (self.start, self.direction, self.x_offset, self.y_offset,
@@ -254,7 +252,7 @@ class TexturePack:
         return np.stack([np.asarray(f, dtype=np.float64) for f in fields], axis=-1)
 
 
-SHARED = ("atlas", "lut", "n_colours", "lut_flat", "index_dtype", "base", "width", "height",
+SHARED = ("atlas", "lut", "n_colours", "lut_flat", "base", "width", "height",
           "stride", "pitch", "black", "wall_colour", "sky", "sky_colour", "start",
           "direction", "x_offset", "y_offset", "has_side")
 
