@@ -265,15 +265,16 @@ def shade_planes(s: RunSurfaces, run, row, counts=None):
     x += _per_pixel(s.column32, run, counts)
     slot = _per_pixel(s.plane_row0, run, counts)
     slot += row
-    return lit(tex, x, s.plane_levels.take(slot, mode="clip"))
+    return lit(tex, x, s.plane_levels.take(slot, mode="clip"), out=slot)
 
 
-def lit(tex, texel, level):
+def lit(tex, texel, level, out=None):
     """Packed rgb of atlas texels at lut row offsets ``level`` (int64: the sum of the narrow
     texels and the levels is then made as the index type numpy gathers with, instead of
     numpy converting a narrow index array inside the gather).  The hot gathers take
-    ``mode="clip"``: their indices are in range, and numpy skips its bounds check."""
-    colour = np.add(tex.atlas.take(texel, mode="clip"), level)
+    ``mode="clip"``: their indices are in range, and numpy skips its bounds check.  ``out``:
+    an int64 array of the pixels' length to hold the sum (fresh memory costs page faults)."""
+    colour = np.add(tex.atlas.take(texel, mode="clip"), level, out=out)
     return tex.lut_flat.take(colour, mode="clip")
 
 
@@ -331,7 +332,7 @@ def fill_textured(tables, tex, heights, state, view, e, light=True):
     lengths = runs.lengths
     starts = np.cumsum(lengths) - lengths
     t = _column_addresses(s, lengths, starts, height)
-    colour = lit(tex, t, np.repeat(s.level, lengths))
+    colour = lit(tex, t, np.repeat(s.level, lengths), out=t)
     for shape in (1, 2):
         chosen = np.flatnonzero(s.shape == shape)
         counts = lengths[chosen]
