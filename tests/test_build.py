@@ -63,7 +63,7 @@ def test_adversarial_inputs_give_valid_trees(name):
     assert tree.seg_count >= len(ADVERSARIAL[name])
 
 
-@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(_walls(small) | _walls(huge), st.sampled_from([1, 3, 5, "all"]), st.integers(0, 3))
 def test_validate_holds_for_every_tree(walls, k, seed):
     tree = compile_level(level_of_walls(walls), candidates=k, seed=seed)

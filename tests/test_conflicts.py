@@ -75,7 +75,7 @@ def segment_sets(draw):
     return segments + [(s[2], s[3], s[0], s[1]) if reverse else s for s in copies]
 
 
-@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=75, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(segment_sets())
 def test_conflicts_agree_with_brute_force(segments):
     conflicts = find_wall_conflicts(np.array(segments, dtype=np.int64).reshape(-1, 4))
@@ -85,7 +85,7 @@ def test_conflicts_agree_with_brute_force(segments):
     assert as_pairs(conflicts.duplicates) == duplicates
 
 
-@settings(max_examples=100, deadline=None)
+@settings(max_examples=50, deadline=None)
 @given(st.lists(st.integers(1, 50), min_size=2, max_size=30), st.randoms(use_true_random=False))
 def test_conflicts_agree_with_brute_force_for_walls_of_very_different_lengths(lengths, rnd):
     # long walls walk many grid cells; short ones set the cell size

@@ -234,7 +234,7 @@ def _without_deleted(obj):
     return {key: value for key, value in obj.items() if value is not DELETE}
 
 
-@settings(max_examples=60, deadline=None)
+@settings(max_examples=40, deadline=None)
 @given(level_dicts())
 def test_a_level_round_trips_unchanged(data):
     level = level_from_dict(data, source="round.json")

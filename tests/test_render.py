@@ -220,7 +220,7 @@ def assert_same_frames(a, b):
 def test_painter_equals_front_to_back_on_random_views(compiled_levels):
     rng = np.random.default_rng(7)
     for name, tree in compiled_levels.items():
-        count = 60 if name == "large" else 150
+        count = 25 if name == "large" else 60
         for camera, width, height in random_views(tree, rng, count):
             front = render(tree, camera, width, height)
             back = render(tree, camera, width, height, order="back_to_front")

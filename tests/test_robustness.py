@@ -66,7 +66,7 @@ def _one_sane_frame(level):
     assert np.array_equal(front.index, back.index)
 
 
-@settings(max_examples=150, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=75, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(damaged_levels())
 def test_a_damaged_level_is_one_error_line_or_a_level_that_works(data):
     try:
@@ -99,7 +99,7 @@ def test_walls_moved_anywhere_still_compile_and_render(moves, sectors):
     _one_sane_frame(level)
 
 
-@settings(max_examples=300, deadline=None)
+@settings(max_examples=100, deadline=None)
 @given(st.data())
 def test_a_damaged_tree_file_is_one_tree_error(tmp_path_factory, data):
     from wallbsp import load_tree

@@ -507,7 +507,7 @@ def test_malformed_texture1_gives_grey_walls_and_a_warning():
 _FUZZED = itertools.count()
 
 
-@settings(max_examples=150, deadline=None,
+@settings(max_examples=75, deadline=None,
           suppress_health_check=[HealthCheck.function_scoped_fixture])
 @given(data=st.data())
 def test_damaged_wad_imports_or_fails_with_one_line(data):
@@ -586,8 +586,8 @@ def test_freedoom_maps_import(wad, map_name):
 
 
 @pytest.mark.parametrize("wad,map_name", [("freedoom1.wad", "E1M1"), ("freedoom2.wad", "MAP12")])
-def test_freedoom_map_loads_as_a_level(wad, map_name):
-    level = load_wad_level(freedoom(wad), map_name)
+def test_freedoom_map_loads_as_a_level(freedoom_cache, wad, map_name):
+    level = freedoom_cache.level(wad, map_name)
     assert level.walls and level.sectors
 
 
