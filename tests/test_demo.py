@@ -144,10 +144,9 @@ def steer_to(world, demo, x, y, limit=400):
 
 
 @pytest.mark.skipif(not FREEDOOM1.exists(), reason="Freedoom is not installed")
-def test_a_demo_on_e1m1_goes_through_the_first_door(tmp_path, capsys):
-    from wallbsp.wad import load_wad_level
-    level = load_wad_level(FREEDOOM1, "E1M1")
-    tree = compile_level(level)
+def test_a_demo_on_e1m1_goes_through_the_first_door(tmp_path, capsys, freedoom_cache):
+    level = freedoom_cache.level("freedoom1.wad", "E1M1")
+    tree = freedoom_cache.tree("freedoom1.wad", "E1M1")
     world, demo = World(tree), demo_for(level)
     # down the lift east of the start, across the hall (east of the former human standing
     # at (816, 448): solid things block), to the door in its north-east corner

@@ -10,7 +10,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 from test_render import random_views
-from test_wad import FREEDOOM, freedoom
+from test_wad import FREEDOOM
 from texref import reference_frame
 
 from wallbsp import compile_level, load_level
@@ -255,9 +255,8 @@ def test_the_bundled_textured_level_matches_the_reference():
 
 @pytest.mark.skipif(not (FREEDOOM / "freedoom2.wad").exists(), reason="Freedoom not installed")
 @pytest.mark.parametrize("wad,map_name", [("freedoom1.wad", "E1M1"), ("freedoom2.wad", "MAP01")])
-def test_freedoom_textured_starts_match_the_reference(wad, map_name):
-    from wallbsp.wad import load_wad_level
-    level = without_masked_and_things(load_wad_level(freedoom(wad), map_name))
+def test_freedoom_textured_starts_match_the_reference(freedoom_cache, wad, map_name):
+    level = without_masked_and_things(freedoom_cache.level(wad, map_name))
     tree = compile_level(level)
     start = level.start
     z = level.sectors[tree.locate(start.x, start.y)].floor + 41
@@ -270,12 +269,11 @@ def test_freedoom_textured_starts_match_the_reference(wad, map_name):
 
 
 @pytest.mark.skipif(not (FREEDOOM / "freedoom1.wad").exists(), reason="Freedoom not installed")
-def test_wad_textures_are_lit_through_the_colormap():
+def test_wad_textures_are_lit_through_the_colormap(freedoom_cache):
     """With light, every texel of a WAD texture is a palette colour (COLORMAP maps palette
     indices to palette indices), and darker than its full-bright self on average."""
-    from wallbsp.wad import load_wad_level
-    level = load_wad_level(freedoom("freedoom1.wad"), "E1M1")
-    tree = compile_level(level)
+    level = freedoom_cache.level("freedoom1.wad", "E1M1")
+    tree = freedoom_cache.tree("freedoom1.wad", "E1M1")
     start = level.start
     camera = Camera(start.x, start.y, level.sectors[tree.locate(start.x, start.y)].floor + 41,
                     start.angle)

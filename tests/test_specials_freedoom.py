@@ -13,9 +13,8 @@ PLAYER_HEIGHT = 56
 
 
 @pytest.mark.skipif(not FREEDOOM1.exists(), reason="Freedoom is not installed")
-def test_every_door_of_e1m1_opens_high_enough_for_the_player():
-    from wallbsp.wad import load_wad_level
-    level = load_wad_level(FREEDOOM1, "E1M1")
+def test_every_door_of_e1m1_opens_high_enough_for_the_player(freedoom_cache):
+    level = freedoom_cache.level("freedoom1.wad", "E1M1")
     # the rules need the tree only to find where things are; no teleporters are used here
     state = WorldState(SimpleNamespace(level=level))
     rules = Rules(level, state, locate=lambda x, y: None)

@@ -133,10 +133,8 @@ def test_sprites_agree_with_the_reference_on_the_bundled_levels(path):
 
 
 @pytest.fixture(scope="module")
-def e1m1():
-    from test_wad import freedoom
-    from wallbsp.wad import load_wad_level
-    return compile_level(load_wad_level(freedoom("freedoom1.wad"), "E1M1"))
+def e1m1(freedoom_cache):
+    return freedoom_cache.tree("freedoom1.wad", "E1M1")
 
 
 @pytest.mark.parametrize("x,y,angle", [(-160, 304, 0), (704, 1818, 90), (704, 922, 90),
