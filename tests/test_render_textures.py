@@ -220,6 +220,7 @@ def test_a_pressed_switch_and_a_changed_floor_keep_the_atlas(tmp_path):
     changed = render(state, camera, 64, 40, light=False)
     assert (changed.color[floor][:, 2] == 150).all() and (after.color[floor][:, 2] == 50).all()
     assert level_textures(tree_tables(tree), state).atlas is atlas
+    assert level_textures(tree_tables(tree), WorldState(tree)).atlas is atlas   # shared
 
 
 def test_textured_painter_equals_front_to_back(folder):

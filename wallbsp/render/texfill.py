@@ -68,8 +68,8 @@ class RunSurfaces:
     wrap``) when its part, unclipped, runs past the padded column — decided per part, so
     both renderers take the same path for the same pixel.  Plane runs: world point ``(ex,
     ey) + (kx, ky) / (y0 - row)`` in the flat at ``column``, light from the frame's
-    per-plane, per-row table (``plane_row0``: where the run's plane's row 0 is in it).  ``runs`` has ``kinds``, ``indices``,
-    ``parts`` (0-3, 4 nothing) and ``entries``."""
+    per-plane, per-row table (``plane_row0``: where the run's plane's row 0 is in it).
+    ``runs`` has ``kinds``, ``indices``, ``parts`` (0-3, 4 nothing) and ``entries``."""
 
     def __init__(self, tables, tex, heights, state, view, e, runs, light=True):
         kinds, indices, parts, entries = runs.kinds, runs.indices, runs.parts, runs.entries
