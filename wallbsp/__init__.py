@@ -1,7 +1,10 @@
-"""wallbsp: DOOM-style 2-D BSP worlds — an exact wall BSP compiler and a front-to-back
-column renderer, with a pygame walkthrough and headless tools.
+"""wallbsp: DOOM-style 2-D BSP worlds — an exact wall BSP compiler, a front-to-back
+textured column renderer, a world that moves by DOOM's rules, a pygame walkthrough,
+headless tools and learning environments.
 
-The pipeline, one module each: geometry → level → build → tree → rendering → app → cli.
+The pipeline: geometry → level (levelio) → build → tree → world and queries → camera →
+render → game → app and cli (README, "What is where").  ``wallbsp.envs`` (Gymnasium) is
+imported only when asked for.
 """
 import os
 
@@ -11,9 +14,9 @@ os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
 from .build import DEFAULT_CANDIDATES, compile_level
 from .level import Level, LevelError
 from .levelio import load_level
+from .tree import BSPTree, TreeError, load_tree
 from .camera import Camera
 from .render import Frame, render
-from .tree import BSPTree, TreeError, load_tree
 from .game.world import World
 
 __all__ = ["BSPTree", "Camera", "DEFAULT_CANDIDATES", "Frame", "Level", "LevelError",

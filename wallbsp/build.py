@@ -27,6 +27,7 @@ import numpy as np
 
 from .geometry import canonical_lines, side_at
 from .level import Level
+from .tree import BSPTree
 
 DEFAULT_CANDIDATES = 15
 SPLIT_WEIGHT = 128        # one split costs as much as this much imbalance
@@ -347,7 +348,6 @@ def _subtree_boxes(seg_xy, node_segs, child, depth):
 def compile_level(level: Level, candidates=None, seed=0, progress=None):
     """Compile a level into a BSPTree.  ``candidates``: k random candidates per node
     (None: DEFAULT_CANDIDATES; "all": every plane of the cell, exhaustive)."""
-    from .tree import BSPTree
     k = DEFAULT_CANDIDATES if candidates is None else candidates
     k = None if k == "all" else int(k)
     if k is not None and k < 1:
