@@ -78,7 +78,7 @@ def test_a_damaged_level_is_one_error_line_or_a_level_that_works(data):
     _one_sane_frame(level)
 
 
-@settings(max_examples=40, deadline=None)
+@settings(max_examples=30, deadline=None)
 @given(st.lists(st.tuples(st.integers(0, 47), st.integers(0, 47)), min_size=1, max_size=12),
        st.lists(st.tuples(st.integers(-64, 64), st.integers(1, 128)), min_size=1, max_size=4))
 def test_walls_moved_anywhere_still_compile_and_render(moves, sectors):
