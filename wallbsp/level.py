@@ -16,6 +16,8 @@ from pathlib import Path
 
 import numpy as np
 
+from .levelformat import NO_TEXTURE
+
 SKY_FLAT = "F_SKY1"      # DOOM's ceiling flat that means "open sky"
 
 
@@ -32,6 +34,11 @@ class Side:
     x_offset: int = 0
     y_offset: int = 0
 
+    def __post_init__(self):
+        for part in ("upper", "middle", "lower"):
+            if getattr(self, part) == NO_TEXTURE:
+                object.__setattr__(self, part, None)
+
 
 @dataclass(frozen=True)
 class Sector:
@@ -47,6 +54,9 @@ class Sector:
     tag: int = 0
 
     def __post_init__(self):
+        for part in ("floor_texture", "ceiling_texture"):
+            if getattr(self, part) == NO_TEXTURE:        # DOOM's "-", as in a file
+                object.__setattr__(self, part, None)
         # DOOM draws a ceiling flat named F_SKY1 as the sky; one flag says so everywhere
         if self.ceiling_texture is not None and self.ceiling_texture.upper() == SKY_FLAT:
             object.__setattr__(self, "sky", True)
