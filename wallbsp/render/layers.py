@@ -49,25 +49,37 @@ class RunLayers:
 
     def _depth(self):
         runs, e = self.runs, self.e
-        kinds = runs.kinds
-        entry = np.minimum(runs.entries, max(len(e.col) - 1, 0))
-        near = runs.indices.astype(np.int64)
+        kinds, near = runs.kinds, runs.indices
         wall, ceiling = kinds == KIND_WALL, kinds == KIND_CEILING
         plane = ceiling | (kinds == KIND_FLOOR)
-        a = np.full(len(kinds), np.inf)
+        sector = np.where(plane, near, 0)
+        h = np.where(ceiling, self.ceiling.take(sector), self.floor.take(sector))
+        flat = plane & ~(ceiling & self.sky.take(sector))      # sky: inf, as nothing
+        # per run: depth = a + b / |y0 - row| (a wall's 1/w, a plane's |f*(h - z)| / ...)
+        b = np.where(flat, np.abs(self.f * (h - self.z)), 0.0)
+        a = np.where(flat, 0.0, np.inf)
         if len(e.col):
-            a[wall] = 1.0 / e.w[entry[wall]]
-        b = np.zeros(len(kinds))
-        h = np.where(ceiling, self.ceiling[np.where(ceiling, near, 0)],
-                     self.floor[np.where(plane, near, 0)])
-        b[plane] = np.abs(self.f * (h[plane] - self.z))
-        sky = ceiling & self.sky[np.where(ceiling, near, 0)]
-        a[plane & ~sky] = 0.0
-        b[sky] = 0.0
-        with np.errstate(divide="ignore"):
-            inverse_row = 1.0 / np.abs(self.y0 - np.arange(self.height, dtype=np.float64))
+            entry = runs.entries[wall]
+            a[wall] = 1.0 / e.w.take(np.minimum(entry, len(e.col) - 1))
         depth = self._expand(a)
         scale = self._expand(b)
-        has_plane = scale > 0
-        depth[has_plane] += scale[has_plane] * np.tile(inverse_row, self.width)[has_plane]
+        np.multiply(scale, _inverse_rows(self.y0, self.width, self.height), out=scale,
+                    where=scale > 0)
+        depth += scale
         return depth.astype(np.float32)
+
+
+_INVERSE_ROWS: dict = {}
+
+
+def _inverse_rows(y0, width, height):
+    """``1 / |y0 - row|`` of every pixel of a column-major frame (inf on the horizon)."""
+    key = (y0, width, height)
+    table = _INVERSE_ROWS.get(key)
+    if table is None:
+        with np.errstate(divide="ignore"):
+            rows = 1.0 / np.abs(y0 - np.arange(height, dtype=np.float64))
+        if len(_INVERSE_ROWS) > 8:
+            _INVERSE_ROWS.clear()
+        table = _INVERSE_ROWS[key] = np.tile(rows, width)
+    return table
