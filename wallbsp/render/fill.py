@@ -143,7 +143,7 @@ def drawsegs(e, windows) -> DrawSegs:
     order, top, bottom, u, lo = windows
     real = order < len(e.col)                         # the closing sentinels are no pieces
     order, top, bottom, u, lo = order[real], top[real], bottom[real], u[real], lo[real]
-    piece = np.repeat(np.arange(len(e.counts), dtype=np.int64), e.counts)[order]
+    piece = np.arange(len(e.counts), dtype=np.int64).repeat(e.counts)[order]
     return DrawSegs(piece, e.col[order], e.w[order], top, bottom, u, np.maximum(lo, u))
 
 
@@ -174,7 +174,7 @@ def fill_flat(tables, state, view, entries, light=True):
     codes = wall_codes(tables, key_light(tables, state), entries, light)
     runs, windows = front_to_back_runs(tables, view, entries, codes)
     stripes, stripe = plane_stripes(tables, state, view, runs.keys, light)
-    pixel = np.repeat(stripe * height, runs.lengths)
+    pixel = (stripe * height).repeat(runs.lengths)
     pixel += row_numbers(width, height)
     colour = colour_columns(stripes, pixel, width, height)
     written = int(runs.lengths[runs.kinds != KIND_NOTHING].sum())

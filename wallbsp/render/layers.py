@@ -34,7 +34,7 @@ class RunLayers:
 
     def _expand(self, values):
         if self.lengths is not None:
-            return np.repeat(values, self.lengths)
+            return values.repeat(self.lengths)
         return values.take(self.pixel_run)
 
     def columns(self, name):

@@ -26,7 +26,7 @@ class Entries:
     """Pieces expanded to one entry per (piece, column), in piece order, with the piece's
     unclipped boundaries in that column: ceiling ``[0, p1)``, upper wall ``[p1, u)``,
     opening ``[u, l)``, lower wall ``[l, fl)``, floor ``[fl, H)`` (int64), its inverse
-    depth ``w``, near sector and wall."""
+    depth ``w``, side key (``entry_keys``), near sector and wall."""
 
     def __init__(self, tables, heights, view, pieces: list):
         table = np.array(pieces, dtype=np.float64).reshape(-1, 5)
@@ -36,19 +36,21 @@ class Entries:
         first = np.cumsum(counts) - counts
         n = int(counts.sum())
         self.keys, self.counts, self.first = keys, counts, first
-        self.col = np.arange(n, dtype=np.int64) - np.repeat(first - c1, counts)
-        w = np.repeat(table[:, 1], counts) + np.repeat(table[:, 2], counts) * view.u[self.col]
+        self.col = np.arange(n, dtype=np.int64) - (first - c1).repeat(counts)
+        w = table[:, 1].repeat(counts) + table[:, 2].repeat(counts) * view.u[self.col]
         self.w = w = np.maximum(w, W_MIN)
         fz = view.f * (heights.key_heights[:, keys] - view.z)          # (4, pieces)
-        ceil_n, floor_n, ceil_b, floor_b = boundary_rows(view, np.repeat(fz, counts, axis=1), w)
+        ceil_n, floor_n, ceil_b, floor_b = boundary_rows(view, fz.repeat(counts, axis=1), w)
         p1 = ceil_n
         fl = np.maximum(p1, floor_n)
         u = np.minimum(np.maximum(ceil_b, p1), fl)
         lo = np.minimum(np.maximum(floor_b, u), fl)
         self.p1, self.u, self.l, self.fl = (x.astype(np.int64) for x in (p1, u, lo, fl))
-        self.near = np.repeat(tables.key_near[keys], counts)
-        self.wall = np.repeat(tables.key_wall[keys], counts)
+        # per entry: its piece's side key (made once, read by the fills and the layers)
+        self.entry_keys = entry_keys = keys.repeat(counts)
+        self.near = tables.key_near.take(entry_keys)
+        self.wall = tables.key_wall.take(entry_keys)
 
     def piece_values(self, per_key):
         """A per-key table's value for every entry."""
-        return np.repeat(per_key[self.keys], self.counts)
+        return per_key[self.entry_keys]

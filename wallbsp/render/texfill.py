@@ -40,7 +40,7 @@ def entry_parts(tables, tex, e):
     ``front_to_back_runs``: keys are the part numbers 0-3 (ceiling, upper, lower, floor);
     an untextured upper or lower part of a two-sided side becomes the plane behind it, the
     upper part between two skies the sky of the near sector."""
-    key = np.repeat(e.keys, e.counts)
+    key = e.entry_keys
     two_sided = tables.key_far[key] >= 0
     far = np.maximum(tables.key_far[key], 0)
     bare = two_sided & tex.has_side[key]
@@ -133,7 +133,7 @@ class RunSurfaces:
         self.shape[runs] = np.where(wrapped, 2, 0)
 
     def _walls(self, runs, tables, tex, heights, state, view, e, entry, col, upper):
-        key = np.repeat(e.keys, e.counts)[entry]
+        key = e.entry_keys[entry]
         part = np.where(upper, 0, 2 - (tables.key_far[key] < 0))  # upper, middle, lower
         (base, pitch, stride, height, width, sx, sy, dx, dy, x_offset, y_offset, which,
          plus) = tex.part_table[part, key].T
@@ -231,7 +231,7 @@ def shade_columns(s: RunSurfaces, run, row):
 def shade_wrapped(s: RunSurfaces, run, row, counts=None):
     """Packed rgb of pixels of column runs that pass their padded column's end."""
     if counts is not None:
-        run = np.repeat(run, counts)
+        run = run.repeat(counts)
     t = s.t_rel.take(run, mode="clip")
     t += s.t1.take(run, mode="clip") * row
     texel = t.astype(np.int64)
@@ -245,7 +245,7 @@ def _per_pixel(values, run, counts):
     (``counts``: pixels of each of ``run``), each run's value repeated (a cheaper pass)."""
     if counts is None:
         return values.take(run, axis=-1, mode="clip")
-    return np.repeat(values.take(run, axis=-1), counts, axis=-1)
+    return values.take(run, axis=-1).repeat(counts, axis=-1)
 
 
 def shade_planes(s: RunSurfaces, run, row, counts=None):
@@ -307,7 +307,7 @@ def _column_addresses(s: RunSurfaces, lengths, starts, height):
     at_last = at_first + step * (lengths - 1)
     jump = at_first
     jump[1:] -= at_last[:-1]
-    t = np.repeat(step, lengths)
+    t = step.repeat(lengths)
     t[starts] = jump
     np.cumsum(t, out=t)
     t >>= FIX
@@ -332,7 +332,7 @@ def fill_textured(tables, tex, heights, state, view, e, light=True):
     lengths = runs.lengths
     starts = np.cumsum(lengths) - lengths
     t = _column_addresses(s, lengths, starts, height)
-    colour = lit(tex, t, np.repeat(s.level, lengths), out=t)
+    colour = lit(tex, t, s.level.repeat(lengths), out=t)
     for shape in (1, 2):
         chosen = np.flatnonzero(s.shape == shape)
         counts = lengths[chosen]
@@ -341,9 +341,9 @@ def fill_textured(tables, tex, heights, state, view, e, light=True):
             # pixel k of the batch is k plus its run's start less the pixels of the runs
             # before it; its row, that less its column's first pixel
             start = starts[chosen]
-            pixel = np.repeat(start - (np.cumsum(counts) - counts), counts)
+            pixel = (start - (np.cumsum(counts) - counts)).repeat(counts)
             pixel += np.arange(n, dtype=np.int64)
-            row = np.repeat(start % height - start, counts)
+            row = (start % height - start).repeat(counts)
             row += pixel
             colour[pixel] = SHADERS[shape](s, chosen, row, counts)
     written = int(lengths[runs.kinds != KIND_NOTHING].sum())
