@@ -3,6 +3,8 @@ order, each read lazily (only the pictures asked for) and cached per source.
 
     res = ResourceSet.from_level(level)      # level.resource_paths(), in order
     res = ResourceSet(["freedoom2.wad", "mytextures/"])
+    res = shared_resources(level.resource_paths())   # one set for every level naming the
+                                                     # same unchanged sources
     res.wall("STARTAN3")      # a wall texture (the sky textures live here too), or None
     res.flat("FLOOR4_8")      # a flat, or None
     res.sprite("POSSA1")      # a sprite lump by its full name, or None
@@ -51,7 +53,8 @@ from .level import Level, LevelError
 from .wad.graphics import FLAT_SIDE, Picture, ResourceError, check_size
 from .wad.textures import BUDGET_BYTES, wad_textures
 
-__all__ = ["Picture", "PngFolder", "ResourceError", "ResourceSet", "sky_name"]
+__all__ = ["Picture", "PngFolder", "ResourceError", "ResourceSet", "forget_shared_resources",
+           "shared_resources", "sky_name"]
 
 KINDS = ("wall", "flat", "sprite")
 SKY_FLAT = "F_SKY1"
@@ -63,6 +66,8 @@ _FOLDER_OF = {"wall": "", "flat": "flats", "sprite": "sprites"}
 _SPRITE_NAME = re.compile(r"([A-Z0-9_\[\]\\-]{4})([A-Z\[\]\\])([0-8])(?:([A-Z\[\]\\])([0-8]))?")
 _FOLDERS: OrderedDict[tuple, "PngFolder"] = OrderedDict()
 _FOLDER_CACHE_SIZE = 8
+_SHARED: OrderedDict[tuple, "ResourceSet"] = OrderedDict()
+_SHARED_CACHE_SIZE = 8
 
 
 def sky_name(map_name: str) -> str:
@@ -170,6 +175,44 @@ class ResourceSet:
         return self._tables[which]
 
 
+def shared_resources(paths) -> ResourceSet:
+    """The ``ResourceSet`` of ``paths``, shared by every caller naming the same sources while
+    none of them changes (each source's resolved path and stamp: a WAD's inode, size and
+    modification time, a folder's and its ``flats``/``sprites`` subfolders' modification
+    times), so levels drawn from one texture folder decode and look up each picture once.
+    The last few sets are kept; a forked process starts with none (a WAD source keeps its
+    file open, and a parent and child reading through one handle would race)."""
+    paths = [Path(p) for p in paths]
+    key = tuple((os.path.realpath(p), _stamp(p)) for p in paths)
+    found = _SHARED.get(key)
+    if found is None:
+        found = ResourceSet(paths)
+        _SHARED[key] = found
+        while len(_SHARED) > _SHARED_CACHE_SIZE:
+            _SHARED.popitem(last=False)
+    else:
+        _SHARED.move_to_end(key)
+    return found
+
+
+def forget_shared_resources() -> None:
+    """Empties the cache of ``shared_resources`` (done in every forked child)."""
+    _SHARED.clear()
+
+
+os.register_at_fork(after_in_child=forget_shared_resources)
+
+
+def _stamp(path: Path):
+    if path.is_dir():
+        return _folder_stamp(path)
+    try:
+        st = path.stat()
+    except OSError:
+        return None                         # ResourceSet says what is wrong with it
+    return (st.st_ino, st.st_size, st.st_mtime_ns, st.st_ctime_ns)
+
+
 def _guard(source, call):
     """``call()``, with the archive's errors (a LevelError naming the WAD) as ResourceErrors."""
     try:
@@ -247,14 +290,17 @@ def _used_names(level: Level):
 
 def png_folder(path: Path) -> "PngFolder":
     """The PNG folder at ``path``, shared while the folder (and its subfolders) are unchanged."""
-    key = (os.path.realpath(path),) + tuple(
-        _mtime(path / sub) for sub in ("", "flats", "sprites"))
+    key = (os.path.realpath(path),) + _folder_stamp(path)
     folder = _FOLDERS.get(key)
     if folder is None:
         folder = _FOLDERS[key] = PngFolder(path)
         while len(_FOLDERS) > _FOLDER_CACHE_SIZE:
             _FOLDERS.popitem(last=False)
     return folder
+
+
+def _folder_stamp(path: Path) -> tuple:
+    return tuple(_mtime(path / sub) for sub in ("", "flats", "sprites"))
 
 
 def _mtime(path: Path) -> int | None:

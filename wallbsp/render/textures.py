@@ -24,10 +24,11 @@ offsets and pegging.
 from __future__ import annotations
 
 import weakref
+from typing import NamedTuple
 
 import numpy as np
 
-from ..resources import ResourceSet
+from ..resources import shared_resources, sky_name
 from .shading import LIGHT_LEVELS, hex_rgb, lit_palette, pack_rgb, scaled_rgb
 
 __all__ = ["TexturePack", "LevelTextures", "UNLIT", "FLAT_SIDE", "side_geometry",
@@ -80,75 +81,164 @@ def _side_geometry(tables, level):
     return start, direction, x_offset, y_offset, has_side
 
 
-class _Packer:
-    """Collects pictures and colours into colour indices and an atlas."""
+class PackedPicture(NamedTuple):
+    """A picture as the atlas holds it, made once per resource set: ``texels`` (flat,
+    column-major, padded when asked) are palette indices, or for an RGB picture indices
+    into its own distinct colours, whose lit columns ``lit`` ``(33, colours)`` travel with
+    it (None for a paletted one)."""
+    texels: np.ndarray
+    width: int
+    height: int
+    pitch: int
+    lead: int
+    lit: np.ndarray | None
 
-    def __init__(self, palette, colormap):
-        self.palette, self.colormap = palette, colormap
-        self.first_rgb = 0 if palette is None else 256
-        self.rgb: dict[int, int] = {}               # packed rgb -> colour index
-        self.pieces, self.size = [], 0
+
+def packed_picture(picture, pad: bool) -> PackedPicture:
+    if picture.paletted:
+        local, lit = picture.pixels.astype(np.int32), None
+    else:
+        colours, inverse = np.unique(pack_rgb(picture.pixels), return_inverse=True)
+        local = inverse.reshape(picture.pixels.shape[:2]).astype(np.int32)
+        lit = lit_columns(colours)
+    texels, lead = padded(local) if pad else (local, 0)
+    return PackedPicture(texels.reshape(-1), texels.shape[0], local.shape[1],
+                         texels.shape[1], lead, lit)
+
+
+def padded(texels: np.ndarray) -> tuple[np.ndarray, int]:
+    """Each column of ``texels`` repeated down to at least ``height + PAD`` texels and led
+    by its last texel (row -1 wraps); returns it and the lead (1)."""
+    height = texels.shape[1]
+    tiled = np.tile(texels, (1, -(-(height + PAD) // height)))
+    return np.concatenate([texels[:, -1:], tiled], axis=1), 1
+
+
+def lit_columns(packed: np.ndarray) -> np.ndarray:
+    """``(33, n)``: packed rgb colours at light levels 0-31 (scaled) and their own."""
+    levels = np.arange(LIGHT_LEVELS)[:, None]
+    packed = np.asarray(packed, dtype=np.uint32)
+    return np.concatenate([scaled_rgb(packed[None, :], levels), packed[None, :]])
+
+
+_PICTURES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+
+
+def picture_cache(resources) -> dict:
+    """The packed pictures of a resource set, ``(kind, name, pad) -> PackedPicture``, kept
+    while the set lives (``shared_resources`` shares one set between levels)."""
+    try:
+        return _PICTURES.setdefault(resources, {})
+    except TypeError:                          # an unhashable stand-in: no caching
+        return {}
+
+
+class _Packer:
+    """Collects pictures and colours into colour indices and an atlas.  A picture's colours
+    take the next indices as a block (its cached lit columns); a colour of the level's own
+    takes one index, shared by every use of that colour."""
+
+    def __init__(self, resources):
+        self.resources, self.cache = resources, picture_cache(resources)
+        self.palette = resources.palette
+        self.n_colours = 0 if self.palette is None else 256
+        self.rgb: dict[int, int] = {}               # level colour (packed rgb) -> index
+        self.lit_blocks = []                         # (first index, lit columns)
+        self.pieces, self.size = [], 0               # (texels, colour index offset)
         self.base, self.width, self.height, self.stride, self.pitch = [], [], [], [], []
 
-    def rgb_indices(self, packed: np.ndarray) -> np.ndarray:
-        uniq, inverse = np.unique(packed, return_inverse=True)
-        index = np.array([self.rgb.setdefault(int(p), self.first_rgb + len(self.rgb))
-                          for p in uniq.tolist()], dtype=np.int64)
-        return index[inverse.reshape(packed.shape)]
-
-    def add(self, texels: np.ndarray, pad: bool = False) -> int:
-        """A texture of colour indices ``(width, height)``; returns its id.  A padded one
-        has each column repeated down to at least ``height + PAD`` texels."""
-        height, lead = texels.shape[1], 0
-        if pad:
-            tiled = np.tile(texels, (1, -(-(height + PAD) // height)))
-            texels = np.concatenate([texels[:, -1:], tiled], axis=1)     # row -1 wraps
-            lead = 1
+    def _piece(self, texels, offset, width, height, pitch, lead) -> int:
         self.base.append(self.size + lead)
-        self.width.append(texels.shape[0])
+        self.width.append(width)
         self.height.append(height)
-        self.pitch.append(texels.shape[1])
-        self.stride.append(texels.shape[1] - lead)
-        self.pieces.append(texels.reshape(-1))
-        self.size += texels.size
+        self.pitch.append(pitch)
+        self.stride.append(pitch - lead)
+        self.pieces.append((texels, offset))
+        self.size += len(texels)
         return len(self.base) - 1
 
-    def add_picture(self, picture, pad: bool = False) -> int:
-        if picture.paletted:
-            return self.add(picture.pixels.astype(np.int64), pad)
-        return self.add(self.rgb_indices(pack_rgb(picture.pixels)), pad)
+    def add_picture(self, kind: str, name: str, pad: bool = False) -> int:
+        """Picture ``name`` of namespace ``kind`` (it must exist); returns its id."""
+        key = (kind, name, pad)
+        packed = self.cache.get(key)
+        if packed is None:
+            picture = getattr(self.resources, kind)(name)
+            packed = self.cache[key] = packed_picture(picture, pad)
+        offset = 0
+        if packed.lit is not None:
+            offset = self.n_colours
+            self.lit_blocks.append((offset, packed.lit))
+            self.n_colours += packed.lit.shape[1]
+        return self._piece(packed.texels, offset, packed.width, packed.height, packed.pitch,
+                           packed.lead)
+
+    def colour_indices(self, colors) -> list[int]:
+        """The colour index of each ``"#rrggbb"`` of ``colors``, one per distinct colour."""
+        found = {c: None for c in colors}
+        for c in found:
+            packed = int(pack_rgb(hex_rgb(c)))
+            if packed not in self.rgb:
+                self.rgb[packed] = self.n_colours
+                self.n_colours += 1
+            found[c] = self.rgb[packed]
+        return [found[c] for c in colors]
 
     def add_colour(self, color: str, side: int = 1) -> int:
-        index = self.rgb_indices(pack_rgb(np.array(hex_rgb(color))))
-        return self.add(np.full((side, side), index, dtype=np.int64))
+        index = self.colour_indices([color])[0]
+        return self._piece(np.full(side * side, index, dtype=np.int32), 0, side, side, side,
+                           0)
 
     def add_colours(self, colors) -> np.ndarray:
-        """A 1 × 1 texture for each of ``colors`` at once; returns their ids."""
-        rgb = np.array([hex_rgb(c) for c in colors]).reshape(-1, 3)
-        texels = self.rgb_indices(pack_rgb(rgb))
+        """The id of a 1 × 1 texture of each of ``colors`` (one per distinct colour)."""
+        distinct = {c: i for i, c in enumerate(dict.fromkeys(colors))}
+        texels = np.array(self.colour_indices(list(distinct)), dtype=np.int32)
         n, first = len(texels), len(self.base)
         self.base.extend(range(self.size, self.size + n))
         for sizes in (self.width, self.height, self.stride, self.pitch):
             sizes.extend([1] * n)
-        self.pieces.append(texels)
+        self.pieces.append((texels, 0))
         self.size += n
-        return np.arange(first, first + n, dtype=np.int64)
+        return first + np.fromiter(map(distinct.__getitem__, colors), np.int64, len(colors))
 
     def lut(self) -> np.ndarray:
         """``(33, colours)`` packed rgb (see the module doc)."""
-        levels = np.arange(LIGHT_LEVELS)[:, None]
-        rgb = np.array(sorted(self.rgb, key=self.rgb.get), dtype=np.uint32)
-        rows = np.concatenate([scaled_rgb(rgb[None, :], levels), rgb[None, :]])
-        if self.palette is None:
-            return rows
-        wad = np.concatenate([lit_palette(self.palette, self.colormap),
-                              pack_rgb(self.palette)[None]])
-        return np.concatenate([wad, rows], axis=1)
+        lut = np.empty((UNLIT + 1, self.n_colours), dtype=np.uint32)
+        if self.palette is not None:
+            lut[:, :256] = wad_columns(self.cache, self.palette, self.resources.colormap)
+        for first, lit in self.lit_blocks:
+            lut[:, first:first + lit.shape[1]] = lit
+        if self.rgb:
+            lut[:, list(self.rgb.values())] = lit_columns(list(self.rgb))
+        return lut
 
     def atlas(self) -> np.ndarray:
-        n_colours = self.first_rgb + len(self.rgb)
-        dtype = np.uint16 if n_colours <= 1 << 16 else np.int32
-        return np.concatenate(self.pieces).astype(dtype) if self.pieces else np.zeros(1, dtype)
+        dtype = np.uint16 if self.n_colours <= 1 << 16 else np.int32
+        atlas = np.empty(max(self.size, 1), dtype)
+        atlas[:1] = 0
+        at = 0
+        for texels, offset in self.pieces:
+            part = atlas[at:at + len(texels)]
+            part[:] = texels
+            if offset:
+                part += offset
+            at += len(texels)
+        return atlas
+
+
+def wad_columns(cache: dict, palette, colormap) -> np.ndarray:
+    """``(33, 256)``: the WAD's lit palette and the palette itself, made once per set."""
+    if "wad" not in cache:
+        cache["wad"] = np.concatenate([lit_palette(palette, colormap),
+                                       pack_rgb(palette)[None]])
+    return cache["wad"]
+
+
+def wall_part_names(level) -> list:
+    """The texture name (or None) of every wall's front and back side's upper, middle and
+    lower part, flat: ``6*wall + 3*back + part``."""
+    none = (None, None, None)
+    return [n for w in level.walls for side in (w.front_side, w.back_side)
+            for n in (none if side is None else (side.upper, side.middle, side.lower))]
 
 
 class TexturePack:
@@ -160,17 +250,16 @@ class TexturePack:
 
     def __init__(self, tables, level, resources, extra_walls=(), extra_flats=()):
         self.extra_walls, self.extra_flats = frozenset(extra_walls), frozenset(extra_flats)
-        self.packer = packer = _Packer(resources.palette, resources.colormap)
-        own = [[(None, None, None) if s is None else (s.upper, s.middle, s.lower)
-                for s in (w.front_side, w.back_side)] for w in level.walls]
-        names = {n for wall in own for side in wall for n in side if n is not None}
+        self.packer = packer = _Packer(resources)
+        own = wall_part_names(level)
+        names = set(own) - {None}
         names |= {switched_name(n) for n in names} - {None}
         self.walls = {}                                  # name -> texture id (-1: no picture)
         for name in sorted(names | self.extra_walls):
-            picture = resources.wall(name)
-            self.walls[name] = -1 if picture is None else packer.add_picture(picture, True)
-        ids = np.array([[[self.wall_id(n) for n in side] for side in wall] for wall in own],
-                       dtype=np.int64).reshape(-1, 2, 3)
+            found = resources.wall(name) is not None
+            self.walls[name] = packer.add_picture("wall", name, True) if found else -1
+        ids = {**self.walls, None: NO_NAME}
+        ids = np.fromiter(map(ids.__getitem__, own), np.int64, len(own)).reshape(-1, 2, 3)
         back = np.arange(len(tables.key_wall)) & 1
         self.key_texture = ids[tables.key_wall, back].T          # (3, keys), -1: none
         self.key_named = (self.key_texture != NO_NAME)
@@ -179,8 +268,8 @@ class TexturePack:
         self.wall_colour = packer.add_colours([c for w in level.walls for c in (
             w.drawn_upper_color, w.color, w.drawn_lower_color)]).reshape(-1, 3)
         self._flats(level, resources)
-        sky = resources.sky(level) if hasattr(resources, "sky") else None
-        self.sky = -1 if sky is None else packer.add_picture(sky, True)
+        sky = level.sky or sky_name(level.name)            # ResourceSet.sky's rule
+        self.sky = packer.add_picture("wall", sky, True) if resources.wall(sky) else -1
         self.sky_colour = packer.add_colours([s.ceiling_color for s in level.sectors])
         self.atlas = packer.atlas()
         self.lut = packer.lut()
@@ -205,8 +294,8 @@ class TexturePack:
         names = {n for n in floors + [s.ceiling_texture for s in level.sectors] if n is not None}
         self.flats = {}                                  # name -> texture id (-1: no picture)
         for name in sorted(names):
-            picture = resources.flat(name)
-            self.flats[name] = -1 if picture is None else self.packer.add_picture(picture)
+            found = resources.flat(name) is not None
+            self.flats[name] = self.packer.add_picture("flat", name) if found else -1
         self.blocks = {}                                 # colour -> 64 x 64 block of it
         if any(self.flats.get(n, -1) < 0 for n in floors):     # a floor may come to show one
             for sector in level.sectors:
@@ -306,7 +395,8 @@ def level_resources(tree):
 
 
 def _open_resources(level):
-    return ResourceSet.from_level(level) if getattr(level, "resources", ()) else None
+    return shared_resources(level.resource_paths()) if getattr(level, "resources", ()) \
+        else None
 
 
 def level_textures(tables, state):
