@@ -64,6 +64,13 @@ class ClipWindows:
 
     def __init__(self, drawsegs, piece_near, piece_far, view, floor, ceiling):
         self.view, self.floor, self.ceiling = view, floor, ceiling
+        self._pending = (drawsegs, piece_near, piece_far)   # made on first use: a frame
+        # whose things are all behind the eye or off the sides never needs the windows
+
+    def _prepare(self):
+        drawsegs, piece_near, piece_far = self._pending
+        self._pending = None
+        view = self.view
         self.col = drawsegs.col
         # where a column's ray starts: the near sector of its first piece (an eye on a
         # sector's edge is in one sector or the other depending on the column); a column
@@ -82,6 +89,8 @@ class ClipWindows:
     def windows(self, col, depth, own_sector):
         """Rows ``[top, bottom)`` through which something at ``depth`` in column ``col``
         belonging to ``own_sector`` is seen (module docstring)."""
+        if self._pending is not None:
+            self._prepare()
         height = self.view.height
         top = np.zeros(len(col), dtype=np.int64)
         bottom = np.full(len(col), height, dtype=np.int64)

@@ -18,7 +18,8 @@ __all__ = ["RunLayers"]
 
 
 class RunLayers:
-    """``columns(name)`` for ``kind``, ``index`` and ``depth`` of a frame given as runs.
+    """``columns(name)`` for ``kind``, ``index`` and ``depth`` of a frame given as runs (a
+    new array each call, which the caller may write).
 
     ``runs``: per run ``kinds``, ``indices``, ``entries`` (entry of ``e`` each run belongs
     to, ``>= len(e.col)`` for none); exactly one of ``lengths`` (front to back: runs in

@@ -134,9 +134,8 @@ class OverlayLayers:
         self.base, self.overlay = base, overlay
 
     def columns(self, name):
-        values = self.base.columns(name)
+        values = self.base.columns(name)        # a fresh array each call: written in place
         if len(self.overlay.pixel):
-            values = values.copy()
             values.reshape(-1)[self.overlay.pixel] = getattr(self.overlay, name)
         return values
 

@@ -100,6 +100,8 @@ def sprite_slices(view, state, things, ids, clip, atlas, light=True):
     c1 = np.maximum(np.ceil(view.x0 + (along - left) * scale), 0).astype(np.int64)
     c2 = np.minimum(np.ceil(view.x0 + (along - left + width) * scale), view.width)
     counts = np.maximum(c2.astype(np.int64) - c1, 0)
+    if not counts.any():                      # all between columns or off the sides
+        return None, 0
     feet = things.feet(ids, state.floor, state.ceiling)
     r1, r2, t0, tstep = texture_rows(view, feet + top, height, depth)
     if light:
