@@ -223,6 +223,43 @@ def test_a_pressed_switch_and_a_changed_floor_keep_the_atlas(tmp_path):
     assert level_textures(tree_tables(tree), WorldState(tree)).atlas is atlas   # shared
 
 
+def test_levels_of_one_texture_folder_share_the_packed_pictures(folder):
+    """Levels naming the same unchanged folder share one resource set and the pictures
+    packed from it (a generated level's first frame packs no picture again), and draw
+    what a fresh set draws."""
+    from wallbsp.render.textures import picture_cache
+    from wallbsp.resources import forget_shared_resources
+    a = compile_level(step_level(folder, y_offset=3))
+    b = compile_level(step_level(folder, front_side=Side("NOPE", "GRID", "GRID")))
+    assert level_resources(a) is level_resources(b)
+    camera = Camera(EYE_X, EYE_Y, 48, 0)
+    shared = [render(tree, camera, 64, 40) for tree in (a, b)]
+    packed = picture_cache(level_resources(a))
+    assert {("wall", "GRID", True), ("wall", "SKYT", True), ("flat", "FLOORF", False)} \
+        <= set(packed)
+    forget_shared_resources()
+    fresh = [compile_level(tree.level) for tree in (a, b)]
+    assert level_resources(fresh[0]) is not level_resources(a)
+    assert not picture_cache(level_resources(fresh[0]))
+    for frame, tree in zip(shared, fresh):
+        assert np.array_equal(frame.color, render(tree, camera, 64, 40).color)
+
+
+@pytest.mark.skipif(not (FREEDOOM / "freedoom2.wad").exists(), reason="Freedoom not installed")
+def test_wad_and_png_textures_in_one_level_match_the_reference(folder):
+    """A WAD's palette indices and a folder's colours in one atlas: the PNG colours take
+    the indices after the palette's 256."""
+    level = dataclasses.replace(
+        step_level(folder, front_side=Side("STARTAN3", None, "STARTAN3")),
+        resources=(str(FREEDOOM / "freedoom2.wad"), str(folder)))
+    tree = compile_level(level)
+    frame, *_ = assert_matches_reference(tree, Camera(EYE_X, EYE_Y, 48, 0))
+    palette = {tuple(c) for c in level_resources(tree).palette.tolist()}
+    step = (frame.kind == 1) & (frame.index == 0)
+    assert step.sum() > 100 and all(tuple(c) in palette for c in frame.color[step].tolist())
+    assert (frame.color[frame.kind == 2][:, 2] == 50).all()         # FLOORF from the folder
+
+
 def test_textured_painter_equals_front_to_back(folder):
     trees = [compile_level(step_level(folder, True, False, y_offset=3)),
              compile_level(load_level(ROOT / "levels" / "textured" / "multi.json"))]

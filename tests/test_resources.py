@@ -3,6 +3,7 @@ PNG folders, the search order, and damaged or hostile resources as one-line erro
 bounded cost."""
 from __future__ import annotations
 
+import os
 import struct
 import tracemalloc
 from pathlib import Path
@@ -14,7 +15,8 @@ import pytest
 from test_wad import Map, freedoom
 from wadkit import BLUE, GREEN, RED, colormap, flat, patch, playpal, pnames, texture_lump
 from wallbsp.level import LevelError
-from wallbsp.resources import ResourceError, ResourceSet, sky_name
+from wallbsp.resources import (ResourceError, ResourceSet, forget_shared_resources,
+                               shared_resources, sky_name)
 from wallbsp.wad import load_wad_level, write_wad
 from wallbsp.wad.graphics import MAX_TEXELS, decode_picture
 
@@ -167,6 +169,25 @@ def test_sources_are_searched_in_order():
     both = ResourceSet([folder, wad_path])
     assert both.wall("HOLEY").paletted and not both.wall("BRICK").paletted
     assert both.palette is not None
+
+
+def test_shared_resources_is_one_set_until_a_source_changes():
+    folder, wad_path = png_folder(), wad()
+    first = shared_resources([folder, wad_path])
+    assert shared_resources([folder.resolve(), wad_path]) is first     # however it is named
+    assert shared_resources([wad_path, folder]) is not first           # another order
+    assert first.wall("BRICK") is not None and first.wall("NEW") is None
+    stat = folder.stat()
+    save_png(folder / "NEW.png", [[OPAQUE]])
+    os.utime(folder, ns=(stat.st_atime_ns, stat.st_mtime_ns + 10 ** 9))   # a later mtime
+    changed = shared_resources([folder, wad_path])
+    assert changed is not first and changed.wall("NEW") is not None
+    wad(FLOOR1=flat([GREEN] * 4096))                                   # the WAD rewritten
+    rewritten = shared_resources([folder, wad_path])
+    assert rewritten is not changed
+    assert rewritten.flat("FLOOR1").pixels[0, 0] != changed.flat("FLOOR1").pixels[0, 0]
+    forget_shared_resources()
+    assert shared_resources([folder, wad_path]) is not rewritten
 
 
 def test_from_level_reads_the_imported_wad_and_names_missing_textures():
