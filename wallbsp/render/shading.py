@@ -17,7 +17,7 @@ import numpy as np
 
 __all__ = ["LIGHT_LEVELS", "LIGHT_DISTANCE", "FULL_BRIGHT", "far_level", "light_levels",
            "hex_rgb", "pack_rgb", "unpack_rgb", "scaled_rgb", "lit_palette", "colour_table",
-           "plane_stripes", "wall_codes"]
+           "code_colours", "plane_stripes", "wall_codes"]
 
 LIGHT_LEVELS = 32
 FULL_BRIGHT = LIGHT_LEVELS - 1
@@ -67,17 +67,28 @@ def lit_palette(palette, colormap) -> np.ndarray:
     return scaled_rgb(pack_rgb(palette)[None, :], np.arange(LIGHT_LEVELS)[:, None])
 
 
-def colour_table(walls, sectors) -> np.ndarray:
-    """Packed little-endian rgb (a uint8 view of a pixel reads r, g, b, 0) of every colour
-    code ``32*surface + level``; surfaces: wall w -> 3w (color), 3w+1 (upper), 3w+2 (lower),
-    then sector s -> 3*walls + 2s (floor), + 2s+1 (ceiling)."""
-    colours = []
-    for w in walls:
-        colours += [hex_rgb(w.color), hex_rgb(w.drawn_upper_color), hex_rgb(w.drawn_lower_color)]
-    for s in sectors:
-        colours += [hex_rgb(s.floor_color), hex_rgb(s.ceiling_color)]
-    packed = pack_rgb(np.array(colours, dtype=np.uint32).reshape(-1, 3))
-    return scaled_rgb(packed[:, None], np.arange(LIGHT_LEVELS)[None, :]).reshape(-1)
+def colour_table(walls, sectors) -> tuple[np.ndarray, np.ndarray]:
+    """The flat colours of every colour code ``32*surface + level``, as ``(lit, colour)``:
+    ``lit`` (distinct colours, 32) packed little-endian rgb (a uint8 view of a pixel reads
+    r, g, b, 0) and ``colour`` (surfaces,) int32, the row of each surface, so code ``c`` is
+    ``lit[colour[c // 32], c % 32]`` (``code_colours``).  Surfaces: wall w -> 3w (color),
+    3w+1 (upper), 3w+2 (lower), then sector s -> 3*walls + 2s (floor), + 2s+1 (ceiling).
+    A level has few distinct colours and many surfaces: scaling each distinct colour once
+    keeps the float work and the table small (issue 14 §14)."""
+    rows: dict = {}
+    row = rows.setdefault                    # a colour's row: the next one when it is new
+    colour = [row(c, len(rows)) for w in walls
+              for c in (w.color, w.drawn_upper_color, w.drawn_lower_color)]
+    colour += [row(c, len(rows)) for s in sectors for c in (s.floor_color, s.ceiling_color)]
+    packed = pack_rgb(np.array([hex_rgb(c) for c in rows], dtype=np.uint32).reshape(-1, 3))
+    lit = scaled_rgb(packed[:, None], np.arange(LIGHT_LEVELS)[None, :])
+    return lit, np.array(colour, dtype=np.int32)
+
+
+def code_colours(tables, codes) -> np.ndarray:
+    """Packed rgb of colour codes ``32*surface + level`` (``colour_table``)."""
+    surface, level = np.divmod(codes, LIGHT_LEVELS)
+    return tables.lit_colours[tables.surface_colour[surface], level]
 
 
 def plane_stripes(tables, state, view, keys, light=True):
@@ -88,7 +99,7 @@ def plane_stripes(tables, state, view, keys, light=True):
     height = view.height
     stripes = np.zeros((len(uniq), height), dtype="<u4")
     walls = uniq < tables.n_codes
-    stripes[walls] = tables.rgb32[uniq[walls]][:, None]
+    stripes[walls] = code_colours(tables, uniq[walls])[:, None]
     planes = (uniq >= tables.plane_key_base) & (uniq < tables.nothing_key)
     if planes.any():
         plane = uniq[planes] - tables.plane_key_base
@@ -103,7 +114,7 @@ def plane_stripes(tables, state, view, keys, light=True):
         else:
             level = np.full((len(plane), height), FULL_BRIGHT, dtype=np.int64)
         codes = (tables.plane_base_surface + plane)[:, None] * LIGHT_LEVELS + level
-        stripes[planes] = tables.rgb32[codes]
+        stripes[planes] = code_colours(tables, codes)
     return stripes, inverse.reshape(-1)
 
 

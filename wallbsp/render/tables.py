@@ -30,13 +30,11 @@ class TreeTables:
         walls, sectors = level.walls, level.sectors
         self.root = int(tree.root)
         self.node_count = len(tree.node_line)
+        self.node_lines, self.node_kids, self.node_segs = node_lists(tree)
         lines = np.asarray(tree.node_line, dtype=np.float64).reshape(-1, 3)
-        self.node_lines = lines.tolist()
         # the largest |a|, |b|, |c|: the side test's tolerance for float eyes
-        self.line_max = tuple(np.abs(lines).max(axis=0).tolist()) if len(lines) else (0, 0, 0)
-        self.node_kids = np.asarray(tree.node_child).tolist()
+        self.line_max = tuple(np.abs(lines).max(axis=0, initial=0).tolist())
         self.node_boxes = np.asarray(tree.node_bbox, dtype=np.float64).tolist()
-        self.node_segs = np.asarray(tree.node_segs).tolist()
         self.leaf_inside = (np.asarray(tree.leaf_sector) >= 0).tolist()
         seg_wall = np.asarray(tree.seg_wall, dtype=np.int64)
         self.seg_xy = np.asarray(tree.seg_xy, dtype=np.float64).reshape(-1, 4)
@@ -50,8 +48,8 @@ class TreeTables:
         self.n_sectors = len(sectors)
         self.sector_sky = np.array([s.sky for s in sectors], dtype=bool)
         self._key_tables(level, seg_wall)
-        self.rgb32 = colour_table(walls, sectors)
-        self.n_codes = len(self.rgb32)
+        self.lit_colours, self.surface_colour = colour_table(walls, sectors)
+        self.n_codes = LIGHT_LEVELS * len(self.surface_colour)
         self.plane_base_surface = 3 * len(walls)
         self.plane_key_base = self.n_codes                       # run keys: codes, planes,
         self.nothing_key = self.n_codes + 2 * len(sectors)       # then "nothing"
@@ -99,6 +97,18 @@ class HeightTables:
         self.key_heights = np.stack([ceil[near], floor[near], far_c, far_f])   # (4, keys)
         closed = (far_f >= far_c) | (far_c <= floor[near]) | (far_f >= ceil[near])
         self.key_solid = (one_sided | closed).tolist()
+
+
+def node_lists(tree) -> tuple[list, list, list]:
+    """``(lines, children, seg ranges)`` per node as Python lists: a ``BSPTree``'s own
+    (``node_lists()``: its ``locate`` builds them anyway, so one copy serves both — at
+    200,000 walls each copy is ~75 MB), or built from the arrays of a stand-in tree."""
+    own = getattr(tree, "node_lists", None)
+    if own is not None:
+        lines, kids, segs, _ = own()
+        return lines, kids, segs
+    lines = np.asarray(tree.node_line, dtype=np.float64).reshape(-1, 3)
+    return lines.tolist(), np.asarray(tree.node_child).tolist(), np.asarray(tree.node_segs).tolist()
 
 
 _CACHE: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
