@@ -86,13 +86,11 @@ def front_to_back_runs(tables, view, e, codes, parts=None):
     then 4)."""
     width, height = view.width, view.height
     n_entries = len(e.col)
-    col = np.concatenate([e.col, np.arange(width, dtype=np.int64)])
+    sentinel = _sentinels(width, height)
+    col = np.concatenate([e.col, sentinel.col])
     order = np.argsort(col, kind="stable")            # by column, then walk order
     col = col[order]
-    sentinel = np.full((4, width), height, dtype=np.int64)
-    sentinel[0] = 0
-    bounds = np.concatenate([np.stack([e.p1, e.u, e.l, e.fl]), sentinel], axis=1).take(
-        order, axis=1)
+    bounds = np.concatenate([e.bounds, sentinel.bounds], axis=1).take(order, axis=1)
     top, bottom = column_windows(col, bounds[1], bounds[2], height)
     bounds = np.minimum(np.maximum(bounds, top), bottom)
     p1, u, lo, fl = bounds
@@ -112,14 +110,37 @@ def front_to_back_runs(tables, view, e, codes, parts=None):
         nothing = tables.nothing_key
     else:
         keys, part_kinds, indices = parts
-        kinds = np.concatenate([part_kinds, np.zeros((4, width), dtype=np.uint8)],
-                               axis=1).take(order, axis=1)
+        kinds = np.concatenate([part_kinds, sentinel.kinds], axis=1).take(order, axis=1)
         nothing = 4
     keys = np.concatenate([keys, np.full((4, width), nothing, dtype=np.int64)], axis=1)
-    indices = np.concatenate([indices, np.full((4, width), -1, dtype=np.int64)], axis=1)
+    indices = np.concatenate([indices, sentinel.indices], axis=1)
     runs = _scatter_runs(slots, order, lengths, keys.take(order, axis=1), kinds,
                          indices.take(order, axis=1))
     return runs, (order, top, bottom, u, lo)
+
+
+class _Sentinels:
+    """The closing entries of a frame size (one per column), made once: read-only blocks
+    the fill appends to the entries' own."""
+
+    def __init__(self, width, height):
+        self.col = np.arange(width, dtype=np.int64)
+        self.bounds = np.full((4, width), height, dtype=np.int64)
+        self.bounds[0] = 0
+        self.kinds = np.zeros((4, width), dtype=np.uint8)
+        self.indices = np.full((4, width), -1, dtype=np.int64)
+
+
+_SENTINELS: dict = {}
+
+
+def _sentinels(width, height) -> _Sentinels:
+    found = _SENTINELS.get((width, height))
+    if found is None:
+        if len(_SENTINELS) > 8:
+            _SENTINELS.clear()
+        found = _SENTINELS[(width, height)] = _Sentinels(width, height)
+    return found
 
 
 _PART_KINDS = np.array([[KIND_CEILING], [KIND_WALL], [KIND_WALL], [KIND_FLOOR]], dtype=np.uint8)

@@ -25,7 +25,8 @@ def boundary_rows(view, fz, w):
 class Entries:
     """Pieces expanded to one entry per (piece, column), in piece order, with the piece's
     unclipped boundaries in that column: ceiling ``[0, p1)``, upper wall ``[p1, u)``,
-    opening ``[u, l)``, lower wall ``[l, fl)``, floor ``[fl, H)`` (int64), its inverse
+    opening ``[u, l)``, lower wall ``[l, fl)``, floor ``[fl, H)`` (int64; the four rows of
+    ``bounds``), its inverse
     depth ``w``, side key (``entry_keys``), near sector and wall."""
 
     def __init__(self, tables, heights, view, pieces: list):
@@ -45,7 +46,9 @@ class Entries:
         fl = np.maximum(p1, floor_n)
         u = np.minimum(np.maximum(ceil_b, p1), fl)
         lo = np.minimum(np.maximum(floor_b, u), fl)
-        self.p1, self.u, self.l, self.fl = (x.astype(np.int64) for x in (p1, u, lo, fl))
+        # one (4, entries) int64 block (whole numbers already): the fill reads it as is
+        self.bounds = np.array([p1, u, lo, fl], dtype=np.int64)
+        self.p1, self.u, self.l, self.fl = self.bounds
         # per entry: its piece's side key (made once, read by the fills and the layers)
         self.entry_keys = entry_keys = keys.repeat(counts)
         self.near = tables.key_near.take(entry_keys)
