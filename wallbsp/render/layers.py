@@ -66,8 +66,8 @@ class RunLayers:
         scale = self._expand(b)
         np.multiply(scale, _inverse_rows(self.y0, self.width, self.height), out=scale,
                     where=scale > 0)
-        depth += scale
-        return depth.astype(np.float32)
+        # summed in float64 and rounded once into the float32 layer (no float64 sum kept)
+        return np.add(depth, scale, out=np.empty(len(depth), dtype=np.float32))
 
 
 _INVERSE_ROWS: dict = {}

@@ -78,11 +78,14 @@ class RunSurfaces:
         entry = np.where(entries < len(e.col), entries, 0)
         col = e.col[entry] if len(e.col) else np.zeros(n_runs, dtype=np.int64)
         self.shape = np.zeros(n_runs, dtype=np.int8)
-        self.column = np.full(n_runs, tex.base[tex.black], dtype=np.int64)
-        self.t_rel, self.t1, self.kx, self.ky = (np.zeros(n_runs) for _ in range(4))
-        self.level = np.full(n_runs, UNLIT * tex.n_colours, dtype=np.int64)
-        self.wrap = np.ones(n_runs, dtype=np.int64)     # column runs: the texture's height
-        self.plane_row0 = np.zeros(n_runs, dtype=np.int64)
+        # two blocks, each made in one call: (t_rel, t1, world x, -world y) and (column,
+        # level, wrap: a column run's texture height, plane_row0), at their defaults
+        floats = np.zeros((4, n_runs))
+        self.t_rel, self.t1 = floats[0], floats[1]
+        self.kxy = floats[2:]
+        ints = np.empty((4, n_runs), dtype=np.int64)
+        ints[:] = np.array([[tex.base[tex.black]], [UNLIT * tex.n_colours], [1], [0]])
+        self.column, self.level, self.wrap, self.plane_row0 = ints
         wall = kinds == KIND_WALL
         sector = np.where(wall | (kinds == KIND_NOTHING), 0, indices).astype(np.int64)
         ceiling = kinds == KIND_CEILING
@@ -98,7 +101,6 @@ class RunSurfaces:
             self._planes(np.flatnonzero(plane), tex, heights, state, view, view.u[col[plane]],
                          sector[plane], ceiling[plane])
         self._fixed_point()
-        self.kxy = np.stack([self.kx, -self.ky])
         self.xy0 = np.array([[view.x + FLAT_OFFSET], [FLAT_OFFSET - view.y]])
         self.column32 = self.column.astype(np.int32)
 
@@ -179,8 +181,8 @@ class RunSurfaces:
         h = np.where(ceiling, heights.ceiling[sector], heights.floor[sector])
         fz = view.f * (h - view.z)
         self.column[runs] = tex.base[tex.plane_texture[sector, ceiling.astype(np.int64)]]
-        self.kx[runs] = fz * (view.fx + ray * view.rx)
-        self.ky[runs] = fz * (view.fy + ray * view.ry)
+        self.kxy[0, runs] = fz * (view.fx + ray * view.rx)
+        self.kxy[1, runs] = -(fz * (view.fy + ray * view.ry))
         plane = 2 * sector + ceiling
         present = np.bincount(plane, minlength=2 * len(heights.floor)) > 0  # no sort needed
         self.plane_row0[runs] = (np.cumsum(present) - 1)[plane] * view.height
