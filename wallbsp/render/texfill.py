@@ -15,6 +15,8 @@ plane's run, with its kind and index); the upper part between two sky sectors is
 """
 from __future__ import annotations
 
+import weakref
+
 import numpy as np
 
 from .fill import front_to_back_runs, row_numbers
@@ -40,22 +42,38 @@ def entry_parts(tables, tex, e):
     ``front_to_back_runs``: keys are the part numbers 0-3 (ceiling, upper, lower, floor);
     an untextured upper or lower part of a two-sided side becomes the plane behind it, the
     upper part between two skies the sky of the near sector."""
+    kinds, indices = _key_parts(tables, tex)
     key = e.entry_keys
-    two_sided = tables.key_far[key] >= 0
-    far = np.maximum(tables.key_far[key], 0)
-    bare = two_sided & tex.has_side[key]
-    upper_sky = tables.key_upper_sky[key]
-    upper_plane = upper_sky | (bare & ~tex.key_named[0, key])
-    lower_plane = bare & ~tex.key_named[2, key]
-    n = len(key)
-    parts = np.repeat(np.arange(4, dtype=np.int64)[:, None], n, axis=1)
-    kinds = np.empty((4, n), dtype=np.uint8)
+    parts = np.broadcast_to(_PART_NUMBERS, (4, len(key)))
+    return parts, kinds.take(key, axis=1), indices.take(key, axis=1)
+
+
+_PART_NUMBERS = np.arange(4, dtype=np.int64)[:, None]
+_KEY_PARTS: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+
+
+def _key_parts(tables, tex):
+    """``entry_parts``' kinds and indices per side key, ``(4, keys)`` each: they depend on
+    the key and the textures only, so they are made once per ``LevelTextures`` (each is
+    of one tree's tables)."""
+    cached = _KEY_PARTS.get(tex)
+    if cached is not None:
+        return cached
+    two_sided = tables.key_far >= 0
+    far = np.maximum(tables.key_far, 0)
+    near, wall = tables.key_near, tables.key_wall
+    bare = two_sided & tex.has_side
+    upper_sky = tables.key_upper_sky
+    upper_plane = upper_sky | (bare & ~tex.key_named[0])
+    lower_plane = bare & ~tex.key_named[2]
+    kinds = np.empty((4, len(near)), dtype=np.uint8)
     kinds[0], kinds[3] = KIND_CEILING, KIND_FLOOR
     kinds[1] = np.where(upper_plane, KIND_CEILING, KIND_WALL)
     kinds[2] = np.where(lower_plane, KIND_FLOOR, KIND_WALL)
-    indices = np.stack([e.near, np.where(upper_plane, np.where(upper_sky, e.near, far), e.wall),
-                        np.where(lower_plane, far, e.wall), e.near])
-    return parts, kinds, indices
+    indices = np.stack([near, np.where(upper_plane, np.where(upper_sky, near, far), wall),
+                        np.where(lower_plane, far, wall), near])
+    _KEY_PARTS[tex] = kinds, indices
+    return kinds, indices
 
 
 class RunSurfaces:
