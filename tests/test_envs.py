@@ -195,10 +195,19 @@ def test_the_three_action_spaces_mean_the_same_buttons():
 @pytest.mark.parametrize("options", [{"size": (0, 10)}, {"frame_skip": 0},
                                      {"observations": ("rgb", "smell")},
                                      {"action_space": "joystick"}, {"fov": 180},
-                                     {"render_mode": "vr"}])
+                                     {"render_mode": "vr"}, {"candidates": 0},
+                                     {"candidates": "some"}])
 def test_bad_options_are_errors(options):
     with pytest.raises(ValueError):
         make("wallbsp/Explore-v0", **options)
+
+
+def test_candidates_reach_the_compiler():
+    from wallbsp.build import DEFAULT_CANDIDATES
+    for option, k in (({}, DEFAULT_CANDIDATES), ({"candidates": 1}, 1)):
+        env = make("wallbsp/Explore-v0", **SMALL, observations=("pose",), **option)
+        env.reset(seed=1)
+        assert env.world.tree.candidates == k
 
 
 def test_exit_needs_a_level():
@@ -275,16 +284,19 @@ def test_the_throughput_script_reports_every_configuration():
     assert set(report["meets"]) == {"one_env", "explore_reset", "async_2_speedup"}
 
 
-def test_a_forked_worker_starts_without_the_parents_trees(tmp_path, exit_level):
+def test_a_forked_worker_starts_without_the_parents_trees_or_textures(tmp_path, exit_level):
     from wallbsp.envs import levels
+    from wallbsp.resources import shared_resources
     path = tmp_path / "level.json"
     save_level(replace(exit_level.level, resources=(str(TEXTURE_DIR),)), path)
     parent = levels.given_tree(path)
+    textures = shared_resources([TEXTURE_DIR])
     read, write = os.pipe()
     pid = os.fork()
     if pid == 0:                                  # the child: a tree of its own
         os.close(read)
-        fresh = levels.given_tree(path) is not parent
+        fresh = levels.given_tree(path) is not parent and \
+            shared_resources([TEXTURE_DIR]) is not textures
         os.write(write, b"1" if fresh else b"0")
         os._exit(0)
     os.close(write)
@@ -293,3 +305,4 @@ def test_a_forked_worker_starts_without_the_parents_trees(tmp_path, exit_level):
     os.close(read)
     assert answer == b"1"
     assert levels.given_tree(path) is parent      # the parent keeps its own
+    assert shared_resources([TEXTURE_DIR]) is textures

@@ -70,8 +70,9 @@ def _load(spec: str) -> BSPTree:
     return compile_level(load_level(spec))
 
 
-def generated_tree(seed: int, walls: int, goal: str):
-    """``(GeneratedLevel, BSPTree)`` of a fresh level from ``seed`` (``wallbsp.generate``)."""
+def generated_tree(seed: int, walls: int, goal: str, candidates=None):
+    """``(GeneratedLevel, BSPTree)`` of a fresh level from ``seed`` (``wallbsp.generate``),
+    compiled with ``candidates`` splitter candidates per node (``compile_level``)."""
     from ..generate import generate_level
     generated = generate_level(seed, walls=walls, goal=goal)
-    return generated, compile_level(generated.level)
+    return generated, compile_level(generated.level, candidates=candidates)
