@@ -73,12 +73,12 @@ def _side_geometry(tables, level):
     other = np.where(back[:, None], ends[:, :2], ends[:, 2:])
     along = other - start
     direction = along / np.maximum(np.hypot(along[:, 0], along[:, 1]), 1e-12)[:, None]
-    sides = [(w.front_side, w.back_side) for w in level.walls]
-    side = [sides[wall][b] for wall, b in zip(tables.key_wall.tolist(), back.tolist())]
-    x_offset = np.array([0 if s is None else s.x_offset for s in side], dtype=np.float64)
-    y_offset = np.array([0 if s is None else s.y_offset for s in side], dtype=np.float64)
-    has_side = np.array([s is not None for s in side], dtype=bool)
-    return start, direction, x_offset, y_offset, has_side
+    none = (0, 0, 0)
+    sides = np.array([none if s is None else (s.x_offset, s.y_offset, 1) for w in level.walls
+                      for s in (w.front_side, w.back_side)], dtype=np.float64).reshape(-1, 2, 3)
+    x_offset, y_offset, has_side = sides[tables.key_wall, back.astype(np.int64)].T
+    return (start, direction, np.ascontiguousarray(x_offset), np.ascontiguousarray(y_offset),
+            has_side.astype(bool))
 
 
 class PackedPicture(NamedTuple):
