@@ -44,11 +44,20 @@ def entry_parts(tables, tex, e):
     upper part between two skies the sky of the near sector."""
     kinds, indices = _key_parts(tables, tex)
     key = e.entry_keys
-    parts = np.broadcast_to(_PART_NUMBERS, (4, len(key)))
-    return parts, kinds.take(key, axis=1), indices.take(key, axis=1)
+    return _part_numbers(len(key)), kinds.take(key, axis=1), indices.take(key, axis=1)
 
 
-_PART_NUMBERS = np.arange(4, dtype=np.int64)[:, None]
+_PART_NUMBERS = [np.zeros((4, 0), dtype=np.int64)]
+
+
+def _part_numbers(n):
+    """Rows 0-3 of ``n`` columns (a read-only slice of one table grown on demand)."""
+    table = _PART_NUMBERS[0]
+    if table.shape[1] < n:
+        table = np.repeat(np.arange(4, dtype=np.int64)[:, None], 2 * n, axis=1)
+        table.flags.writeable = False
+        _PART_NUMBERS[0] = table
+    return table[:, :n]
 _KEY_PARTS: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
 
 
