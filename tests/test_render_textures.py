@@ -227,7 +227,7 @@ def test_levels_of_one_texture_folder_share_the_packed_pictures(folder):
     """Levels naming the same unchanged folder share one resource set and the pictures
     packed from it (a generated level's first frame packs no picture again), and draw
     what a fresh set draws."""
-    from wallbsp.render.textures import picture_cache
+    from wallbsp.render.packing import picture_cache
     from wallbsp.resources import forget_shared_resources
     a = compile_level(step_level(folder, y_offset=3))
     b = compile_level(step_level(folder, front_side=Side("NOPE", "GRID", "GRID")))
