@@ -38,11 +38,14 @@ class PackedPicture(NamedTuple):
 
 
 def packed_picture(picture, pad: bool) -> PackedPicture:
+    """The picture packed, in the narrowest integers that hold its indices (the cache
+    keeps it while the set lives)."""
     if picture.paletted:
-        local, lit = picture.pixels.astype(np.int32), None
+        local, lit = picture.pixels.astype(np.uint8), None
     else:
         colours, inverse = np.unique(pack_rgb(picture.pixels), return_inverse=True)
-        local = inverse.reshape(picture.pixels.shape[:2]).astype(np.int32)
+        dtype = np.uint16 if len(colours) <= 1 << 16 else np.int32
+        local = inverse.reshape(picture.pixels.shape[:2]).astype(dtype)
         lit = lit_columns(colours)
     texels, lead = padded(local) if pad else (local, 0)
     return PackedPicture(texels.reshape(-1), texels.shape[0], local.shape[1],
