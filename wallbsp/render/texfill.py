@@ -16,6 +16,7 @@ plane's run, with its kind and index); the upper part between two sky sectors is
 from __future__ import annotations
 
 import weakref
+from functools import cached_property
 
 import numpy as np
 
@@ -137,12 +138,17 @@ class RunSurfaces:
         stride)`` in the end (``FIX_LIMIT`` keeps it there)."""
         plain = self.shape == 0
         start = np.floor(np.where(plain, self.t_rel, 0.0) * FIX_ONE + 0.5).astype(np.int64)
-        self.t_fix = _wrap32(start)
+        self._start = start                     # t_fix, for the painter's shader only
         self.s_fix = np.rint(np.where(plain, self.t1, 0.0) * FIX_ONE).astype(np.int32)
         # the texel address in fixed point, int64 (no wrapping): column << FIX + row; the
         # other runs read the black texel here (their pixels are drawn over)
         self.at_fix = np.where(plain, self.column, self.tex.base[self.tex.black]) << FIX
-        self.at_fix += np.where(plain, start, 0)
+        self.at_fix += start                     # 0 for the other runs
+
+    @cached_property
+    def t_fix(self):
+        """``t_rel`` in int32 fixed point (plain column runs; made when a shader asks)."""
+        return _wrap32(self._start)
 
     def _column_texture(self, runs, texture, column, t0, t1, rows):
         """Column runs at texture column ``column`` of a texture given as ``(base, pitch,
