@@ -76,10 +76,10 @@ class ClipWindows:
         # sector's edge is in one sector or the other depending on the column); a column
         # with no piece at all looks out of the map: nothing there to hide a thing
         self.start = np.full(view.width, -1, dtype=np.int64)
-        first = np.searchsorted(drawsegs.col, np.arange(view.width))
-        has = first < len(drawsegs.col)
-        has[has] = drawsegs.col[first[has]] == np.flatnonzero(has)
-        self.start[has] = piece_near[drawsegs.piece[first[has]]]
+        if len(drawsegs.col):                 # each column's first entry (sorted by column)
+            first = np.ones(len(drawsegs.col), dtype=bool)
+            np.not_equal(drawsegs.col[1:], drawsegs.col[:-1], out=first[1:])
+            self.start[drawsegs.col[first]] = piece_near[drawsegs.piece[first]]
         # one sorted key: column, then depth (1/(1+w) grows with depth, stays in [0, 1))
         key = drawsegs.col + 1.0 / (1.0 + drawsegs.w)
         self.key = np.maximum.accumulate(key) if len(key) else key
