@@ -88,7 +88,7 @@ def front_to_back_runs(tables, view, e, codes, parts=None):
     n_entries = len(e.col)
     sentinel = _sentinels(width, height)
     col = np.concatenate([e.col, sentinel.col])
-    order = np.argsort(col, kind="stable")            # by column, then walk order
+    order = col.argsort(kind="stable")                # by column, then walk order
     col = col[order]
     bounds = np.concatenate([e.bounds, sentinel.bounds], axis=1).take(order, axis=1)
     top, bottom = column_windows(col, bounds[1], bounds[2], height)
@@ -97,7 +97,7 @@ def front_to_back_runs(tables, view, e, codes, parts=None):
     # part lengths: ceiling [top, p1), upper [p1, u), lower [l, fl), floor [fl, bottom)
     lengths = np.stack([p1 - top, u - p1, fl - lo, bottom - fl])
     per_col = np.bincount(col, minlength=width)
-    group = (np.cumsum(per_col) - per_col)[col]
+    group = (per_col.cumsum() - per_col)[col]
     top_slot = 4 * group + 2 * (np.arange(len(col), dtype=np.int64) - group)
     bottom_slot = 8 * group + 4 * per_col[col] - 2 - top_slot
     slots = np.stack([top_slot, top_slot + 1, bottom_slot, bottom_slot + 1])

@@ -56,9 +56,9 @@ def composite(slices: Slices, atlas, colour_columns, height) -> Overlay:
     last_row = tex_height[slices.slot] - 1
     base = offset[slices.slot] + slices.tx * (last_row + 1)
     first_pixel = slices.col * height
-    shift = np.cumsum(counts) - counts - slices.top
+    shift = counts.cumsum() - counts - slices.top
     # one entry per pixel, slices in their order (int64: numpy indexes with it as is)
-    which = np.repeat(np.arange(len(counts)), counts)
+    which = np.arange(len(counts)).repeat(counts)
     row = np.arange(len(which)) - shift[which]
     ty = (slices.t0[which] + row * slices.tstep[which]).astype(np.int64)   # >= 0: trunc = floor
     texel = base[which] + np.minimum(ty, last_row[which])                    # rounding at the foot

@@ -34,7 +34,7 @@ class Entries:
         keys = table[:, 0].astype(np.int64)
         c1 = table[:, 3].astype(np.int64)
         counts = table[:, 4].astype(np.int64) - c1
-        first = np.cumsum(counts) - counts
+        first = counts.cumsum() - counts
         n = int(counts.sum())
         self.keys, self.counts, self.first = keys, counts, first
         self.col = np.arange(n, dtype=np.int64) - (first - c1).repeat(counts)

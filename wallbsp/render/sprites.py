@@ -111,9 +111,8 @@ def sprite_slices(view, state, things, ids, clip, atlas, light=True):
     else:
         level = np.full(len(ids), FULL_BRIGHT, dtype=np.int64)
     # one entry per (thing, column)
-    sprite = np.repeat(np.arange(len(ids)), counts)
-    col = np.arange(len(sprite), dtype=np.int64) - np.repeat(np.cumsum(counts) - counts - c1,
-                                                             counts)
+    sprite = np.arange(len(ids)).repeat(counts)
+    col = np.arange(len(sprite), dtype=np.int64) - (counts.cumsum() - counts - c1).repeat(counts)
     d = depth[sprite]
     tx = np.floor(view.u[col] * d - (along - left)[sprite]).astype(np.int64)
     tx = np.minimum(np.maximum(tx, 0), width[sprite] - 1)

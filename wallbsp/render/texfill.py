@@ -218,7 +218,7 @@ class RunSurfaces:
         self.kxy[1, runs] = -(fz * (view.fy + ray * view.ry))
         plane = 2 * sector + ceiling
         present = np.bincount(plane, minlength=2 * len(heights.floor)) > 0  # no sort needed
-        self.plane_row0[runs] = (np.cumsum(present) - 1)[plane] * view.height
+        self.plane_row0[runs] = (present.cumsum() - 1)[plane] * view.height
         ids = np.flatnonzero(present)
         self.plane_levels = _plane_levels(tex, heights, state, view, ids, self.light).reshape(-1)
 
@@ -344,7 +344,7 @@ def _column_addresses(s: RunSurfaces, lengths, starts, height):
     jump[1:] -= at_last[:-1]
     t = step.repeat(lengths)
     t[starts] = jump
-    np.cumsum(t, out=t)
+    t.cumsum(out=t)
     t >>= FIX
     return t
 
@@ -365,7 +365,7 @@ def fill_textured(tables, tex, heights, state, view, e, light=True):
     runs, windows = front_to_back_runs(tables, view, e, None, entry_parts(tables, tex, e))
     s = RunSurfaces(tables, tex, heights, state, view, e, _PartRuns(runs), light)
     lengths = runs.lengths
-    starts = np.cumsum(lengths) - lengths
+    starts = lengths.cumsum() - lengths
     t = _column_addresses(s, lengths, starts, height)
     colour = lit(tex, t, s.level.repeat(lengths), out=t)
     for shape in (1, 2):
@@ -376,7 +376,7 @@ def fill_textured(tables, tex, heights, state, view, e, light=True):
             # pixel k of the batch is k plus its run's start less the pixels of the runs
             # before it; its row, that less its column's first pixel
             start = starts[chosen]
-            pixel = (start - (np.cumsum(counts) - counts)).repeat(counts)
+            pixel = (start - (counts.cumsum() - counts)).repeat(counts)
             pixel += np.arange(n, dtype=np.int64)
             row = (start % height - start).repeat(counts)
             row += pixel
