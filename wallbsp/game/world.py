@@ -34,6 +34,7 @@ import numpy as np
 
 from ..queries import (MAX_COORDINATE, PLAYER_HEIGHT, PLAYER_RADIUS, segs_near,
                        standing_heights, use_target, walls_crossed)
+from ..resources import shared_resources
 from ..segments import closest_point
 from ..thingtypes import SHOOTABLE
 from ..world import WorldState
@@ -325,9 +326,8 @@ class World:
         """Height of wall texture ``name`` from the level's resources (0: unknown), for the
         floors that rise by the shortest lower texture."""
         if self._textures is None:
-            from ..resources import ResourceSet
             try:
-                self._textures = ResourceSet.from_level(self.level)
+                self._textures = shared_resources(self.level.resource_paths())
             except Exception:              # noqa: BLE001 - no textures: heights unknown
                 self._textures = False
         if not self._textures:
