@@ -92,16 +92,17 @@ class ClipWindows:
         if self._pending is not None:
             self._prepare()
         height = self.view.height
-        top = np.zeros(len(col), dtype=np.int64)
-        bottom = np.full(len(col), height, dtype=np.int64)
-        beyond = self.start[col]
         if len(self.key):
             last = np.searchsorted(self.key, col + depth / (1.0 + depth), side="left") - 1
-            found = last >= 0
-            found[found] = self.col[last[found]] == col[found]
-            at = last[found]
-            top[found], bottom[found] = self.open_top[at], self.open_bottom[at]
-            beyond[found] = self.far[at]
+            at = np.maximum(last, 0)
+            found = (last >= 0) & (self.col[at] == col)       # a nearer piece in the column
+            top = np.where(found, self.open_top[at], 0)
+            bottom = np.where(found, self.open_bottom[at], height)
+            beyond = np.where(found, self.far[at], self.start[col])
+        else:
+            top = np.zeros(len(col), dtype=np.int64)
+            bottom = np.full(len(col), height, dtype=np.int64)
+            beyond = self.start[col]
         other = (beyond >= 0) & (beyond != own_sector)
         if other.any():
             sector, d = beyond[other], depth[other]
