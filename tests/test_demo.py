@@ -64,6 +64,18 @@ def test_walk_record_then_play_json(tmp_path, capsys):
     assert (tmp_path / "end.png").stat().st_size > 0
 
 
+def test_walk_records_its_skill_and_refuses_one_out_of_range(tmp_path, capsys):
+    level_path, demo_path = tmp_path / "level.json", tmp_path / "hard.json"
+    save_level(door_level(), level_path)
+    assert main(["walk", str(level_path), "--frames", "2", "--skill", "4",
+                 "--record", str(demo_path)]) == 0
+    assert json.loads(demo_path.read_text())["skill"] == 4
+    capsys.readouterr()
+    assert main(["walk", str(level_path), "--frames", "2", "--skill", "6"]) == 2
+    err = capsys.readouterr().err
+    assert err.count("\n") == 1 and "--skill" in err
+
+
 def _demo_text(level, tics):
     return dumps_demo(Demo(demo_for(level).level_sha256, 3, tics))
 

@@ -100,8 +100,8 @@ class Walkthrough:
     partitions: list = None          # partition_pieces, computed on first use
 
     @classmethod
-    def at_start(cls, tree, size=(320, 200), window=(960, 600), **options):
-        return cls(World(tree), tuple(size), tuple(window), **options)
+    def at_start(cls, tree, size=(320, 200), window=(960, 600), skill=3, **options):
+        return cls(World(tree, skill), tuple(size), tuple(window), **options)
 
     @property
     def tree(self):
@@ -116,15 +116,16 @@ class Walkthrough:
 
 def run_walkthrough(tree, *, size=(320, 200), window=(960, 600), frames=None, turn=0.0,
                     screenshot=None, max_fps=None, order="front_to_back", fov=90.0,
-                    demo=None, next_level=None) -> Summary:
+                    demo=None, next_level=None, skill=3) -> Summary:
     """Walk ``tree`` in a window; with ``frames=N`` render N frames headless and return the
     summary.  ``screenshot``: save the last frame (internal resolution) as a PNG.
-    ``demo``: record the tics into it; ``next_level(exit)``: the tree to go on to."""
+    ``demo``: record the tics into it; ``next_level(exit)``: the tree to go on to;
+    ``skill``: DOOM's skill 1-5 (which things are there; a demo records it)."""
     if frames is None:
         check_display()
     elif no_window_system():
         os.environ["SDL_VIDEODRIVER"] = "dummy"
-    walk = Walkthrough.at_start(tree, size, window, order=order, fov=fov, demo=demo,
+    walk = Walkthrough.at_start(tree, size, window, skill, order=order, fov=fov, demo=demo,
                                 next_level=next_level)
     open_display(walk)
     try:
@@ -318,7 +319,8 @@ def leave_level(walk):
     following = walk.next_level(kind) if walk.next_level is not None else None
     tree = following if following is not None else walk.world.tree
     where = tree.level.name if following is not None else "the level again"
-    walk.world, walk.previous, walk.demo, walk.seen_message = World(tree), None, None, 0
+    skill = walk.world.skill
+    walk.world, walk.previous, walk.demo, walk.seen_message = World(tree, skill), None, None, 0
     walk.map_cache, walk.partitions = (None, None), None
     say(walk, f"Level exited ({kind} exit): {where}", EXIT_SECONDS)
     if walk.display is not None:

@@ -160,10 +160,10 @@ def cmd_walk(args):
         if args.frames is None:
             check_display()      # before the level is compiled: that may take a while
         tree = load_any(args.level, args, strict=args.strict)
-        demo = demo_for(tree.level) if args.record else None
+        demo = demo_for(tree.level, args.skill) if args.record else None
         summary = run_walkthrough(tree, size=args.size, frames=args.frames, turn=args.turn,
                                   screenshot=args.screenshot, max_fps=args.max_fps, demo=demo,
-                                  next_level=_next_level(args.level, args))
+                                  next_level=_next_level(args.level, args), skill=args.skill)
     except NoDisplayError as err:
         raise UsageError(str(err)) from None
     if demo is not None:

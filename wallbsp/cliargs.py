@@ -132,6 +132,8 @@ def build_parser(commands) -> argparse.ArgumentParser:
                    help="frame cap (default: none)")
     p.add_argument("--record", metavar="DEMO",
                    help="write the inputs of every tic on the first level to this demo (JSON)")
+    p.add_argument("--skill", type=_bounded(1, 5, _integer, "a whole number"), default=3,
+                   help="DOOM's skill, 1-5: which of the level's things are there (default 3)")
     _finish(p, commands["walk"])
 
     p = sub.add_parser("play", help="replay a demo headless and print the final state")
