@@ -97,6 +97,19 @@ def test_an_exit_starts_the_level_again(opened):
     assert walk.world.exited is None and "exit" in walk.message
 
 
+def test_a_dead_player_presses_use_to_start_the_level_again(opened):
+    walk = opened(compile_level(corridor([room(special=7), room()])))   # 5 damage a 32 tics
+    first = walk.world
+    first.inventory.health = 1
+    frames(walk, 40)
+    assert first.dead and "Press E" in walk.message and walk.world is first
+    pygame.event.post(pygame.event.Event(pygame.KEYDOWN, key=pygame.K_e, mod=0))
+    pygame.event.post(pygame.event.Event(pygame.KEYUP, key=pygame.K_e, mod=0))
+    frames(walk, 3)
+    assert walk.world is not first and walk.world.tree is first.tree
+    assert not walk.world.dead and walk.world.skill == first.skill
+
+
 def test_an_exit_goes_on_to_the_next_level_and_stops_recording(opened):
     walk = opened(exit_tree(special=124))
     other = door_tree()

@@ -307,10 +307,14 @@ def run_tic(walk, inputs):
         walk.demo.record(*inputs)
     messages = walk.world.messages
     if messages and messages[-1][0] >= walk.seen_message:
-        say(walk, messages[-1][1])
+        dead = walk.world.dead
+        say(walk, messages[-1][1] + (" Press E to start again." if dead else ""))
         walk.seen_message = messages[-1][0] + 1
     if walk.world.exited:
         leave_level(walk)
+    elif walk.world.dead and inputs[3]:
+        # DOOM's single player: use after death starts the level again
+        start_level(walk, walk.world.tree, "The level again")
 
 
 def leave_level(walk):
@@ -319,10 +323,16 @@ def leave_level(walk):
     following = walk.next_level(kind) if walk.next_level is not None else None
     tree = following if following is not None else walk.world.tree
     where = tree.level.name if following is not None else "the level again"
+    start_level(walk, tree, f"Level exited ({kind} exit): {where}")
+
+
+def start_level(walk, tree, text):
+    """A fresh World of ``tree`` at the same skill (the recording stops: a demo is one
+    level from its start), and ``text`` said."""
     skill = walk.world.skill
     walk.world, walk.previous, walk.demo, walk.seen_message = World(tree, skill), None, None, 0
     walk.map_cache, walk.partitions = (None, None), None
-    say(walk, f"Level exited ({kind} exit): {where}", EXIT_SECONDS)
+    say(walk, text, EXIT_SECONDS)
     if walk.display is not None:
         show_caption(walk)
 
