@@ -68,7 +68,7 @@ from .world import state_of
 
 __all__ = ["PLAYER_RADIUS", "MAX_STEP", "PLAYER_HEIGHT", "MAX_COORDINATE", "move",
            "floor_z", "ceiling_z", "standing_heights", "line_of_sight", "walls_crossed",
-           "use_target", "USE_RANGE", "segs_near"]
+           "use_target", "USE_RANGE", "segs_near", "sectors_overlapped"]
 
 PLAYER_RADIUS = 16
 MAX_STEP = 24
@@ -292,14 +292,32 @@ def standing_heights(source, x, y, radius=PLAYER_RADIUS):
     if sector is None:
         return None
     bottom, top = heights.floors[sector], heights.ceilings[sector]
+    for wall in _two_sided_overlapped(geo, x, y, radius):
+        low, high = heights.opening(geo, wall)
+        bottom, top = max(bottom, low), min(top, high)
+    return bottom, top
+
+
+def sectors_overlapped(source, x, y, radius=PLAYER_RADIUS) -> set:
+    """Both sectors of every two-sided wall a circle at (x, y) overlaps: with the sector
+    under its centre, all that ``standing_heights`` there depends on."""
+    x, y = _point("sectors_overlapped: point", x, y)
+    _finite("sectors_overlapped: radius", radius)
+    _tree, geo, _heights = _world(source)
+    found = set()
+    for wall in _two_sided_overlapped(geo, x, y, radius):
+        found.update((geo.front[wall], geo.back[wall]))
+    return found
+
+
+def _two_sided_overlapped(geo, x, y, radius):
+    """The two-sided walls (one per seg, so maybe repeated) a circle at (x, y) overlaps."""
     for seg in _segs_near(geo, x, y, x, y, radius):
         wall = geo.seg_wall[seg]
         if geo.back[wall] >= 0:
             qx, qy = closest_point(x, y, *geo.seg_xy[seg])
             if math.hypot(x - qx, y - qy) < radius:
-                low, high = heights.opening(geo, wall)
-                bottom, top = max(bottom, low), min(top, high)
-    return bottom, top
+                yield wall
 
 
 # -- sight ----------------------------------------------------------------------------------------

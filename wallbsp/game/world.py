@@ -32,10 +32,9 @@ from collections import deque
 
 import numpy as np
 
-from ..queries import (MAX_COORDINATE, PLAYER_HEIGHT, PLAYER_RADIUS, segs_near,
+from ..queries import (MAX_COORDINATE, PLAYER_HEIGHT, PLAYER_RADIUS, sectors_overlapped,
                        standing_heights, use_target, walls_crossed)
 from ..resources import shared_resources
-from ..segments import closest_point
 from ..thingtypes import SHOOTABLE
 from ..world import WorldState
 from .inventory import Inventory
@@ -309,16 +308,10 @@ class World:
         p = self.player
         if self._touching is not None and self._touching[0] == (p.x, p.y):
             return self._touching[1]
-        found = set()
+        found = sectors_overlapped(self.state, p.x, p.y, PLAYER_RADIUS)
         centre = self._sector_under()
         if centre is not None:
             found.add(centre)
-        tree, walls = self.tree, self.level.walls
-        for seg in segs_near(self.state, p.x, p.y, PLAYER_RADIUS):
-            wall = walls[int(tree.seg_wall[seg])]
-            if wall.back is not None and _distance_to_seg(p.x, p.y, tree.seg_xy[seg]) \
-                    < PLAYER_RADIUS:
-                found.update((wall.front, wall.back))
         self._touching = ((p.x, p.y), tuple(sorted(found)))
         return self._touching[1]
 
@@ -337,11 +330,6 @@ class World:
         except Exception:                  # noqa: BLE001 - a damaged texture: unknown
             return 0
         return 0 if picture is None else picture.height
-
-
-def _distance_to_seg(x, y, seg) -> float:
-    qx, qy = closest_point(x, y, *(float(v) for v in seg))
-    return math.hypot(x - qx, y - qy)
 
 
 def _number(name, value, limit) -> float:
