@@ -208,9 +208,7 @@ def _save_view(world, path, size):
 def cmd_import_wad(args):
     from . import levelio, wad
     check_outputs("import-wad", [args.output], [args.wad])
-    level = wad.load_wad_level(args.wad, args.map, strict=args.strict)
-    for warning in level.warnings:
-        print(f"warning: {warning}", file=sys.stderr)
+    level = _warned(wad.load_wad_level(args.wad, args.map, strict=args.strict))
     levelio.save_level(level, args.output)
     print(f"{args.output}: {len(level.walls)} walls, {len(level.sectors)} sectors")
 
