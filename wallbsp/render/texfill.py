@@ -23,7 +23,7 @@ import numpy as np
 from .fill import front_to_back_runs, row_numbers
 from .frame import KIND_CEILING, KIND_FLOOR, KIND_NOTHING, KIND_WALL
 from .painter import PainterRuns, paint_runs
-from .shading import FULL_BRIGHT, LIGHT_DISTANCE, far_level, light_levels
+from .shading import FULL_BRIGHT, far_level, light_levels
 from .tables import key_light
 from .textures import FLAT_SIDE, UNLIT
 
