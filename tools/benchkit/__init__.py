@@ -9,8 +9,8 @@ Shared parts:
   freedoom   the Freedoom maps: which there are, their lumps, importing them
   walk       where a camera stands, and the scripted walk through a map
 One module per experiment: table1, builders, gordon_chen, maps, compile_targets,
-render_targets, memory, resources, compare (compare_run: one round of it, in the other
-checkout).
+render_targets, memory, resources, things, compare (compare_run: one round of it, in the
+other checkout).
 """
 import importlib.util
 import sys
