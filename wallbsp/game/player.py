@@ -37,7 +37,7 @@ from ..camera import EYE_HEIGHT, Camera
 from ..geometry import direction
 from ..queries import PLAYER_HEIGHT, move, standing_heights
 
-__all__ = ["Player", "TICRATE", "spawn_player", "player_tic", "walk_by"]
+__all__ = ["Player", "TICRATE", "spawn_player", "player_tic", "walk_by", "place_eye"]
 
 TICRATE = 35                        # tics a second
 FRACUNIT = 65536.0                  # DOOM's fixed-point one, to read its constants
@@ -77,7 +77,7 @@ def spawn_player(source, x, y, angle) -> Player:
     player = Player(float(x), float(y), 0.0, float(angle) % 360.0)
     _find_heights(source, player)
     player.z = player.floor
-    _place_eye(player)
+    place_eye(player)
     return player
 
 
@@ -95,7 +95,7 @@ def player_tic(source, player: Player, forward=0.0, strafe=0.0, turn=0.0, run=Fa
     _fall_or_step(player)
     if player.z <= player.floor:
         _ease_view(player)
-    _place_eye(player)
+    place_eye(player)
 
 
 def walk_by(source, player: Player, dx, dy) -> None:
@@ -104,7 +104,7 @@ def walk_by(source, player: Player, dx, dy) -> None:
     _find_heights(source, player)
     player.z, player.momz = player.floor, 0.0
     player.view_height, player.view_delta = EYE_HEIGHT, 0.0
-    _place_eye(player)
+    place_eye(player)
 
 
 # -- the steps of a tic -------------------------------------------------------------------------
@@ -191,6 +191,7 @@ def _ease_view(player):
         player.view_delta += 0.25
 
 
-def _place_eye(player):
+def place_eye(player):
+    """The eye at ``z + view_height``, kept ``CEILING_GAP`` under the ceiling."""
     eye = player.z + player.view_height
     player.eye = min(eye, max(player.ceiling - CEILING_GAP, player.z + 1.0))

@@ -39,7 +39,7 @@ from ..thingtypes import SHOOTABLE
 from ..world import WorldState
 from .inventory import Inventory
 from .pickups import touch_pickups
-from .player import CEILING_GAP, player_tic, spawn_player
+from .player import place_eye, player_tic, spawn_player
 from .rules import Rules
 
 __all__ = ["World", "MAX_TURN", "MESSAGE_LOG", "SKILLS"]
@@ -272,7 +272,7 @@ class World:
             p.z = p.floor
         elif p.z + PLAYER_HEIGHT > p.ceiling:
             p.z = max(p.floor, p.ceiling - PLAYER_HEIGHT)
-        p.eye = min(p.z + p.view_height, max(p.ceiling - CEILING_GAP, p.z + 1.0))
+        place_eye(p)
 
     def _say(self, text: str) -> None:
         self.messages.append((self.tic_count, text))
