@@ -74,9 +74,8 @@ class Quick:
     it, e.g. a float height, or says what is wrong)."""
 
     def __init__(self, check: Checker, version: int):
-        self.check_color = check.is_color
-        self.colors: set[str] = set()       # colours and names seen to be good: a map
-        self.names: set[str] = set()        # uses few of them, many times
+        self.is_color = check.is_color      # it keeps the colours seen to be good
+        self.names: set[str] = set()        # names seen to be good: a map uses few, many times
         self.sides: dict[tuple, Side] = {}  # sides seen, by their items: most repeat
         self.wall_keys = frozenset(WALL_KEYS if version == 1 else WALL_KEYS_2)
         self.sector_keys = frozenset(SECTOR_KEYS if version == 1 else SECTOR_KEYS_2)
@@ -135,14 +134,6 @@ class Quick:
                 and _is_offset(values["x_offset"]) and _is_offset(values["y_offset"])):
             return None
         return _new(Side, values)
-
-    def is_color(self, value: Any) -> bool:
-        if type(value) is str and value in self.colors:
-            return True
-        if not self.check_color(value):
-            return False
-        self.colors.add(value)
-        return True
 
     def sector(self, item: Any) -> Sector | None:
         if type(item) is not dict or not item.keys() <= self.sector_keys:
