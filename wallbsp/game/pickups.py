@@ -12,14 +12,13 @@
 """
 from __future__ import annotations
 
+from ..queries import PLAYER_HEIGHT, PLAYER_RADIUS
 from ..thingtypes import COUNTITEM, SOLID, SPECIAL
 from .inventory import BLUE, GREEN, Inventory
 
 __all__ = ["PLAYER_RADIUS", "PLAYER_HEIGHT", "BELOW_REACH", "pick_up", "touch_pickups",
            "blocked_at"]
 
-PLAYER_RADIUS = 16
-PLAYER_HEIGHT = 56
 BELOW_REACH = 8          # an item this far below the feet can still be picked up
 
 
