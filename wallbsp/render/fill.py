@@ -13,7 +13,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .frame import KIND_CEILING, KIND_FLOOR, KIND_NOTHING, KIND_WALL
+from .frame import KIND_CEILING, KIND_FLOOR, KIND_NOTHING, KIND_WALL, size_table
 from .shading import plane_stripes, wall_codes
 from .tables import key_light
 
@@ -135,12 +135,7 @@ _SENTINELS: dict = {}
 
 
 def _sentinels(width, height) -> _Sentinels:
-    found = _SENTINELS.get((width, height))
-    if found is None:
-        if len(_SENTINELS) > 8:
-            _SENTINELS.clear()
-        found = _SENTINELS[(width, height)] = _Sentinels(width, height)
-    return found
+    return size_table(_SENTINELS, (width, height), lambda: _Sentinels(width, height))
 
 
 _PART_KINDS = np.array([[KIND_CEILING], [KIND_WALL], [KIND_WALL], [KIND_FLOOR]], dtype=np.uint8)
@@ -173,13 +168,8 @@ _ROWS_CACHE: dict = {}
 
 def row_numbers(width, height):
     """Row of every pixel of a column-major ``(width, height)`` frame, flat, int64."""
-    key = (width, height)
-    rows = _ROWS_CACHE.get(key)
-    if rows is None:
-        if len(_ROWS_CACHE) > 8:
-            _ROWS_CACHE.clear()
-        rows = _ROWS_CACHE[key] = np.tile(np.arange(height, dtype=np.int64), width)
-    return rows
+    return size_table(_ROWS_CACHE, (width, height),
+                      lambda: np.tile(np.arange(height, dtype=np.int64), width))
 
 
 def colour_columns(stripes, pixel_stripe_rows, width, height):

@@ -1,4 +1,4 @@
-"""The rendered frame (SPEC §5) and saving its id buffers."""
+"""The rendered frame (SPEC §5), saving its id buffers, and the per-frame-size table cache."""
 from __future__ import annotations
 
 import io
@@ -7,10 +7,21 @@ import numpy as np
 
 from ..files import write_atomically
 
-__all__ = ["Frame", "save_ids", "KIND_NOTHING", "KIND_WALL", "KIND_FLOOR", "KIND_CEILING",
-           "KIND_THING"]
+__all__ = ["Frame", "save_ids", "size_table", "KIND_NOTHING", "KIND_WALL", "KIND_FLOOR",
+           "KIND_CEILING", "KIND_THING"]
 
 KIND_NOTHING, KIND_WALL, KIND_FLOOR, KIND_CEILING, KIND_THING = 0, 1, 2, 3, 4
+
+
+def size_table(cache: dict, key, make):
+    """``cache[key]``, made by ``make()`` the first time: a table for one frame size.  The
+    cache is emptied when it holds more than 8, as only a few sizes are ever in use."""
+    table = cache.get(key)
+    if table is None:
+        if len(cache) > 8:
+            cache.clear()
+        table = cache[key] = make()
+    return table
 
 
 class Frame:

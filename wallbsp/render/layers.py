@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .frame import KIND_CEILING, KIND_FLOOR, KIND_WALL
+from .frame import KIND_CEILING, KIND_FLOOR, KIND_WALL, size_table
 
 __all__ = ["RunLayers"]
 
@@ -75,12 +75,9 @@ _INVERSE_ROWS: dict = {}
 
 def _inverse_rows(y0, width, height):
     """``1 / |y0 - row|`` of every pixel of a column-major frame (inf on the horizon)."""
-    key = (y0, width, height)
-    table = _INVERSE_ROWS.get(key)
-    if table is None:
+    def make():
         with np.errstate(divide="ignore"):
             rows = 1.0 / np.abs(y0 - np.arange(height, dtype=np.float64))
-        if len(_INVERSE_ROWS) > 8:
-            _INVERSE_ROWS.clear()
-        table = _INVERSE_ROWS[key] = np.tile(rows, width)
-    return table
+        return np.tile(rows, width)
+
+    return size_table(_INVERSE_ROWS, (y0, width, height), make)

@@ -21,7 +21,7 @@ from functools import cached_property
 import numpy as np
 
 from .fill import front_to_back_runs, row_numbers
-from .frame import KIND_CEILING, KIND_FLOOR, KIND_NOTHING, KIND_WALL
+from .frame import KIND_CEILING, KIND_FLOOR, KIND_NOTHING, KIND_WALL, size_table
 from .painter import PainterRuns, paint_runs
 from .shading import FULL_BRIGHT, far_level, light_levels
 from .tables import key_light
@@ -242,15 +242,11 @@ _ROW_TABLES: dict = {}
 
 def _inverse_rows(view):
     """``1 / (y0 - row)`` per screen row (inf at a row through the horizon)."""
-    key = view.height
-    table = _ROW_TABLES.get(key)
-    if table is None:
+    def make():
         with np.errstate(divide="ignore"):
-            table = 1.0 / (view.y0 - np.arange(view.height, dtype=np.float64))
-        if len(_ROW_TABLES) > 8:
-            _ROW_TABLES.clear()
-        _ROW_TABLES[key] = table
-    return table
+            return 1.0 / (view.y0 - np.arange(view.height, dtype=np.float64))
+
+    return size_table(_ROW_TABLES, view.height, make)
 
 
 def shade_columns(s: RunSurfaces, run, row):
