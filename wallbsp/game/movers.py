@@ -20,20 +20,21 @@ from __future__ import annotations
 import enum
 from dataclasses import dataclass
 
+from ..thingtypes import TIC_RATE
+
 __all__ = ["Move", "move_plane", "DoorKind", "Door", "PlatKind", "PlatStatus", "Plat",
            "Floor", "CeilingKind", "Ceiling",
            "DOOR_SPEED", "DOOR_WAIT", "PLAT_SPEED", "PLAT_WAIT", "FLOOR_SPEED", "CEILING_SPEED",
            "CLOSE30_WAIT", "RAISE_IN_5_MINS_WAIT"]
 
-TICRATE = 35
 DOOR_SPEED = 2.0           # VDOORSPEED; blazing doors move 4 times as fast
 DOOR_WAIT = 150            # VDOORWAIT: tics a door stays open
 PLAT_SPEED = 1.0           # PLATSPEED; lifts move at 4x (8x blazing)
-PLAT_WAIT = 3 * TICRATE    # tics a lift waits at the bottom (and a perpetual one at either end)
+PLAT_WAIT = 3 * TIC_RATE    # tics a lift waits at the bottom (and a perpetual one at either end)
 FLOOR_SPEED = 1.0
 CEILING_SPEED = 1.0
-CLOSE30_WAIT = 30 * TICRATE
-RAISE_IN_5_MINS_WAIT = 5 * 60 * TICRATE
+CLOSE30_WAIT = 30 * TIC_RATE
+RAISE_IN_5_MINS_WAIT = 5 * 60 * TIC_RATE
 
 
 class Move(enum.Enum):

@@ -36,10 +36,10 @@ from dataclasses import dataclass
 from ..camera import EYE_HEIGHT, Camera
 from ..geometry import direction
 from ..queries import PLAYER_HEIGHT, move, standing_heights
+from ..thingtypes import TIC_RATE as TICRATE   # tics a second
 
 __all__ = ["Player", "TICRATE", "spawn_player", "player_tic", "walk_by", "place_eye"]
 
-TICRATE = 35                        # tics a second
 FRACUNIT = 65536.0                  # DOOM's fixed-point one, to read its constants
 WALK_THRUST = 25 * 2048 / FRACUNIT  # forwardmove[0] * 2048: 0.78125 units a tic, per tic
 STRAFE_THRUST = 24 * 2048 / FRACUNIT  # sidemove[0] * 2048
