@@ -26,7 +26,9 @@ from __future__ import annotations
 import gymnasium as gym
 import numpy as np
 
+from ..game.player import TICRATE
 from ..game.world import World
+from ..queries import PLAYER_RADIUS
 from ..render import render
 from . import actions
 from .observations import (VIEW_KEYS, Automap, check_observations, observation_space,
@@ -34,9 +36,7 @@ from .observations import (VIEW_KEYS, Automap, check_observations, observation_s
 
 __all__ = ["WallbspEnv", "DEFAULT_OBSERVATIONS", "TICRATE"]
 
-TICRATE = 35
 DEFAULT_OBSERVATIONS = ("rgb", "depth", "labels", "pose")
-PLAYER_RADIUS = 16.0            # the automap marker's circle
 
 
 class WallbspEnv(gym.Env):
@@ -47,7 +47,7 @@ class WallbspEnv(gym.Env):
     frame drawn for the last observation (None when none was drawn)."""
 
     metadata = {"render_modes": ["rgb_array", "human"], "render_fps": TICRATE}
-    default_max_tics = 35 * 60
+    default_max_tics = TICRATE * 60
 
     def __init__(self, size=(160, 120), frame_skip: int = 1, fov: float = 90.0,
                  textures: bool = True, observations=DEFAULT_OBSERVATIONS, max_tics=None,

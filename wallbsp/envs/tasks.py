@@ -26,19 +26,19 @@ from __future__ import annotations
 
 import numpy as np
 
-from .base import WallbspEnv
+from ..queries import PLAYER_RADIUS
+from .base import TICRATE, WallbspEnv
 from .levels import generated_tree, given_tree
 
 __all__ = ["ExitEnv", "ExploreEnv", "FindEnv"]
 
 SEED_RANGE = 2 ** 31
-PLAYER_RADIUS = 16.0
 
 
 class ExitEnv(WallbspEnv):
     """Reach the exit of a given level (module docstring)."""
 
-    default_max_tics = 35 * 120
+    default_max_tics = TICRATE * 120
 
     def __init__(self, level=None, tic_cost: float = 1e-4, **options):
         if level is None:
