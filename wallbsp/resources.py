@@ -108,7 +108,7 @@ class ResourceSet:
     def has(self, kind: str, name: str) -> bool:
         """Whether a source holds ``name`` in namespace ``kind`` (nothing is decoded)."""
         name = name.upper()
-        return any(_guard(s, lambda: s.has(kind, name)) for s in self._usable())
+        return any(_guard(lambda: s.has(kind, name)) for s in self._usable())
 
     def sky(self, level: Level) -> Picture | None:
         return self.wall(level.sky or sky_name(level.name))
@@ -118,13 +118,13 @@ class ResourceSet:
         R_InstallSpriteLump naming: ``POSSA1``, ``POSSA2A8`` (A8 mirrored), ``POSSA0`` for
         every rotation), from the first source that has it; None when none has."""
         if self._sprite_frames is None:
-            self._sprite_frames = [_guard(s, lambda: _sprite_frames(s.names("sprite")))
+            self._sprite_frames = [_guard(lambda: _sprite_frames(s.names("sprite")))
                                    for s in self._usable()]
         sprite, frame = sprite.upper(), frame.upper()
         for source, frames in zip(self._usable(), self._sprite_frames):
             found = frames.get((sprite, frame, rotation)) or frames.get((sprite, frame, 0))
             if found:
-                return _guard(source, lambda: source.picture("sprite", found[0])), found[1]
+                return _guard(lambda: source.picture("sprite", found[0])), found[1]
         return None
 
     @property
@@ -163,14 +163,14 @@ class ResourceSet:
         key = (kind, name.upper())
         if key not in self._found:
             self._found[key] = next(
-                (p for p in (_guard(s, lambda: s.picture(*key)) for s in self._usable())
+                (p for p in (_guard(lambda: s.picture(*key)) for s in self._usable())
                  if p is not None), None)
         return self._found[key]
 
     def _first_table(self, which: str):
         if which not in self._tables:
             self._tables[which] = next(
-                (t for t in (_guard(s, lambda: getattr(s, which)) for s in self.sources)
+                (t for t in (_guard(lambda: getattr(s, which)) for s in self.sources)
                  if t is not None), None)
         return self._tables[which]
 
@@ -213,7 +213,7 @@ def _stamp(path: Path):
     return (st.st_ino, st.st_size, st.st_mtime_ns, st.st_ctime_ns)
 
 
-def _guard(source, call):
+def _guard(call):
     """``call()``, with the archive's errors (a LevelError naming the WAD) as ResourceErrors."""
     try:
         return call()
@@ -230,7 +230,7 @@ def _open_source(path: Path):
         raise ResourceError(f"{path}: cannot read: no such file or folder")
     if not path.is_file():
         raise ResourceError(f"{path}: not a WAD file or a folder of PNG images")
-    return _WadSource(_guard(None, lambda: wad_textures(path)))
+    return _WadSource(_guard(lambda: wad_textures(path)))
 
 
 class _WadSource:
