@@ -56,7 +56,6 @@ from .wad.textures import BUDGET_BYTES, wad_textures
 __all__ = ["Picture", "PngFolder", "ResourceError", "ResourceSet", "forget_shared_resources",
            "shared_resources", "sky_name"]
 
-KINDS = ("wall", "flat", "sprite")
 SKY_FLAT = "F_SKY1"
 OPAQUE_ALPHA = 128
 MAX_NOTED = 20
