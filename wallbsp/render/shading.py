@@ -16,8 +16,8 @@ from __future__ import annotations
 import numpy as np
 
 __all__ = ["LIGHT_LEVELS", "LIGHT_DISTANCE", "FULL_BRIGHT", "far_level", "light_levels",
-           "hex_rgb", "pack_rgb", "unpack_rgb", "scaled_rgb", "lit_palette", "colour_table",
-           "code_colours", "plane_stripes", "wall_codes"]
+           "plane_levels", "hex_rgb", "pack_rgb", "unpack_rgb", "scaled_rgb", "lit_palette",
+           "colour_table", "code_colours", "plane_stripes", "wall_codes"]
 
 LIGHT_LEVELS = 32
 FULL_BRIGHT = LIGHT_LEVELS - 1
@@ -33,6 +33,16 @@ def light_levels(far, inverse_depth):
     """``floor(far + LIGHT_DISTANCE / depth)`` clamped to the 32 levels, int64."""
     level = np.floor(far + LIGHT_DISTANCE * inverse_depth)
     return np.clip(level, 0, LIGHT_LEVELS - 1).astype(np.int64)
+
+
+def plane_levels(view, floor, ceiling, light, sector, is_ceiling):
+    """``(planes, H)`` light levels of sector planes per screen row (DOOM lights flats by
+    row: one depth per row of a plane); ``is_ceiling`` picks each one's ceiling or floor."""
+    h = np.where(is_ceiling, ceiling[sector], floor[sector])
+    fz = np.abs(view.f * (h - view.z))
+    distance = np.abs(view.y0 - np.arange(view.height, dtype=np.float64))
+    inverse_depth = distance[None, :] / np.maximum(fz, 1e-9)[:, None]
+    return light_levels(far_level(light[sector])[:, None], inverse_depth)
 
 
 def hex_rgb(color: str):
@@ -105,12 +115,10 @@ def plane_stripes(tables, state, view, keys, light=True):
         plane = uniq[planes] - tables.plane_key_base
         sector = plane >> 1
         if light:
-            h = np.where(plane & 1, state.ceiling[sector], state.floor[sector])
-            fz = np.abs(view.f * (h - view.z))
-            den = np.abs(view.y0 - np.arange(height, dtype=np.float64))
-            inverse_depth = den[None, :] / np.maximum(fz, 1e-9)[:, None]
-            level = light_levels(far_level(state.light[sector])[:, None], inverse_depth)
-            level[(plane & 1).astype(bool) & tables.sector_sky[sector]] = FULL_BRIGHT
+            is_ceiling = (plane & 1).astype(bool)
+            level = plane_levels(view, state.floor, state.ceiling, state.light, sector,
+                                 is_ceiling)
+            level[is_ceiling & tables.sector_sky[sector]] = FULL_BRIGHT
         else:
             level = np.full((len(plane), height), FULL_BRIGHT, dtype=np.int64)
         codes = (tables.plane_base_surface + plane)[:, None] * LIGHT_LEVELS + level

@@ -23,7 +23,7 @@ import numpy as np
 from .fill import front_to_back_runs, row_numbers
 from .frame import KIND_CEILING, KIND_FLOOR, KIND_NOTHING, KIND_WALL, size_table
 from .painter import PainterRuns, paint_runs
-from .shading import FULL_BRIGHT, far_level, light_levels
+from .shading import FULL_BRIGHT, light_levels, plane_levels
 from .tables import key_light
 from .textures import FLAT_SIDE, UNLIT
 
@@ -228,12 +228,8 @@ def _plane_levels(tex, heights, state, view, planes, light):
     flats are lit by row: one depth per row of a plane)."""
     if not light:
         return np.full((len(planes), view.height), UNLIT * tex.n_colours, dtype=np.int64)
-    sector, ceiling = planes >> 1, (planes & 1).astype(bool)
-    h = np.where(ceiling, heights.ceiling[sector], heights.floor[sector])
-    fz = np.abs(view.f * (h - view.z))
-    distance = np.abs(view.y0 - np.arange(view.height, dtype=np.float64))
-    inverse_depth = distance[None, :] / np.maximum(fz, 1e-9)[:, None]
-    level = light_levels(far_level(state.light[sector])[:, None], inverse_depth)
+    level = plane_levels(view, heights.floor, heights.ceiling, state.light, planes >> 1,
+                         (planes & 1).astype(bool))
     return level * tex.n_colours
 
 
