@@ -16,8 +16,8 @@ drawn in its colour: a 1 × 1 texture for wall parts, a 64 × 64 block for plane
 
 The atlas and lut are made once per tree (``TexturePack``) with every texture the world can
 come to show, laid out from pictures packed once per resource set (``packing``: levels
-naming the same texture folder share them); per world state and texture change only the small tables are re-gathered
-(``LevelTextures``): per side key (``2*seg + back``) and part (0 upper, 1 middle, 2 lower)
+naming the same texture folder share them); per world state and texture change only the
+small tables are re-gathered (``LevelTextures``): per side key (``2*seg + back``) and part (0 upper, 1 middle, 2 lower)
 ``key_texture`` names the texture (-1: none: the part shows the plane behind it), with
 where the side's texture starts (S: v1 seen from the front, v2 from behind) and runs, its
 offsets and pegging.
