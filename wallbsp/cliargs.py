@@ -34,7 +34,7 @@ def _candidates(text: str):
     try:
         k = int(text)
     except ValueError:
-        raise argparse.ArgumentTypeError(f"expected a positive integer or 'all', not {text!r}")
+        k = 0                   # refused below, with the same line as a number below 1
     if k < 1:
         raise argparse.ArgumentTypeError(f"expected a positive integer or 'all', not {text!r}")
     return k
