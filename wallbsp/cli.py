@@ -222,10 +222,7 @@ def main(argv=None) -> int:
     try:
         args = build_parser(COMMANDS).parse_args(argv)
         args.func(args)
-    except (UsageError, OutputError) as err:
-        print(str(err), file=sys.stderr)
-        return 2
-    except LevelError as err:                        # TreeError is a LevelError too
+    except (UsageError, OutputError, LevelError) as err:   # TreeError is a LevelError too
         print(str(err), file=sys.stderr)
         return 2
     except OSError as err:
