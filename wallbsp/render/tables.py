@@ -18,7 +18,8 @@ import numpy as np
 
 from .shading import LIGHT_LEVELS, colour_table, far_level
 
-__all__ = ["TreeTables", "HeightTables", "tree_tables", "height_tables", "key_light"]
+__all__ = ["TreeTables", "HeightTables", "per_tree", "tree_tables", "height_tables",
+           "key_light"]
 
 
 class TreeTables:
@@ -114,15 +115,21 @@ def node_lists(tree) -> tuple[list, list, list]:
 _CACHE: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
 
 
+def per_tree(cache, tree, make):
+    """``cache[tree]`` (a weak-key cache), made by ``make(tree)`` on first use and kept
+    while the tree lives."""
+    try:
+        return cache[tree]
+    except KeyError:
+        found = cache[tree] = make(tree)
+        return found
+    except TypeError:                          # an unhashable stand-in: no caching
+        return make(tree)
+
+
 def tree_tables(tree) -> TreeTables:
     """The tree's tables, built on first use and kept while the tree lives."""
-    try:
-        return _CACHE[tree]
-    except KeyError:
-        tables = _CACHE[tree] = TreeTables(tree)
-        return tables
-    except TypeError:                          # an unhashable stand-in: no caching
-        return TreeTables(tree)
+    return per_tree(_CACHE, tree, TreeTables)
 
 
 def height_tables(tables: TreeTables, state) -> HeightTables:

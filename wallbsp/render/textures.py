@@ -30,6 +30,7 @@ import numpy as np
 
 from ..resources import shared_resources, sky_name
 from .packing import UNLIT, Packer
+from .tables import per_tree
 
 __all__ = ["TexturePack", "LevelTextures", "UNLIT", "FLAT_SIDE", "side_geometry",
            "switched_name", "level_textures", "level_resources"]
@@ -230,16 +231,11 @@ _RESOURCES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
 def level_resources(tree):
     """The level's ``ResourceSet`` (None for a level with no resources), opened once per
     tree; pictures are decoded when first asked for."""
-    try:
-        return _RESOURCES[tree]
-    except KeyError:
-        found = _RESOURCES[tree] = _open_resources(tree.level)
-        return found
-    except TypeError:                          # an unhashable stand-in: no caching
-        return _open_resources(tree.level)
+    return per_tree(_RESOURCES, tree, _open_resources)
 
 
-def _open_resources(level):
+def _open_resources(tree):
+    level = tree.level
     return shared_resources(level.resource_paths()) if getattr(level, "resources", ()) \
         else None
 
