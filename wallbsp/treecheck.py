@@ -35,19 +35,13 @@ def validate(tree) -> None:
     _check_lengths(tree)
     _check_ranges(tree)
     parent, slot = _check_structure(tree)
-    ends = _wall_ends(tree.level)
+    ends = tree.level.segments()   # x1, y1, x2, y2 of each wall
     _check_segs_on_their_lines(tree, ends)
     _check_walls_covered(tree)
     _check_sides_of_ancestors(tree, parent, slot, ends)
     _check_seg_points(tree, ends)
     _check_boxes(tree)
     _check_leaf_sectors(tree)
-
-
-def _wall_ends(level):
-    v = np.array(level.vertices, dtype=np.int64).reshape(-1, 2)
-    w = np.array([(x.v1, x.v2) for x in level.walls], dtype=np.int64).reshape(-1, 2)
-    return np.concatenate([v[w[:, 0]], v[w[:, 1]]], axis=1)
 
 
 def _node_of_seg(tree):
