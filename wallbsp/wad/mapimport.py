@@ -49,6 +49,7 @@ import re
 import numpy as np
 
 from ..level import Level, LevelError, Sector
+from ..levelformat import FORMAT
 from ..levelio import level_from_dict
 from .archive import Wad, lump_name, open_wad
 from .colours import GREY, SKY_BLUE, SKY_FLAT, WadColours, name_colours, wad_colours
@@ -176,7 +177,7 @@ def import_wad(wad_path, map_name: str, *, warnings: list[str] | None = None) ->
         _add_wall_fields(wall_dicts, walls, lines, sides)
         notes[:0] = colours.notes
     return {
-        "format": "wallbsp-level", "version": 2,
+        "format": FORMAT, "version": 2,
         "name": f"{map_name} ({os.path.basename(str(wad_path))})",
         "resources": [os.path.abspath(wad_path)],
         "vertices": vertices.tolist(),
