@@ -49,14 +49,13 @@ from pathlib import Path
 import numpy as np
 
 from .files import InputError, open_regular
-from .level import Level, LevelError
+from .level import SKY_FLAT, Level, LevelError
 from .wad.graphics import FLAT_SIDE, Picture, ResourceError, check_size
 from .wad.textures import BUDGET_BYTES, wad_textures
 
 __all__ = ["Picture", "PngFolder", "ResourceError", "ResourceSet", "forget_shared_resources",
            "shared_resources", "sky_name"]
 
-SKY_FLAT = "F_SKY1"
 OPAQUE_ALPHA = 128
 MAX_NOTED = 20
 _PNG_MAGIC = b"\x89PNG\r\n\x1a\n"

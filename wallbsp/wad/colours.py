@@ -10,13 +10,13 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..level import SKY_FLAT
 from .archive import Wad, lump_name
 from .graphics import Picture, ResourceError
 from .textures import wad_textures
 
 GREY = "#808080"        # a wall or flat without a texture, or one the WAD lacks
 SKY_BLUE = "#87ceeb"    # F_SKY1 ceilings
-SKY_FLAT = "F_SKY1"
 
 
 class WadColours:
