@@ -22,7 +22,9 @@ columns), ``columns`` (the closed-column list), ``walk``, ``painter``, ``rows``,
 from __future__ import annotations
 
 from ..camera import Camera, Projection
+from ..compiled import kernels_enabled
 from ..world import state_of
+from .compiledfill import fill_compiled
 from .fill import drawsegs, fill_flat
 from .frame import Frame, save_ids
 from .layers import RunLayers
@@ -48,6 +50,13 @@ class _FrontToBackLayers(RunLayers):
 
     def drawsegs(self):
         return drawsegs(self.e, self._windows)
+
+
+def _front_to_back_textured(tables, tex, heights, state, view, walk, light):
+    """The compiled fill: ``(colour columns, layers, the masked pass's front, written)``."""
+    colour, layers, e, written = fill_compiled(tables, tex, heights, state, view, walk.pieces,
+                                               light)
+    return colour, layers, (walk, e.piece_keys, layers.drawsegs), written
 
 
 def _fill(order, tables, tex, heights, state, view, e, light):
@@ -84,16 +93,27 @@ def render(source, camera: Camera, width: int, height: int, order: str = "front_
         walk = walk_front_to_back(tables, heights.key_solid, view, walk_boxes(state))
     else:
         walk = walk_back_to_front(tables, view)
-    e = Entries(tables, heights, view, walk.pieces)
-    colour, runs, where, written = _fill(order, tables, tex, heights, state, view, e, light)
-    if order == "front_to_back":
-        layers = _FrontToBackLayers(view, heights, tables, e, runs, where)
-        front = (walk, e, where)
+    if order == "front_to_back" and tex is not None and kernels_enabled():
+        colour, layers, front, written = _front_to_back_textured(tables, tex, heights, state,
+                                                                 view, walk, light)
     else:
-        layers = RunLayers(view, heights, tables, e, runs, pixel_run=where)
-        front = None                     # the things are clipped by a front-to-back walk
+        colour, layers, front, written = _batch_fill(order, tables, tex, heights, state, view,
+                                                     walk, light)
     walk.stats["pixels_written"] = written
     # sprites and masked middle textures, far to near, over the finished frame
     layers = draw_overlay(view, state, tables, heights, colour, layers, walk.stats, light, front,
                           textures)
     return Frame(view.width, view.height, colour, walk.stats, layers, walk.leaves)
+
+
+def _batch_fill(order, tables, tex, heights, state, view, walk, light):
+    """The numpy fills: ``(colour columns, layers, the masked pass's front, written)``."""
+    e = Entries(tables, heights, view, walk.pieces)
+    colour, runs, where, written = _fill(order, tables, tex, heights, state, view, e, light)
+    if order == "front_to_back":
+        layers = _FrontToBackLayers(view, heights, tables, e, runs, where)
+        front = (walk, e.keys, lambda: drawsegs(e, where))
+    else:
+        layers = RunLayers(view, heights, tables, e, runs, pixel_run=where)
+        front = None                     # the things are clipped by a front-to-back walk
+    return colour, layers, front, written

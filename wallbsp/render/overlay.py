@@ -143,8 +143,8 @@ class OverlayLayers:
         return getattr(self.base, name)
 
 
-def draw_masked(view, state, tables, walk, entries, drawsegs, colour_columns, resources=None,
-                light=True):
+def draw_masked(view, state, tables, walk, piece_keys, drawsegs, colour_columns,
+                resources=None, light=True):
     """Draw the things of the walk's leaves and the masked walls of its pieces over the
     frame; return ``(Overlay, stats)`` (``things_considered``: things of the visited
     leaves; ``things_drawn``: those with a column not wholly hidden;
@@ -154,13 +154,13 @@ def draw_masked(view, state, tables, walk, entries, drawsegs, colour_columns, re
     ids = things.things_in_leaves(walk.leaves)
     parts, stats = [], {"things_considered": len(ids), "things_drawn": 0, "masked_columns": 0}
     if len(ids):
-        clip = ClipWindows(drawsegs, tables.key_near[entries.keys],
-                           tables.key_far[entries.keys], view, state.floor, state.ceiling)
+        clip = ClipWindows(drawsegs, tables.key_near[piece_keys], tables.key_far[piece_keys],
+                           view, state.floor, state.ceiling)
         sprites, drawn = sprite_slices(view, state, things, ids, clip, atlas, light)
         stats["things_drawn"] = drawn
         if sprites is not None:
             parts.append(sprites)
-    walls = masked_slices(view, state, tables, entries.keys, drawsegs, atlas, light)
+    walls = masked_slices(view, state, tables, piece_keys, drawsegs, atlas, light)
     if walls is not None:
         stats["masked_columns"] = len(walls)
         parts.append(walls)
@@ -189,9 +189,9 @@ def walk_boxes(state):
 
 def draw_overlay(view, state, tables, heights, colour_columns, layers, stats, light=True,
                  front=None, textures=True):
-    """The masked pass of a frame: ``front`` is the front-to-back ``(walk, entries,
-    windows)`` (the painter passes None, and a front-to-back walk is made for the windows
-    it clips against).  Pictures come from the level's resources; with ``textures=False``
+    """The masked pass of a frame: ``front`` is the front-to-back ``(walk, each piece's
+    side key, a function giving the walk's DrawSegs)`` (the painter passes None, and a
+    front-to-back walk is made for the windows it clips against).  Pictures come from the level's resources; with ``textures=False``
     things are flat-colour boxes and masked walls are not drawn.  Adds the pass's counts
     to ``stats`` and returns the frame's layers (the overlay written over ``layers``)."""
     resources = level_resources(state.tree) if textures else None
@@ -205,9 +205,9 @@ def draw_overlay(view, state, tables, heights, colour_columns, layers, stats, li
         entries = Entries(tables, heights, view, walk.pieces)
         zeros = np.zeros(len(entries.col), dtype=np.int64)
         windows = front_to_back_runs(tables, view, entries, (zeros, zeros))[1]
-    else:
-        walk, entries, windows = front
-    overlay, counts = draw_masked(view, state, tables, walk, entries,
-                                  drawsegs(entries, windows), colour_columns, resources, light)
+        front = (walk, entries.keys, lambda: drawsegs(entries, windows))
+    walk, piece_keys, make_drawsegs = front
+    overlay, counts = draw_masked(view, state, tables, walk, piece_keys, make_drawsegs(),
+                                  colour_columns, resources, light)
     stats.update(counts)
     return OverlayLayers(layers, overlay) if len(overlay.pixel) else layers

@@ -27,7 +27,8 @@ from .shading import FULL_BRIGHT, light_levels, plane_levels
 from .tables import key_light
 from .textures import FLAT_SIDE, UNLIT
 
-__all__ = ["entry_parts", "RunSurfaces", "shade", "fill_textured", "paint_textured"]
+__all__ = ["entry_parts", "key_parts", "RunSurfaces", "shade", "fill_textured",
+           "paint_textured"]
 
 SKY_COLUMNS = 1024            # sky texture columns in a full turn (DOOM's ANGLETOSKYSHIFT)
 SKY_ROW = 100.0               # the sky row at the horizon, and rows per unit of v
@@ -43,7 +44,7 @@ def entry_parts(tables, tex, e):
     ``front_to_back_runs``: keys are the part numbers 0-3 (ceiling, upper, lower, floor);
     an untextured upper or lower part of a two-sided side becomes the plane behind it, the
     upper part between two skies the sky of the near sector."""
-    kinds, indices = _key_parts(tables, tex)
+    kinds, indices = key_parts(tables, tex)
     key = e.entry_keys
     return _part_numbers(len(key)), kinds.take(key, axis=1), indices.take(key, axis=1)
 
@@ -62,7 +63,7 @@ def _part_numbers(n):
 _KEY_PARTS: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
 
 
-def _key_parts(tables, tex):
+def key_parts(tables, tex):
     """``entry_parts``' kinds and indices per side key, ``(4, keys)`` each: they depend on
     the key and the textures only, so they are made once per ``LevelTextures`` (each is
     of one tree's tables)."""

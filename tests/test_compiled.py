@@ -1,0 +1,91 @@
+"""The compiled kernels against the numpy code they stand beside: the same frames, byte for
+byte (color, kind, index, depth, drawsegs, stats), over real views of the bundled levels and
+Freedoom maps with their things, lit and full bright, at even and odd frame sizes (an odd
+height puts a row on the horizon), and with a world that has moved."""
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+from wallbsp import Camera, World, compile_level, compiled, load_level, render
+
+ROOT = Path(__file__).resolve().parent.parent
+FREEDOOM = Path("/usr/share/games/doom")
+SIZES = ((64, 40), (97, 61))
+LAYERS = ("color", "kind", "index", "depth")
+
+pytestmark = pytest.mark.skipif(not compiled.AVAILABLE, reason="numba not installed")
+
+
+def both_ways(source, camera, width, height, **options):
+    """The frame drawn by the numpy code and by the kernels."""
+    previous = compiled.use_kernels(False)
+    try:
+        reference = render(source, camera, width, height, **options)
+        compiled.use_kernels(True)
+        fast = render(source, camera, width, height, **options)
+    finally:
+        compiled.use_kernels(previous)
+    return reference, fast
+
+
+def assert_same_frames(source, cameras, sizes=SIZES, **options):
+    for camera in cameras:
+        for size in sizes:
+            for light in (True, False):
+                a, b = both_ways(source, camera, *size, light=light, **options)
+                for name in LAYERS:
+                    assert np.array_equal(getattr(a, name), getattr(b, name)), \
+                        (name, camera, size, light)
+                assert a.stats == b.stats
+                for field in ("piece", "col", "w", "top", "bottom", "open_top", "open_bottom"):
+                    assert np.array_equal(getattr(a.drawsegs, field), getattr(b.drawsegs, field))
+
+
+def spots(tree, count, seed=0):
+    """The start view turned four ways and seeded random spots with room for the eye."""
+    level = tree.level
+    start = level.start
+    floor = level.sectors[tree.locate(start.x, start.y)].floor
+    cameras = [Camera(start.x, start.y, floor + 41, start.angle + a) for a in (0, 90, 180, 270)]
+    rng = np.random.default_rng(seed)
+    corners = np.array(level.vertices, dtype=np.float64)
+    while len(cameras) < count + 4:
+        x, y = (float(v) for v in rng.uniform(corners.min(axis=0), corners.max(axis=0)))
+        sector = tree.locate(x, y)
+        if sector is not None:
+            s = level.sectors[sector]
+            if s.ceiling - s.floor > 50:
+                cameras.append(Camera(x, y, s.floor + 41, float(rng.uniform(0, 360)),
+                                      float(rng.choice([60.0, 90.0, 110.0]))))
+    return cameras
+
+
+@pytest.mark.parametrize("path", [ROOT / "wallbsp" / "data" / "textured.json",
+                                  ROOT / "levels" / "textured" / "multi.json"],
+                         ids=["bundled", "multi"])
+def test_the_textured_levels_draw_the_same_both_ways(path):
+    tree = compile_level(load_level(path))
+    assert_same_frames(World(tree), spots(tree, 6))
+
+
+@pytest.mark.skipif(not (FREEDOOM / "freedoom2.wad").exists(), reason="Freedoom not installed")
+@pytest.mark.parametrize("wad,map_name", [("freedoom1.wad", "E1M1"), ("freedoom2.wad", "MAP01")])
+def test_freedoom_maps_with_things_draw_the_same_both_ways(freedoom_cache, wad, map_name):
+    tree = freedoom_cache.tree(wad, map_name)
+    assert_same_frames(World(tree, 3), spots(tree, 8))
+
+
+@pytest.mark.skipif(not (FREEDOOM / "freedoom1.wad").exists(), reason="Freedoom not installed")
+def test_a_moved_world_draws_the_same_both_ways(freedoom_cache):
+    """Heights, light, scrolling offsets and switched textures changed at run time."""
+    tree = freedoom_cache.tree("freedoom1.wad", "E1M1")
+    world = World(tree, 3)
+    state = world.state
+    rng = np.random.default_rng(3)
+    for sector in rng.choice(len(state.floor), 12, replace=False):
+        floor, ceiling = float(state.floor[sector]), float(state.ceiling[sector])
+        state.set_sector(int(sector), floor=floor + 24, ceiling=max(floor + 24, ceiling - 40),
+                         light=float(rng.integers(0, 256)))
+    state.wall_x_offset[:] = rng.integers(0, 300, len(state.wall_x_offset))
+    assert_same_frames(world, spots(tree, 6, seed=1), sizes=((80, 50),))

@@ -1,0 +1,119 @@
+"""The front-to-back textured fill by the compiled kernels (``columnkernel``).
+
+Same inputs and same bytes as ``texfill.fill_textured`` with ``layers``' id and depth
+buffers and ``fill.drawsegs``; this module gathers the per-frame tables the kernels read
+(most are cached per world version or per texture set) and wraps their outputs in the
+objects the rest of the renderer takes.
+"""
+from __future__ import annotations
+
+import weakref
+
+import numpy as np
+
+from .columnkernel import column_entries, paint_layers, paint_textured
+from .fill import DrawSegs
+from .shading import far_level
+from .tables import key_light
+from .texfill import SKY_COLUMNS, SKY_ROW, SKY_ROWS_PER_V, FLAT_OFFSET, key_parts
+
+__all__ = ["CompiledEntries", "CompiledLayers", "fill_compiled"]
+
+
+class CompiledEntries:
+    """The entries ``column_entries`` made: per entry (piece order) its ``keys``,
+    ``pieces``, ``cols``, ``w`` and ``bounds`` ``(8, n)``; ``order`` by column; the windows
+    left open per column.  ``piece_keys``: each piece's side key (the masked pass's)."""
+
+    def __init__(self, tables, heights, view, pieces):
+        table = np.array(pieces, dtype=np.float64).reshape(-1, 5)
+        self.piece_keys = table[:, 0].astype(np.int64)
+        (self.keys, self.pieces, self.cols, self.w, self.bounds, self.order, self.open_top,
+         self.open_bottom) = column_entries(table, view.u, heights.key_heights, view.f,
+                                            view.z, view.y0, view.width, view.height)
+
+    def drawsegs(self) -> DrawSegs:
+        """``fill.DrawSegs`` of the entries: by column, then walk order."""
+        order, bounds = self.order, self.bounds
+        top, bottom, open_top = bounds[4][order], bounds[5][order], bounds[6][order]
+        return DrawSegs(self.pieces[order], self.cols[order], self.w[order], top, bottom,
+                        open_top, np.maximum(bounds[7][order], open_top))
+
+
+class CompiledLayers:
+    """``columns(name)`` for ``kind``, ``index`` and ``depth`` (all three made by one
+    kernel pass the first time one is asked for; a fresh copy each call) and
+    ``drawsegs()``."""
+
+    def __init__(self, view, heights, tables, tex, entries: CompiledEntries):
+        self.view, self.heights, self.tables, self.tex = view, heights, tables, tex
+        self.entries = entries
+        self._made = None
+
+    def columns(self, name):
+        if self._made is None:
+            self._made = self._paint()
+        return self._made[name].copy()
+
+    def _paint(self):
+        view, e, heights = self.view, self.entries, self.heights
+        shape = (view.width, view.height)
+        n = view.width * view.height
+        kind = np.empty(n, dtype=np.uint8)
+        index = np.empty(n, dtype=np.int32)
+        depth = np.empty(n, dtype=np.float32)
+        kinds, indices = key_parts(self.tables, self.tex)
+        paint_layers(e.keys, e.cols, e.w, e.bounds, e.open_top, e.open_bottom,
+                     _view_numbers(view), kinds, indices, self.tables.sector_sky,
+                     heights.floor, heights.ceiling, view.height, kind, index, depth)
+        return {"kind": kind.reshape(shape), "index": index.reshape(shape),
+                "depth": depth.reshape(shape)}
+
+    def drawsegs(self):
+        return self.entries.drawsegs()
+
+
+def _view_numbers(view) -> np.ndarray:
+    """The projection's numbers as the kernels index them: ``x, y, z, f, fx, fy, rx, ry,
+    y0``, the sky's texture rows ``t0, t1``, and the flats' offset eye ``x, -y``."""
+    return np.array([view.x, view.y, view.z, view.f, view.fx, view.fy, view.rx, view.ry,
+                     view.y0, SKY_ROW - SKY_ROWS_PER_V * view.y0 / view.f,
+                     SKY_ROWS_PER_V / view.f, view.x + FLAT_OFFSET, FLAT_OFFSET - view.y])
+
+
+def _sky_columns(tex, view) -> np.ndarray:
+    """The sky texture's column in every screen column (``texfill``'s ``_sky``)."""
+    if tex.sky < 0:
+        return np.zeros(view.width, dtype=np.int64)
+    angle = view.angle - np.degrees(np.arctan(view.u))
+    return np.floor(SKY_COLUMNS * angle / 360.0).astype(np.int64) % tex.width[tex.sky]
+
+
+_PLANE_BASES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+
+
+def _plane_bases(tex) -> np.ndarray:
+    """``(sectors, 2)`` atlas base of each sector's floor and ceiling flat, per texture set."""
+    bases = _PLANE_BASES.get(tex)
+    if bases is None:
+        bases = _PLANE_BASES[tex] = np.ascontiguousarray(tex.base[tex.plane_texture])
+    return bases
+
+
+def fill_compiled(tables, tex, heights, state, view, pieces, light=True):
+    """``(colour columns, CompiledLayers, CompiledEntries, pixels written)`` of a
+    front-to-back textured frame of the walk's ``pieces``."""
+    e = CompiledEntries(tables, heights, view, pieces)
+    colour = np.empty(view.width * view.height, dtype="<u4")
+    kinds, indices = key_parts(tables, tex)
+    offsets = state.wall_x_offset
+    written = paint_textured(
+        e.keys, e.cols, e.w, e.bounds, e.open_top, e.open_bottom, view.u, _view_numbers(view),
+        _sky_columns(tex, view), kinds, indices, tex.part_table, tables.key_far,
+        key_light(tables, state), tables.key_wall, offsets, bool(offsets.any()),
+        heights.key_heights, tables.sector_sky, heights.floor, heights.ceiling,
+        far_level(state.light), _plane_bases(tex), tex.sky, tex.sky_colour, tex.base,
+        tex.pitch, tex.stride, tex.height, tex.atlas, tex.lut_flat, tex.n_colours, tex.black,
+        bool(light), view.height, colour)
+    columns = colour.view(np.uint8).reshape(view.width, view.height, 4)[:, :, :3]
+    return columns, CompiledLayers(view, heights, tables, tex, e), e, int(written)
