@@ -191,9 +191,10 @@ def draw_overlay(view, state, tables, heights, colour_columns, layers, stats, li
                  front=None, textures=True):
     """The masked pass of a frame: ``front`` is the front-to-back ``(walk, each piece's
     side key, a function giving the walk's DrawSegs)`` (the painter passes None, and a
-    front-to-back walk is made for the windows it clips against).  Pictures come from the level's resources; with ``textures=False``
-    things are flat-colour boxes and masked walls are not drawn.  Adds the pass's counts
-    to ``stats`` and returns the frame's layers (the overlay written over ``layers``)."""
+    front-to-back walk is made for the windows it clips against).  Pictures come from the
+    level's resources; with ``textures=False`` things are flat-colour boxes and masked
+    walls are not drawn.  Adds the pass's counts to ``stats`` and returns the frame's
+    layers (the overlay written over ``layers``)."""
     resources = level_resources(state.tree) if textures else None
     things = state.things
     if not (things.alive & things.drawn).any() and not has_masked_walls(
