@@ -21,6 +21,8 @@ columns), ``columns`` (the closed-column list), ``walk``, ``painter``, ``rows``,
 """
 from __future__ import annotations
 
+import numpy as np
+
 from ..camera import Camera, Projection
 from ..compiled import kernels_enabled
 from ..world import state_of
@@ -35,6 +37,7 @@ from .tables import height_tables, tree_tables
 from .texfill import fill_textured, paint_textured
 from .textures import level_textures
 from .walk import walk_front_to_back
+from .walkkernel import walk_compiled
 
 __all__ = ["render", "Frame", "save_ids"]
 
@@ -90,7 +93,7 @@ def render(source, camera: Camera, width: int, height: int, order: str = "front_
     heights = height_tables(tables, state)
     tex = level_textures(tables, state) if textures else None
     if order == "front_to_back":
-        walk = walk_front_to_back(tables, heights.key_solid, view, walk_boxes(state))
+        walk = _walk(tables, heights, view, state)
     else:
         walk = walk_back_to_front(tables, view)
     if order == "front_to_back" and tex is not None and kernels_enabled():
@@ -104,6 +107,16 @@ def render(source, camera: Camera, width: int, height: int, order: str = "front_
     layers = draw_overlay(view, state, tables, heights, colour, layers, walk.stats, light, front,
                           textures)
     return Frame(view.width, view.height, colour, walk.stats, layers, walk.leaves)
+
+
+def _walk(tables, heights, view, state):
+    """The front-to-back walk, by the kernel when kernels are on."""
+    boxes = walk_boxes(state)
+    if not kernels_enabled():
+        return walk_front_to_back(tables, heights.key_solid, view, boxes)
+    if boxes is not None:
+        boxes = np.ascontiguousarray(state.things.subtree_boxes())
+    return walk_compiled(tables, heights, view, boxes)
 
 
 def _batch_fill(order, tables, tex, heights, state, view, walk, light):

@@ -1,0 +1,299 @@
+"""The front-to-back walk (``walk``) as a compiled kernel: the same nodes, segs, pieces,
+leaves and counts, in the same order, from the same float arithmetic.
+
+The Python walk stays the reference and takes over whenever the eye is too near a
+partition line for doubles to decide its side (``walk.eye_side``): the kernel then stops
+and says so, and the frame is walked again in Python, which falls back to rationals.
+The closed-column list is DOOM's ``solidsegs`` as two arrays (``ClosedColumns``).
+"""
+from __future__ import annotations
+
+import weakref
+
+import numpy as np
+
+from ..compiled import kernel
+from .project import NEAR
+from .walk import Walk, eye_tolerance, walk_front_to_back
+
+__all__ = ["walk_compiled"]
+
+FAR = 1 << 62                          # columns.ClosedColumns' sentinels
+
+
+@kernel
+def _bisect_right(values, count, x):
+    lo, hi = 0, count
+    while lo < hi:
+        mid = (lo + hi) // 2
+        if x < values[mid]:
+            hi = mid
+        else:
+            lo = mid + 1
+    return lo
+
+
+@kernel
+def _bisect_left(values, count, x):
+    lo, hi = 0, count
+    while lo < hi:
+        mid = (lo + hi) // 2
+        if values[mid] < x:
+            lo = mid + 1
+        else:
+            hi = mid
+    return lo
+
+
+@kernel
+def _merge(starts, ends, count, c1, c2):
+    """``ClosedColumns._merge``: the closed span ``[c1, c2)`` into the list; the new count."""
+    lo = _bisect_left(ends, count, c1)
+    hi = _bisect_right(starts, count, c2) - 1
+    if lo > hi:
+        for k in range(count, lo, -1):
+            starts[k], ends[k] = starts[k - 1], ends[k - 1]
+        starts[lo], ends[lo] = c1, c2
+        return count + 1
+    start, end = min(c1, starts[lo]), max(c2, ends[hi])
+    gone = hi - lo
+    starts[lo], ends[lo] = start, end
+    for k in range(lo + 1, count - gone):
+        starts[k], ends[k] = starts[k + gone], ends[k + gone]
+    return count - gone
+
+
+@kernel
+def _project(view, x1, y1, x2, y2, out):
+    """``project.make_projector``'s ``project`` into ``out`` (c1, c2, A, B); False when the
+    seg covers no column."""
+    ex, ey, fx, fy, rx, ry, f, x0, width = (view[0], view[1], view[2], view[3], view[4],
+                                             view[5], view[6], view[7], view[8])
+    ax = x1 - ex
+    ay = y1 - ey
+    bx = x2 - ex
+    by = y2 - ey
+    d1 = ax * fx + ay * fy
+    d2 = bx * fx + by * fy
+    if d1 < NEAR and d2 < NEAR:
+        return False
+    r1 = ax * rx + ay * ry
+    r2 = bx * rx + by * ry
+    k = r2 * d1 - d2 * r1
+    if k <= 0.0:
+        return False
+    if d1 < NEAR:
+        c1 = np.ceil(x0 + f * (r1 + (NEAR - d1) / (d2 - d1) * (r2 - r1)) / NEAR)
+    else:
+        c1 = np.ceil(x0 + f * r1 / d1)
+    if d2 < NEAR:
+        c2 = np.ceil(x0 + f * (r2 + (NEAR - d2) / (d1 - d2) * (r1 - r2)) / NEAR)
+    else:
+        c2 = np.ceil(x0 + f * r2 / d2)
+    c1 = c1 if c1 > 0 else 0.0
+    c2 = c2 if c2 < width else width
+    if c1 >= c2:
+        return False
+    out[0], out[1], out[2], out[3] = c1, c2, (r2 - r1) / k, (d1 - d2) / k
+    return True
+
+
+@kernel
+def _box_columns(view, box, span):
+    """``project.make_box_check``'s ``box_columns`` into ``span``; False for none."""
+    ex, ey, fx, fy, rx, ry, f, x0, width = (view[0], view[1], view[2], view[3], view[4],
+                                             view[5], view[6], view[7], view[8])
+    minx, miny, maxx, maxy = box[0], box[1], box[2], box[3]
+    col = 0 if ex < minx else (2 if ex > maxx else 1)
+    row = 0 if ey > maxy else (2 if ey < miny else 1)
+    if row == 1 and col == 1:
+        span[0], span[1] = 0, int(width)
+        return True
+    # the silhouette's left corner p and right corner q (project._SILHOUETTE)
+    left = (3, 3, 2, 1, 0, 2, 1, 0, 0)[row * 3 + col]     # bit 1: max x, bit 0: max y
+    right = (0, 1, 1, 0, 0, 3, 2, 2, 3)[row * 3 + col]
+    px = (maxx if left & 2 else minx) - ex
+    py = (maxy if left & 1 else miny) - ey
+    qx = (maxx if right & 2 else minx) - ex
+    qy = (maxy if right & 1 else miny) - ey
+    dp = px * fx + py * fy
+    dq = qx * fx + qy * fy
+    if dp <= 0.0 and dq <= 0.0:
+        return False
+    lo = np.floor(x0 + f * (px * rx + py * ry) / dp) if dp > 1e-9 else 0.0
+    hi = np.floor(x0 + f * (qx * rx + qy * ry) / dq) + 2 if dq > 1e-9 else width
+    lo = lo if lo > 0 else 0.0
+    hi = hi if hi < width else width
+    if lo >= hi:
+        return False
+    span[0], span[1] = int(lo), int(hi)
+    return True
+
+
+@kernel
+def _open_spans(starts, ends, count, c1, c2, spans):
+    """``ClosedColumns.open_spans`` into ``spans`` (rows of two); the number of spans."""
+    i = _bisect_right(starts, count, c1) - 1
+    if ends[i] > c1:
+        c1 = ends[i]
+    n = 0
+    while c1 < c2:
+        i += 1
+        spans[n, 0], spans[n, 1] = c1, min(starts[i], c2)
+        n += 1
+        c1 = ends[i]
+    return n
+
+
+@kernel
+def walk_kernel(view, tol, root, lines, kids, boxes, seg_ranges, inside, ends, flips,
+                one_sided, solid):
+    """The walk of ``walk.walk_front_to_back``: ``(status, pieces (n, 5), leaves, nodes
+    visited, segs drawn, early exit)``; status -1 when the eye's side at a node needs
+    rationals (nothing else is then meaningful)."""
+    n_nodes = lines.shape[0]
+    width = int(view[8])
+    ex, ey = view[0], view[1]
+    starts = np.empty(width + 4, dtype=np.int64)
+    stops = np.empty(width + 4, dtype=np.int64)
+    starts[0], stops[0], starts[1], stops[1] = -FAR, 0, width, FAR
+    count = 2
+    stack = np.empty(3 * n_nodes + 4, dtype=np.int64)
+    top = 0
+    if root >= 0:
+        stack[0] = root
+        top = 1
+    pieces = np.empty((64, 5), dtype=np.float64)
+    n_pieces = 0
+    leaves = np.empty(64, dtype=np.int64)
+    n_leaves = 0
+    spans = np.empty((width + 2, 2), dtype=np.int64)
+    seen = np.empty(4, dtype=np.float64)
+    span = np.empty(2, dtype=np.int64)
+    visited = segs_drawn = 0
+    early_exit = False
+    while top > 0:
+        top -= 1
+        item = stack[top]
+        if item >= n_nodes:
+            leaves, n_leaves = _append(leaves, n_leaves, item - n_nodes)
+            continue
+        if item >= 0:
+            if not _box_columns(view, boxes[item], span):
+                continue
+            if stops[_bisect_right(starts, count, span[0]) - 1] >= span[1]:
+                continue                          # hidden behind one closed interval
+            visited += 1
+            s = lines[item, 0] * ex + lines[item, 1] * ey + lines[item, 2]
+            if not (s < -tol or s > tol):
+                return -1, pieces[:0], leaves[:0], visited, segs_drawn, early_exit
+            k0, k1 = kids[item, 0], kids[item, 1]
+            if s <= 0:
+                near, far, show_segs = k0, k1, s < 0
+            else:
+                near, far, show_segs = k1, k0, True
+            if far >= 0:
+                stack[top] = far
+                top += 1
+            elif inside[~far]:
+                stack[top] = n_nodes + ~far
+                top += 1
+            if show_segs:
+                stack[top] = ~((item << 1) | (1 if s > 0 else 0))
+                top += 1
+            if near >= 0:
+                stack[top] = near
+                top += 1
+            elif inside[~near]:
+                leaves, n_leaves = _append(leaves, n_leaves, ~near)
+            continue
+        code = ~item
+        eye_back = code & 1
+        node = code >> 1
+        for i in range(seg_ranges[node, 0], seg_ranges[node, 1]):
+            back = eye_back ^ flips[i]
+            if back and one_sided[i]:
+                continue
+            if back:
+                drawn = _project(view, ends[i, 2], ends[i, 3], ends[i, 0], ends[i, 1], seen)
+            else:
+                drawn = _project(view, ends[i, 0], ends[i, 1], ends[i, 2], ends[i, 3], seen)
+            if not drawn:
+                continue
+            c1, c2 = int(seen[0]), int(seen[1])
+            key = (i << 1) | back
+            n = _open_spans(starts, stops, count, c1, c2, spans)
+            if n:
+                segs_drawn += 1
+                if solid[key]:
+                    count = _merge(starts, stops, count, c1, c2)
+                for j in range(n):
+                    if n_pieces == pieces.shape[0]:
+                        grown = np.empty((2 * n_pieces, 5), dtype=np.float64)
+                        grown[:n_pieces] = pieces
+                        pieces = grown
+                    pieces[n_pieces, 0], pieces[n_pieces, 1] = key, seen[2]
+                    pieces[n_pieces, 2], pieces[n_pieces, 3] = seen[3], spans[j, 0]
+                    pieces[n_pieces, 4] = spans[j, 1]
+                    n_pieces += 1
+        if count == 1:
+            early_exit = True
+            break
+    return 0, pieces[:n_pieces], leaves[:n_leaves], visited, segs_drawn, early_exit
+
+
+@kernel
+def _append(values, n, x):
+    if n == len(values):
+        grown = np.empty(2 * n, dtype=values.dtype)
+        grown[:n] = values
+        values = grown
+    values[n] = x
+    return values, n + 1
+
+
+class _WalkArrays:
+    """A tree's walk tables as arrays (``TreeTables`` keeps Python lists for the Python
+    walk)."""
+
+    def __init__(self, tables):
+        self.lines = np.array(tables.node_lines, dtype=np.float64).reshape(-1, 3)
+        self.kids = np.array(tables.node_kids, dtype=np.int64).reshape(-1, 2)
+        self.boxes = np.array(tables.node_boxes, dtype=np.float64).reshape(-1, 4)
+        self.seg_ranges = np.array(tables.node_segs, dtype=np.int64).reshape(-1, 2)
+        self.inside = np.array(tables.leaf_inside, dtype=np.bool_)
+        self.ends = np.ascontiguousarray(tables.seg_xy, dtype=np.float64)
+        self.flips = np.array(tables.seg_flip, dtype=np.int64)
+        self.one_sided = np.array(tables.seg_one_sided, dtype=np.bool_)
+
+
+_ARRAYS: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+_SOLID: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+
+
+def _solid_keys(heights) -> np.ndarray:
+    solid = _SOLID.get(heights)
+    if solid is None:
+        solid = _SOLID[heights] = np.array(heights.key_solid, dtype=np.bool_)
+    return solid
+
+
+def walk_compiled(tables, heights, view, boxes=None) -> Walk:
+    """``walk.walk_front_to_back`` by the kernel (the Python walk where the eye's side
+    needs rationals); ``boxes``: the things' grown node boxes (an array) or None."""
+    arrays = _ARRAYS.get(tables)
+    if arrays is None:
+        arrays = _ARRAYS[tables] = _WalkArrays(tables)
+    numbers = np.array([view.x, view.y, view.fx, view.fy, view.rx, view.ry, view.f, view.x0,
+                        float(view.width)])
+    status, pieces, leaves, visited, segs_drawn, early_exit = walk_kernel(
+        numbers, eye_tolerance(tables.line_max, view.x, view.y), tables.root, arrays.lines,
+        arrays.kids, arrays.boxes if boxes is None else boxes, arrays.seg_ranges,
+        arrays.inside, arrays.ends, arrays.flips, arrays.one_sided, _solid_keys(heights))
+    if status < 0:
+        listed = None if boxes is None else boxes.tolist()
+        return walk_front_to_back(tables, heights.key_solid, view, listed)
+    stats = {"nodes_visited": int(visited), "segs_drawn": int(segs_drawn),
+             "early_exit": bool(early_exit), "pieces": len(pieces),
+             "nodes": tables.node_count}
+    return Walk(pieces, stats, leaves.tolist())
