@@ -1,7 +1,8 @@
 """The compiled kernels against the numpy code they stand beside: the same frames, byte for
-byte (color, kind, index, depth, drawsegs, stats), over real views of the bundled levels and
-Freedoom maps with their things, lit and full bright, at even and odd frame sizes (an odd
-height puts a row on the horizon), and with a world that has moved."""
+byte (color, kind, index, depth, drawsegs, stats, leaves), over real views of the bundled
+levels and Freedoom maps with their things, textured and in flat colours, lit and full
+bright, at even and odd frame sizes (an odd height puts a row on the horizon), and with a
+world that has moved."""
 from pathlib import Path
 
 import numpy as np
@@ -32,11 +33,12 @@ def both_ways(source, camera, width, height, **options):
 def assert_same_frames(source, cameras, sizes=SIZES, **options):
     for camera in cameras:
         for size in sizes:
-            for light in (True, False):
-                a, b = both_ways(source, camera, *size, light=light, **options)
+            for light, textures in ((True, True), (False, True), (True, False), (False, False)):
+                a, b = both_ways(source, camera, *size, light=light, textures=textures,
+                                 **options)
                 for name in LAYERS:
                     assert np.array_equal(getattr(a, name), getattr(b, name)), \
-                        (name, camera, size, light)
+                        (name, camera, size, light, textures)
                 assert a.stats == b.stats and a.leaves == b.leaves
                 for field in ("piece", "col", "w", "top", "bottom", "open_top", "open_bottom"):
                     assert np.array_equal(getattr(a.drawsegs, field), getattr(b.drawsegs, field))

@@ -55,8 +55,8 @@ class _FrontToBackLayers(RunLayers):
         return drawsegs(self.e, self._windows)
 
 
-def _front_to_back_textured(tables, tex, heights, state, view, walk, light):
-    """The compiled fill: ``(colour columns, layers, the masked pass's front, written)``."""
+def _front_to_back_compiled(tables, tex, heights, state, view, walk, light):
+    """The compiled fill (textured, or flat colours when ``tex`` is None): ``(colour columns, layers, the masked pass's front, written)``."""
     colour, layers, e, written = fill_compiled(tables, tex, heights, state, view, walk.pieces,
                                                light)
     return colour, layers, (walk, e.piece_keys, layers.drawsegs), written
@@ -96,8 +96,8 @@ def render(source, camera: Camera, width: int, height: int, order: str = "front_
         walk = _walk(tables, heights, view, state)
     else:
         walk = walk_back_to_front(tables, view)
-    if order == "front_to_back" and tex is not None and kernels_enabled():
-        colour, layers, front, written = _front_to_back_textured(tables, tex, heights, state,
+    if order == "front_to_back" and kernels_enabled():
+        colour, layers, front, written = _front_to_back_compiled(tables, tex, heights, state,
                                                                  view, walk, light)
     else:
         colour, layers, front, written = _batch_fill(order, tables, tex, heights, state, view,

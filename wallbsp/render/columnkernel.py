@@ -288,3 +288,55 @@ def paint_layers(keys, cols, ws, bounds, open_top, open_bottom, view, part_kind,
             kind_out[c * height + r] = KIND_NOTHING
             index_out[c * height + r] = -1
             depth_out[c * height + r] = np.float32(math.inf)
+
+
+@kernel
+def paint_flat(keys, cols, ws, bounds, open_top, open_bottom, view, key_near, key_surfaces,
+               key_upper_sky, key_far_light, plane_surface, sector_sky, floor, ceiling,
+               sector_far, lit_colours, surface_colour, light, height, out):
+    """Every pixel of a flat-colour frame into ``out`` (``fill.fill_flat``): a wall part
+    is one colour (its column's light), a plane is shaded per row, "nothing" is black.
+    ``key_surfaces`` ``(2, keys)``: the upper and lower parts' surfaces.  Returns the
+    pixels written."""
+    written = 0
+    for i in range(len(keys)):
+        key, c = keys[i], cols[i]
+        top, bottom = bounds[4, i], bounds[5, i]
+        p1 = min(max(bounds[0, i], top), bottom)
+        fl = min(max(bounds[3, i], top), bottom)
+        at = c * height
+        level = _light(key_far_light[key], ws[i], 1) if light else LIGHTS
+        for part in range(4):
+            if part == 0:
+                r0, r1 = top, p1
+            elif part == 1:
+                r0, r1 = p1, bounds[6, i]
+            elif part == 2:
+                r0, r1 = bounds[7, i], fl
+            else:
+                r0, r1 = fl, bottom
+            if r1 <= r0:
+                continue
+            written += r1 - r0
+            if part == 1 or part == 2:
+                lit = LIGHTS if part == 1 and key_upper_sky[key] else level
+                colour = lit_colours[surface_colour[key_surfaces[part - 1, key]], lit]
+                for r in range(r0, r1):
+                    out[at + r] = colour
+                continue
+            sector = key_near[key]
+            ceil = part == 0
+            row = lit_colours[surface_colour[plane_surface + 2 * sector + (1 if ceil else 0)]]
+            if not light or (ceil and sector_sky[sector]):
+                for r in range(r0, r1):
+                    out[at + r] = row[LIGHTS]
+                continue
+            h = ceiling[sector] if ceil else floor[sector]
+            fz_abs = max(abs(view[3] * (h - view[2])), 1e-9)
+            for r in range(r0, r1):
+                out[at + r] = row[_light(sector_far[sector], abs(view[8] - r) / fz_abs, 1)]
+    for c in range(len(open_top)):
+        top = open_top[c]
+        for r in range(top, max(open_bottom[c], top)):
+            out[c * height + r] = 0
+    return written

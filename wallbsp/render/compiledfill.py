@@ -11,9 +11,10 @@ import weakref
 
 import numpy as np
 
-from .columnkernel import column_entries, paint_layers, paint_textured
+from .columnkernel import column_entries, paint_flat, paint_layers, paint_textured
 from .fill import DrawSegs
-from .shading import far_level
+from .frame import KIND_CEILING, KIND_FLOOR, KIND_WALL
+from .shading import LIGHT_LEVELS, far_level
 from .tables import key_light
 from .texfill import SKY_COLUMNS, SKY_ROW, SKY_ROWS_PER_V, FLAT_OFFSET, key_parts
 
@@ -45,8 +46,8 @@ class CompiledLayers:
     kernel pass the first time one is asked for; a fresh copy each call) and
     ``drawsegs()``."""
 
-    def __init__(self, view, heights, tables, tex, entries: CompiledEntries):
-        self.view, self.heights, self.tables, self.tex = view, heights, tables, tex
+    def __init__(self, view, heights, tables, parts, entries: CompiledEntries):
+        self.view, self.heights, self.tables, self.parts = view, heights, tables, parts
         self.entries = entries
         self._made = None
 
@@ -62,7 +63,7 @@ class CompiledLayers:
         kind = np.empty(n, dtype=np.uint8)
         index = np.empty(n, dtype=np.int32)
         depth = np.empty(n, dtype=np.float32)
-        kinds, indices = key_parts(self.tables, self.tex)
+        kinds, indices = self.parts
         paint_layers(e.keys, e.cols, e.w, e.bounds, e.open_top, e.open_bottom,
                      _view_numbers(view), kinds, indices, self.tables.sector_sky,
                      heights.floor, heights.ceiling, view.height, kind, index, depth)
@@ -100,14 +101,62 @@ def _plane_bases(tex) -> np.ndarray:
     return bases
 
 
+_FLAT_PARTS: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+
+
+def _flat_parts(tables):
+    """Per key, the four parts' kinds and indices in flat colours: N's ceiling, the upper
+    and lower walls (always walls, sky or not), N's floor (``fill.front_to_back_runs``)."""
+    parts = _FLAT_PARTS.get(tables)
+    if parts is None:
+        near, wall = tables.key_near, tables.key_wall
+        kinds = np.empty((4, len(near)), dtype=np.uint8)
+        kinds[0], kinds[1], kinds[2], kinds[3] = KIND_CEILING, KIND_WALL, KIND_WALL, KIND_FLOOR
+        parts = _FLAT_PARTS[tables] = kinds, np.stack([near, wall, wall, near])
+    return parts
+
+
 def fill_compiled(tables, tex, heights, state, view, pieces, light=True):
     """``(colour columns, CompiledLayers, CompiledEntries, pixels written)`` of a
-    front-to-back textured frame of the walk's ``pieces``."""
+    front-to-back frame of the walk's ``pieces``: textured by ``tex``, or in flat colours
+    when it is None."""
     e = CompiledEntries(tables, heights, view, pieces)
     colour = np.empty(view.width * view.height, dtype="<u4")
-    kinds, indices = key_parts(tables, tex)
+    if tex is None:
+        parts = _flat_parts(tables)
+        written = _paint_flat(tables, heights, state, view, e, light, colour)
+    else:
+        parts = key_parts(tables, tex)
+        written = _paint_textured(tables, tex, heights, state, view, e, parts, light, colour)
+    columns = colour.view(np.uint8).reshape(view.width, view.height, 4)[:, :, :3]
+    return columns, CompiledLayers(view, heights, tables, parts, e), e, int(written)
+
+
+def _paint_flat(tables, heights, state, view, e, light, colour):
+    return paint_flat(
+        e.keys, e.cols, e.w, e.bounds, e.open_top, e.open_bottom, _view_numbers(view),
+        tables.key_near, _key_surfaces(tables), tables.key_upper_sky, key_light(tables, state),
+        tables.plane_base_surface, tables.sector_sky, heights.floor, heights.ceiling,
+        far_level(state.light), tables.lit_colours, tables.surface_colour, bool(light),
+        view.height, colour)
+
+
+_SURFACES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+
+
+def _key_surfaces(tables):
+    """``(2, keys)``: the surface of each key's upper and lower part (flat colours)."""
+    surfaces = _SURFACES.get(tables)
+    if surfaces is None:
+        surfaces = _SURFACES[tables] = np.stack([tables.key_upper_surface,
+                                                 tables.key_lower_surface]) // LIGHT_LEVELS
+    return surfaces
+
+
+def _paint_textured(tables, tex, heights, state, view, e, parts, light, colour):
+    kinds, indices = parts
     offsets = state.wall_x_offset
-    written = paint_textured(
+    return paint_textured(
         e.keys, e.cols, e.w, e.bounds, e.open_top, e.open_bottom, view.u, _view_numbers(view),
         _sky_columns(tex, view), kinds, indices, tex.part_table, tables.key_far,
         key_light(tables, state), tables.key_wall, offsets, bool(offsets.any()),
@@ -115,5 +164,3 @@ def fill_compiled(tables, tex, heights, state, view, pieces, light=True):
         far_level(state.light), _plane_bases(tex), tex.sky, tex.sky_colour, tex.base,
         tex.pitch, tex.stride, tex.height, tex.atlas, tex.lut_flat, tex.n_colours, tex.black,
         bool(light), view.height, colour)
-    columns = colour.view(np.uint8).reshape(view.width, view.height, 4)[:, :, :3]
-    return columns, CompiledLayers(view, heights, tables, tex, e), e, int(written)
