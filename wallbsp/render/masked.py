@@ -24,7 +24,7 @@ from .shading import FULL_BRIGHT, light_levels
 from .tables import key_light
 from .textures import side_geometry, switched_name
 
-__all__ = ["masked_slices", "has_masked_walls"]
+__all__ = ["masked_slices", "has_masked_walls", "shows_masked_walls"]
 
 
 class _MaskedKeys:
@@ -55,7 +55,9 @@ _KEYS: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
 
 
 def _masked_keys(tables, state, atlas) -> _MaskedKeys:
-    per_state = _KEYS.setdefault(atlas, weakref.WeakKeyDictionary())
+    per_state = _KEYS.get(atlas)
+    if per_state is None:                 # (setdefault would make a dictionary every call)
+        per_state = _KEYS[atlas] = weakref.WeakKeyDictionary()
     cached = per_state.get(state)
     if cached is None or cached.texture_version != state.texture_version \
             or cached.slot.shape[0] != len(tables.key_wall):
@@ -66,6 +68,13 @@ def _masked_keys(tables, state, atlas) -> _MaskedKeys:
 def has_masked_walls(tables, state, atlas) -> bool:
     """Whether any two-sided wall of the level has a middle texture the atlas can draw."""
     return _masked_keys(tables, state, atlas).any
+
+
+def shows_masked_walls(tables, state, piece_keys, atlas) -> bool:
+    """Whether any of the pieces (``piece_keys``: their side keys) has a middle texture
+    the atlas can draw: when none has, ``masked_slices`` gives None."""
+    keys = _masked_keys(tables, state, atlas)
+    return keys.any and len(piece_keys) > 0 and keys.slot[piece_keys].max() >= 0
 
 
 def masked_slices(view, state, tables, piece_keys, drawsegs, atlas, light=True):

@@ -14,10 +14,12 @@ import weakref
 
 import numpy as np
 
+from ..compiled import kernels_enabled
 from .atlas import atlas_for
 from .clipping import ClipWindows, Slices
 from .fill import drawsegs, front_to_back_runs
 from .masked import has_masked_walls, masked_slices
+from .overlaycompiled import compiled_composite, compiled_slices
 from .rows import Entries
 from .sprites import sprite_slices
 from .textures import level_resources
@@ -143,13 +145,21 @@ class OverlayLayers:
         return getattr(self.base, name)
 
 
-def draw_masked(view, state, tables, walk, piece_keys, drawsegs, colour_columns,
+def draw_masked(view, state, tables, walk, piece_keys, make_drawsegs, colour_columns,
                 resources=None, light=True):
     """Draw the things of the walk's leaves and the masked walls of its pieces over the
     frame; return ``(Overlay, stats)`` (``things_considered``: things of the visited
     leaves; ``things_drawn``: those with a column not wholly hidden;
-    ``masked_columns``: masked-wall columns drawn)."""
+    ``masked_columns``: masked-wall columns drawn).  ``make_drawsegs()`` gives the walk's
+    ``DrawSegs``.  With the kernels on, ``overlaycompiled`` draws them."""
     atlas = atlas_for(resources)
+    if kernels_enabled():
+        slices, stats = compiled_slices(view, state, tables, walk, piece_keys, make_drawsegs,
+                                        atlas, light)
+        if slices is None:
+            return _NOTHING, stats
+        return Overlay(*compiled_composite(slices, atlas, colour_columns), slices), stats
+    drawsegs = make_drawsegs()
     things = state.things
     ids = things.things_in_leaves(walk.leaves)
     parts, stats = [], {"things_considered": len(ids), "things_drawn": 0, "masked_columns": 0}
@@ -178,13 +188,17 @@ _BOXES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
 def walk_boxes(state):
     """Node boxes for the front-to-back walk grown to hold the drawn things
     (``Things.subtree_boxes``), as the walk's Python lists; None when no thing is drawn."""
-    things = state.things
+    return _drawn_things(state.things)[1]
+
+
+def _drawn_things(things):
+    """``(version, boxes or None, whether any thing is drawn)``, made once per version."""
     cached = _BOXES.get(things)
     if cached is None or cached[0] != things.version:
         drawn = bool((things.alive & things.drawn).any())
         cached = _BOXES[things] = (things.version,
-                                   things.subtree_boxes().tolist() if drawn else None)
-    return cached[1]
+                                   things.subtree_boxes().tolist() if drawn else None, drawn)
+    return cached
 
 
 def draw_overlay(view, state, tables, heights, colour_columns, layers, stats, light=True,
@@ -196,8 +210,7 @@ def draw_overlay(view, state, tables, heights, colour_columns, layers, stats, li
     walls are not drawn.  Adds the pass's counts to ``stats`` and returns the frame's
     layers (the overlay written over ``layers``)."""
     resources = level_resources(state.tree) if textures else None
-    things = state.things
-    if not (things.alive & things.drawn).any() and not has_masked_walls(
+    if not _drawn_things(state.things)[2] and not has_masked_walls(
             tables, state, atlas_for(resources)):
         stats.update(things_considered=0, things_drawn=0, masked_columns=0)
         return layers
@@ -208,7 +221,7 @@ def draw_overlay(view, state, tables, heights, colour_columns, layers, stats, li
         windows = front_to_back_runs(tables, view, entries, (zeros, zeros))[1]
         front = (walk, entries.keys, lambda: drawsegs(entries, windows))
     walk, piece_keys, make_drawsegs = front
-    overlay, counts = draw_masked(view, state, tables, walk, piece_keys, make_drawsegs(),
+    overlay, counts = draw_masked(view, state, tables, walk, piece_keys, make_drawsegs,
                                   colour_columns, resources, light)
     stats.update(counts)
     return OverlayLayers(layers, overlay) if len(overlay.pixel) else layers

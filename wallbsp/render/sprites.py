@@ -24,7 +24,7 @@ from .clipping import Slices, clipped, texture_rows
 from .frame import KIND_THING
 from .shading import FULL_BRIGHT, far_level, light_levels
 
-__all__ = ["MIN_DEPTH", "rotations", "sprite_slices"]
+__all__ = ["MIN_DEPTH", "rotations", "pictures", "sprite_slices"]
 
 MIN_DEPTH = 4.0                 # DOOM's MINZ: a thing nearer than this is not drawn
 # flat colours of things with no picture, by what they are
@@ -51,7 +51,7 @@ def _box_colour(info):
     return _BOX_COLOURS["solid"] if info.solid else _BOX_COLOURS["other"]
 
 
-def _pictures(things, ids, rotation, atlas):
+def pictures(things, ids, rotation, atlas):
     """Atlas slot and mirroring of each thing's picture (a box when it has none)."""
     chosen = atlas.chosen.setdefault(things, {})
     slot = np.empty(len(ids), dtype=np.int64)
@@ -92,7 +92,7 @@ def sprite_slices(view, state, things, ids, clip, atlas, light=True):
         if not len(ids):
             return None, 0
     rotation = rotations(view.x, view.y, things.x[ids], things.y[ids], things.angle[ids])
-    slot, mirrored = _pictures(things, ids, rotation, atlas)
+    slot, mirrored = pictures(things, ids, rotation, atlas)
     _, _, _, width, height, left, top, _ = atlas.arrays()
     width, height, left, top = width[slot], height[slot], left[slot], top[slot]
     scale = view.f / depth

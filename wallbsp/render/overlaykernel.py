@@ -1,0 +1,239 @@
+"""The compiled kernels of the masked pass (``overlay``): the same arithmetic as ``sprites``,
+``clipping`` and ``overlay.composite``, operation for operation and in the same order, one
+thing, column and pixel at a time, so they give the same bytes (the tests draw frames both
+ways).  ``overlaycompiled`` gathers their inputs.
+
+- ``visible_things``: the drawn things of the visited leaves, leaf by leaf (as
+  ``Things.things_in_leaves`` orders them), kept when ahead of the eye and not far aside;
+- ``seen_rotations``: the rotation each is seen from;
+- ``sprite_columns``: their columns clipped to the walk's windows (``ClipWindows``), as the
+  rows of a ``Slices``;
+- ``composite_slices``: slices drawn into the frame, the nearest opaque texel of a
+  pixel winning (a column's slices are drawn far to near).
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ..compiled import kernel
+from .frame import KIND_THING
+from .shading import FULL_BRIGHT, LIGHT_DISTANCE, LIGHT_LEVELS
+from .sprites import MIN_DEPTH
+
+__all__ = ["visible_things", "seen_rotations", "sprite_columns", "composite_slices"]
+
+
+@kernel
+def visible_things(leaves, n_leaves, leaf, alive, drawn, x, y, radius, vx, vy, fx, fy, rx, ry,
+                   x0, f):
+    """``(considered, ids, dx, dy, depth, along)``: how many drawn things the ``leaves``
+    hold, and those at forward depth >= MIN_DEPTH whose widest likely picture reaches the
+    view (``sprites.sprite_slices``' first cut), with their offsets from the eye."""
+    n = leaf.shape[0]
+    head = np.full(n_leaves, -1, dtype=np.int64)      # per leaf its lowest thing, then
+    after = np.empty(n, dtype=np.int64)                # the next higher one of its leaf
+    for i in range(n - 1, -1, -1):
+        if alive[i] and drawn[i] and 0 <= leaf[i] < n_leaves:
+            after[i] = head[leaf[i]]
+            head[leaf[i]] = i
+    considered = 0
+    for k in range(leaves.shape[0]):
+        i = head[leaves[k]] if 0 <= leaves[k] < n_leaves else -1
+        while i >= 0:
+            considered += 1
+            i = after[i]
+    ids = np.empty(considered, dtype=np.int64)
+    out = np.empty((4, considered), dtype=np.float64)  # dx, dy, depth, along
+    kept = 0
+    for k in range(leaves.shape[0]):
+        i = head[leaves[k]] if 0 <= leaves[k] < n_leaves else -1
+        while i >= 0:
+            dx = x[i] - vx
+            dy = y[i] - vy
+            depth = dx * fx + dy * fy
+            if depth >= MIN_DEPTH:
+                along = dx * rx + dy * ry
+                if abs(along) - 4.0 * radius[i] - 64.0 <= depth * (x0 + 1.0) / f:
+                    ids[kept] = i
+                    out[0, kept], out[1, kept], out[2, kept], out[3, kept] = dx, dy, depth, along
+                    kept += 1
+            i = after[i]
+    return considered, ids[:kept], out[0, :kept], out[1, :kept], out[2, :kept], out[3, :kept]
+
+
+@kernel
+def seen_rotations(seen, ids, angle):
+    """``sprites.rotations`` of things ``ids`` from ``seen``, the degrees of their
+    direction from the eye (numpy's: see ``overlaycompiled``)."""
+    rotation = np.empty(ids.shape[0], dtype=np.int64)
+    for k in range(ids.shape[0]):
+        facing = np.floor(angle[ids[k]] / 45.0) * 45.0
+        rotation[k] = int(np.floor((seen[k] - facing + 202.5) / 45.0)) % 8 + 1
+    return rotation
+
+
+@kernel
+def _window(col, d, own, ds_col, ds_w, ds_open_top, ds_open_bottom, ds_piece, piece_keys,
+            key_near, key_far, floor, ceiling, y0, z, f, height):
+    """``ClipWindows.windows`` of one column at depth ``d``: rows ``(top, bottom)``.  The
+    column's entries are searched alone: its keys (``col + 1/(1 + w)``, running max) lie
+    above every earlier column's, so the last key below the query's is the same one."""
+    lo, hi = 0, ds_col.shape[0]                      # the column's first entry
+    while lo < hi:
+        mid = (lo + hi) >> 1
+        if ds_col[mid] < col:
+            lo = mid + 1
+        else:
+            hi = mid
+    if lo == ds_col.shape[0] or ds_col[lo] != col:   # no piece: out of the map
+        top, bottom, beyond = 0, height, -1
+    else:
+        q = col + d / (1.0 + d)
+        last, key = lo - 1, -np.inf
+        while last + 1 < ds_col.shape[0] and ds_col[last + 1] == col:
+            key = max(key, col + 1.0 / (1.0 + ds_w[last + 1]))
+            if not key < q:
+                break
+            last += 1
+        if last >= lo:                                # a nearer piece in the column
+            top, bottom = ds_open_top[last], ds_open_bottom[last]
+            beyond = key_far[piece_keys[ds_piece[last]]]
+        else:                                         # the column's ray starts here
+            top, bottom, beyond = 0, height, key_near[piece_keys[ds_piece[lo]]]
+    if beyond >= 0 and beyond != own:
+        scale = f / d
+        floor_row = np.ceil(y0 - (floor[beyond] - z) * scale)
+        ceiling_row = np.ceil(y0 - (ceiling[beyond] - z) * scale)
+        bottom = int(min(float(bottom), floor_row))
+        top = int(max(float(top), ceiling_row))
+    return top, bottom
+
+
+@kernel
+def sprite_columns(ids, depth, along, slot, mirrored, pic_width, pic_height, pic_left,
+                   pic_top, sector, flags, thing_height, thing_z, bright, hanging, floor,
+                   ceiling, light, lit, u, x0, y0, z, f, width, height, ds_col, ds_w,
+                   ds_open_top, ds_open_bottom, ds_piece, piece_keys, key_near, key_far):
+    """``(ints (7, n), floats (3, n), kinds, drawn)``: the sprite columns of the things
+    ``visible_things`` kept (pictures chosen), clipped to the windows: ``Slices``' ``col,
+    top, bottom, slot, tx, level, index`` and ``t0, tstep, depth`` (kind: a thing), and
+    how many things have one."""
+    m = ids.shape[0]
+    first = np.empty(m, dtype=np.int64)
+    counts = np.empty(m, dtype=np.int64)
+    total = 0
+    for s in range(m):
+        w, lft = pic_width[slot[s]], pic_left[slot[s]]
+        scale = f / depth[s]
+        c1 = int(max(np.ceil(x0 + (along[s] - lft) * scale), 0.0))
+        c2 = min(np.ceil(x0 + (along[s] - lft + w) * scale), float(width))
+        first[s], counts[s] = c1, max(int(c2) - c1, 0)
+        total += counts[s]
+    ints = np.empty((7, total), dtype=np.int64)
+    floats = np.empty((3, total), dtype=np.float64)
+    if total == 0:
+        return ints, floats, np.empty(0, dtype=np.uint8), 0
+    n, drawn = 0, 0
+    for s in range(m):
+        if counts[s] == 0:
+            continue
+        i, d, p = ids[s], depth[s], slot[s]
+        w, h, lft = pic_width[p], pic_height[p], pic_left[p]
+        home = max(sector[i], 0)
+        if np.isnan(thing_z[i]):
+            feet = ceiling[home] - thing_height[i] if flags[i] & hanging else floor[home]
+        else:
+            feet = thing_z[i]
+        top_height = feet + pic_top[p]
+        scale = f / d
+        r1 = int(np.ceil(y0 - (top_height - z) * scale))
+        r2 = int(np.ceil(y0 - (top_height - h - z) * scale))
+        tstep = d / f
+        t0 = top_height - z - y0 * tstep
+        level = FULL_BRIGHT
+        if lit and not bright[i]:
+            far = LIGHT_LEVELS - 1 - 4.0 * (15 - np.floor(light[home] / 16.0))
+            level = int(min(max(np.floor(far + LIGHT_DISTANCE * (1.0 / d)), 0.0),
+                            float(FULL_BRIGHT)))
+        before = n
+        for col in range(first[s], first[s] + counts[s]):
+            tx = int(np.floor(u[col] * d - (along[s] - lft)))
+            tx = min(max(tx, 0), w - 1)
+            if mirrored[s]:
+                tx = w - 1 - tx
+            win_top, win_bottom = _window(col, d, sector[i], ds_col, ds_w, ds_open_top,
+                                          ds_open_bottom, ds_piece, piece_keys, key_near,
+                                          key_far, floor, ceiling, y0, z, f, height)
+            row1 = max(r1, win_top)
+            row2 = max(min(r2, win_bottom), row1)
+            if row2 > row1:
+                ints[0, n], ints[1, n], ints[2, n], ints[3, n] = col, row1, row2, p
+                ints[4, n], ints[5, n], ints[6, n] = tx, level, i
+                floats[0, n], floats[1, n], floats[2, n] = t0, tstep, d
+                n += 1
+        drawn += n > before
+    return ints[:, :n], floats[:, :n], np.full(n, KIND_THING, dtype=np.uint8), drawn
+
+
+@kernel
+def _colour(texel, paletted, level, lit_palette):
+    """``overlay._lit`` of one texel: the WAD's lit palette, or rgb scaled (``scaled_rgb``)."""
+    if paletted:
+        return lit_palette[level, texel]
+    scale = (level + 1.0) / LIGHT_LEVELS
+    r = np.uint32(np.rint((texel & 255) * scale))
+    g = np.uint32(np.rint(((texel >> 8) & 255) * scale))
+    b = np.uint32(np.rint(((texel >> 16) & 255) * scale))
+    return np.uint32(r | (g << 8) | (b << 16))
+
+
+@kernel
+def composite_slices(col, top, bottom, slot, tx, t0, tstep, level, depth, texels, opaque,
+                     offset, tex_height, paletted, lit_palette, colour_columns):
+    """``overlay.composite`` into ``colour_columns`` (``width × height × 3`` uint8):
+    ``(pixel, which)`` of the pixels written.  A column's slices are drawn far to near
+    (the stable order of depth, the first of equals nearest), each opaque texel taking its
+    pixel; the colours are written once, the nearest's."""
+    width, height = colour_columns.shape[0], colour_columns.shape[1]
+    n = col.shape[0]
+    order = np.argsort(depth, kind="mergesort")      # nearest first, ties in slice order
+    per_col = np.zeros(width + 1, dtype=np.int64)
+    size = 0
+    for s in range(n):
+        per_col[col[s] + 1] += 1
+        size += bottom[s] - top[s]
+    for c in range(width):
+        per_col[c + 1] += per_col[c]
+    bucket = np.empty(n, dtype=np.int64)               # by column, far to near within one
+    fill = per_col[:width].copy()
+    for k in range(n - 1, -1, -1):
+        s = order[k]
+        bucket[fill[col[s]]] = s
+        fill[col[s]] += 1
+    owner = np.full(height, -1, dtype=np.int64)        # per row: the nearest slice so far
+    found = np.empty(height, dtype=np.int64)           # and its texel
+    pixel = np.empty(size, dtype=np.int64)
+    which = np.empty(size, dtype=np.int64)
+    out = 0
+    for c in range(width):
+        for b in range(per_col[c], per_col[c + 1]):
+            s = bucket[b]
+            last_row = tex_height[slot[s]] - 1
+            base = offset[slot[s]] + tx[s] * (last_row + 1)
+            for row in range(top[s], bottom[s]):
+                texel = base + min(int(t0[s] + row * tstep[s]), last_row)
+                if opaque[texel]:
+                    owner[row], found[row] = s, texel
+        for b in range(per_col[c], per_col[c + 1]):
+            s = bucket[b]
+            for row in range(top[s], bottom[s]):
+                if owner[row] == s:
+                    owner[row] = -1
+                    rgb = _colour(texels[found[row]], paletted[slot[s]], level[s],
+                                  lit_palette)
+                    colour_columns[c, row, 0] = rgb & 255
+                    colour_columns[c, row, 1] = (rgb >> 8) & 255
+                    colour_columns[c, row, 2] = (rgb >> 16) & 255
+                    pixel[out], which[out] = c * height + row, s
+                    out += 1
+    return pixel[:out], which[:out]
