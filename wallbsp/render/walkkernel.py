@@ -229,9 +229,7 @@ def walk_kernel(view, tol, root, lines, kids, boxes, seg_ranges, inside, ends, f
                     count = _merge(starts, stops, count, c1, c2)
                 for j in range(n):
                     if n_pieces == pieces.shape[0]:
-                        grown = np.empty((2 * n_pieces, 5), dtype=np.float64)
-                        grown[:n_pieces] = pieces
-                        pieces = grown
+                        pieces = _grown_rows(pieces)
                     pieces[n_pieces, 0], pieces[n_pieces, 1] = key, seen[2]
                     pieces[n_pieces, 2], pieces[n_pieces, 3] = seen[3], spans[j, 0]
                     pieces[n_pieces, 4] = spans[j, 1]
@@ -244,12 +242,24 @@ def walk_kernel(view, tol, root, lines, kids, boxes, seg_ranges, inside, ends, f
 
 @kernel
 def _append(values, n, x):
+    """``values[n] = x`` in a buffer doubled when full: ``(buffer, n + 1)``."""
     if n == len(values):
         grown = np.empty(2 * n, dtype=values.dtype)
-        grown[:n] = values
+        for k in range(n):                 # a loop: a slice copy compiles a shape check
+            grown[k] = values[k]
         values = grown
     values[n] = x
     return values, n + 1
+
+
+@kernel
+def _grown_rows(rows):
+    """``rows`` in a buffer of twice as many rows."""
+    grown = np.empty((2 * rows.shape[0], rows.shape[1]), dtype=rows.dtype)
+    for k in range(rows.shape[0]):
+        for j in range(rows.shape[1]):
+            grown[k, j] = rows[k, j]
+    return grown
 
 
 class _WalkArrays:
