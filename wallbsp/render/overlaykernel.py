@@ -5,9 +5,9 @@ ways).  ``overlaycompiled`` gathers their inputs.
 
 - ``visible_things``: the drawn things of the visited leaves, leaf by leaf (as
   ``Things.things_in_leaves`` orders them), kept when ahead of the eye and not far aside;
-- ``seen_rotations``: the rotation each is seen from;
-- ``sprite_columns``: their columns clipped to the walk's windows (``ClipWindows``), as the
-  rows of a ``Slices``;
+- ``sprite_columns``: their pictures (as ``sprites.pictures`` chose them before: a table
+  per thing and rotation), and their columns clipped to the walk's windows
+  (``ClipWindows``), as the rows of a ``Slices``;
 - ``composite_slices``: slices drawn into the frame, the nearest opaque texel of a
   pixel winning (a column's slices are drawn far to near).
 """
@@ -20,7 +20,7 @@ from .frame import KIND_THING
 from .shading import FULL_BRIGHT, LIGHT_DISTANCE, LIGHT_LEVELS
 from .sprites import MIN_DEPTH
 
-__all__ = ["visible_things", "seen_rotations", "sprite_columns", "composite_slices"]
+__all__ = ["visible_things", "sprite_columns", "composite_slices"]
 
 
 @kernel
@@ -62,29 +62,25 @@ def visible_things(leaves, n_leaves, leaf, alive, drawn, x, y, radius, vx, vy, f
 
 
 @kernel
-def seen_rotations(seen, ids, angle):
-    """``sprites.rotations`` of things ``ids`` from ``seen``, the degrees of their
-    direction from the eye (numpy's: see ``overlaycompiled``)."""
-    rotation = np.empty(ids.shape[0], dtype=np.int64)
-    for k in range(ids.shape[0]):
-        facing = np.floor(angle[ids[k]] / 45.0) * 45.0
-        rotation[k] = int(np.floor((seen[k] - facing + 202.5) / 45.0)) % 8 + 1
-    return rotation
-
-
-@kernel
-def _window(col, d, own, ds_col, ds_w, ds_open_top, ds_open_bottom, ds_piece, piece_keys,
-            key_near, key_far, floor, ceiling, y0, z, f, height):
-    """``ClipWindows.windows`` of one column at depth ``d``: rows ``(top, bottom)``.  The
-    column's entries are searched alone: its keys (``col + 1/(1 + w)``, running max) lie
-    above every earlier column's, so the last key below the query's is the same one."""
-    lo, hi = 0, ds_col.shape[0]                      # the column's first entry
+def _first_at_least(values, x):
+    """The first index of sorted ``values`` holding ``x`` or more (searchsorted left)."""
+    lo, hi = 0, values.shape[0]
     while lo < hi:
         mid = (lo + hi) >> 1
-        if ds_col[mid] < col:
+        if values[mid] < x:
             lo = mid + 1
         else:
             hi = mid
+    return lo
+
+
+@kernel
+def _window(col, lo, d, own, ds_col, ds_w, ds_open_top, ds_open_bottom, ds_piece, piece_keys,
+            key_near, key_far, floor, ceiling, y0, z, f, height):
+    """``ClipWindows.windows`` of one column at depth ``d`` (``lo``: the column's first
+    entry, if it has one): rows ``(top, bottom)``.  The column's entries are searched
+    alone: its keys (``col + 1/(1 + w)``, running max) lie above every earlier column's, so
+    the last key below the query's is the same one."""
     if lo == ds_col.shape[0] or ds_col[lo] != col:   # no piece: out of the map
         top, bottom, beyond = 0, height, -1
     else:
@@ -110,20 +106,40 @@ def _window(col, d, own, ds_col, ds_w, ds_open_top, ds_open_bottom, ds_piece, pi
 
 
 @kernel
-def sprite_columns(ids, depth, along, slot, mirrored, pic_width, pic_height, pic_left,
-                   pic_top, sector, flags, thing_height, thing_z, bright, hanging, floor,
-                   ceiling, light, lit, u, x0, y0, z, f, width, height, ds_col, ds_w,
-                   ds_open_top, ds_open_bottom, ds_piece, piece_keys, key_near, key_far):
+def _chosen_pictures(ids, seen, angle, kind, chosen_kind, chosen):
+    """Each thing's picture ``slot * 2 + mirrored`` at the rotation it is seen from
+    (``sprites.rotations`` from ``seen``, the degrees of its direction from the eye), as
+    ``sprites.pictures`` chose it before (``chosen``, per thing and rotation, for a thing
+    of type ``chosen_kind``); -1 for a thing whose choice is not there yet."""
+    picture = np.empty(ids.shape[0], dtype=np.int64)
+    for k in range(ids.shape[0]):
+        i = ids[k]
+        facing = np.floor(angle[i] / 45.0) * 45.0
+        rotation = int(np.floor((seen[k] - facing + 202.5) / 45.0)) % 8 + 1
+        picture[k] = chosen[i, rotation - 1] if chosen_kind[i] == kind[i] else -1
+    return picture
+
+
+@kernel
+def sprite_columns(ids, depth, along, seen, angle, kind, chosen_kind, chosen, pic_width,
+                   pic_height, pic_left, pic_top, sector, flags, thing_height, thing_z, bright,
+                   hanging, floor, ceiling, light, lit, u, x0, y0, z, f, width, height,
+                   ds_col, ds_w, ds_open_top, ds_open_bottom, ds_piece, piece_keys, key_near,
+                   key_far):
     """``(ints (7, n), floats (3, n), kinds, drawn)``: the sprite columns of the things
-    ``visible_things`` kept (pictures chosen), clipped to the windows: ``Slices``' ``col,
-    top, bottom, slot, tx, level, index`` and ``t0, tstep, depth`` (kind: a thing), and
-    how many things have one."""
+    ``visible_things`` kept, clipped to the windows: ``Slices``' ``col, top, bottom, slot,
+    tx, level, index`` and ``t0, tstep, depth`` (kind: a thing), and how many things have
+    one; ``drawn`` is -1 (and nothing is made) when a thing's picture is not chosen yet
+    (``_chosen_pictures``)."""
     m = ids.shape[0]
+    picture = _chosen_pictures(ids, seen, angle, kind, chosen_kind, chosen)
     first = np.empty(m, dtype=np.int64)
     counts = np.empty(m, dtype=np.int64)
     total = 0
     for s in range(m):
-        w, lft = pic_width[slot[s]], pic_left[slot[s]]
+        if picture[s] < 0:
+            return np.empty((7, 0), np.int64), np.empty((3, 0)), np.empty(0, np.uint8), -1
+        w, lft = pic_width[picture[s] >> 1], pic_left[picture[s] >> 1]
         scale = f / depth[s]
         c1 = int(max(np.ceil(x0 + (along[s] - lft) * scale), 0.0))
         c2 = min(np.ceil(x0 + (along[s] - lft + w) * scale), float(width))
@@ -131,13 +147,11 @@ def sprite_columns(ids, depth, along, slot, mirrored, pic_width, pic_height, pic
         total += counts[s]
     ints = np.empty((7, total), dtype=np.int64)
     floats = np.empty((3, total), dtype=np.float64)
-    if total == 0:
-        return ints, floats, np.empty(0, dtype=np.uint8), 0
     n, drawn = 0, 0
     for s in range(m):
         if counts[s] == 0:
             continue
-        i, d, p = ids[s], depth[s], slot[s]
+        i, d, p = ids[s], depth[s], picture[s] >> 1
         w, h, lft = pic_width[p], pic_height[p], pic_left[p]
         home = max(sector[i], 0)
         if np.isnan(thing_z[i]):
@@ -156,12 +170,15 @@ def sprite_columns(ids, depth, along, slot, mirrored, pic_width, pic_height, pic
             level = int(min(max(np.floor(far + LIGHT_DISTANCE * (1.0 / d)), 0.0),
                             float(FULL_BRIGHT)))
         before = n
+        lo = _first_at_least(ds_col, first[s])
         for col in range(first[s], first[s] + counts[s]):
+            while lo < ds_col.shape[0] and ds_col[lo] < col:
+                lo += 1
             tx = int(np.floor(u[col] * d - (along[s] - lft)))
             tx = min(max(tx, 0), w - 1)
-            if mirrored[s]:
+            if picture[s] & 1:                            # mirrored
                 tx = w - 1 - tx
-            win_top, win_bottom = _window(col, d, sector[i], ds_col, ds_w, ds_open_top,
+            win_top, win_bottom = _window(col, lo, d, sector[i], ds_col, ds_w, ds_open_top,
                                           ds_open_bottom, ds_piece, piece_keys, key_near,
                                           key_far, floor, ceiling, y0, z, f, height)
             row1 = max(r1, win_top)
