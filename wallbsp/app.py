@@ -30,6 +30,8 @@ from __future__ import annotations
 import functools
 import os
 import statistics
+import sys
+import threading
 import time
 from dataclasses import dataclass, field
 from types import SimpleNamespace
@@ -127,6 +129,7 @@ def run_walkthrough(tree, *, size=(320, 200), window=(960, 600), frames=None, tu
         os.environ["SDL_VIDEODRIVER"] = "dummy"
     walk = Walkthrough.at_start(tree, size, window, skill, order=order, fov=fov, demo=demo,
                                 next_level=next_level)
+    prepare_renderer(walk)
     open_display(walk)
     try:
         times = run_frames(walk, frames, turn, max_fps)
@@ -135,6 +138,23 @@ def run_walkthrough(tree, *, size=(320, 200), window=(960, 600), frames=None, tu
     finally:
         close_display(walk)
     return _summary(walk, times)
+
+
+COMPILING = ("wallbsp: compiling the renderer's kernels (only on the first run after an "
+             "install; it takes up to a minute)...")
+
+
+def prepare_renderer(walk):
+    """Draw the first view before the window opens.  On the first run after an install
+    the renderer's kernels are compiled then (numba keeps them on disk afterwards), so
+    a start that takes more than a second says why."""
+    notice = threading.Timer(1.0, print, (COMPILING,), {"file": sys.stderr, "flush": True})
+    notice.start()
+    try:
+        render(walk.world, view_camera(walk), *walk.size, order=walk.order,
+               textures=walk.textures)
+    finally:
+        notice.cancel()
 
 
 def run_frames(walk, frames=None, turn=0.0, max_fps=None):
