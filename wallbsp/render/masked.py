@@ -24,7 +24,7 @@ from .shading import FULL_BRIGHT, light_levels
 from .tables import key_light
 from .textures import side_geometry, switched_name
 
-__all__ = ["masked_slices", "has_masked_walls", "shows_masked_walls"]
+__all__ = ["masked_slices", "has_masked_walls", "masked_key_slots"]
 
 
 class _MaskedKeys:
@@ -70,11 +70,10 @@ def has_masked_walls(tables, state, atlas) -> bool:
     return _masked_keys(tables, state, atlas).any
 
 
-def shows_masked_walls(tables, state, piece_keys, atlas) -> bool:
-    """Whether any of the pieces (``piece_keys``: their side keys) has a middle texture
-    the atlas can draw: when none has, ``masked_slices`` gives None."""
-    keys = _masked_keys(tables, state, atlas)
-    return keys.any and len(piece_keys) > 0 and keys.slot[piece_keys].max() >= 0
+def masked_key_slots(tables, state, atlas) -> np.ndarray:
+    """Per side key, the atlas slot of its masked middle texture now (-1: none): a frame
+    none of whose pieces has one has no masked-wall slices."""
+    return _masked_keys(tables, state, atlas).slot
 
 
 def masked_slices(view, state, tables, piece_keys, drawsegs, atlas, light=True):

@@ -19,7 +19,7 @@ from .atlas import atlas_for
 from .clipping import ClipWindows, Slices
 from .fill import drawsegs, front_to_back_runs
 from .masked import has_masked_walls, masked_slices
-from .overlaycompiled import compiled_composite, compiled_slices
+from .overlaycompiled import compiled_overlay
 from .rows import Entries
 from .sprites import sprite_slices
 from .textures import level_resources
@@ -154,11 +154,10 @@ def draw_masked(view, state, tables, walk, piece_keys, make_drawsegs, colour_col
     ``DrawSegs``.  With the kernels on, ``overlaycompiled`` draws them."""
     atlas = atlas_for(resources)
     if kernels_enabled():
-        slices, stats = compiled_slices(view, state, tables, walk, piece_keys, make_drawsegs,
-                                        atlas, light)
-        if slices is None:
-            return _NOTHING, stats
-        return Overlay(*compiled_composite(slices, atlas, colour_columns), slices), stats
+        pixel, which, reports, stats = compiled_overlay(view, state, tables, walk, piece_keys,
+                                                        make_drawsegs, atlas, colour_columns,
+                                                        light)
+        return (_NOTHING if reports is None else Overlay(pixel, which, reports)), stats
     drawsegs = make_drawsegs()
     things = state.things
     ids = things.things_in_leaves(walk.leaves)

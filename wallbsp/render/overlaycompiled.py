@@ -1,84 +1,82 @@
-"""The masked pass by the compiled kernels (``overlaykernel``): the same slices and the same
-bytes as ``overlay.draw_masked``'s numpy code, in a handful of calls a frame.
+"""The masked pass by the compiled kernels (``overlaykernel``): the same pixels, the same
+reports and the same counts as ``overlay.draw_masked``'s numpy code, in a handful of calls a
+frame.
 
 This module gathers the kernels' inputs: the things of the visited leaves come out of
-``visible_things`` already cut to those ahead of the eye; ``sprite_columns`` looks their
-pictures up in a table of the choices ``sprites.pictures`` made (a thing seen from a
-rotation not chosen before sends the frame back here once, to choose it) and clips their
-columns.  The angle to a thing is numpy's ``arctan2``, as in the numpy code: a compiled
-``atan2`` need not share its last bit.  Masked walls are ``masked.masked_slices`` (only
-when a drawn piece has one); ``composite_slices`` draws them all.  The walk's ``DrawSegs``
-are made only when something needs clipping.
+``visible_things`` already cut to those ahead of the eye (and whether a drawn piece has a
+masked middle); ``draw_things`` looks their pictures up in a table of the choices
+``sprites.pictures`` made (a thing seen from a rotation not chosen before sends the frame
+back here once, to choose it), clips their columns and draws them with the masked walls'
+slices (``masked.masked_slices``, numpy).  The angle to a thing is numpy's ``arctan2``, as
+in the numpy code: a compiled ``atan2`` need not share its last bit.  The walk's
+``DrawSegs`` are made only when something needs clipping.
 """
 from __future__ import annotations
 
 import weakref
+from typing import NamedTuple
 
 import numpy as np
 
 from ..thingtypes import SPAWNCEILING
-from .clipping import Slices
-from .masked import masked_slices, shows_masked_walls
-from .overlaykernel import composite_slices, sprite_columns, visible_things
+from .masked import masked_key_slots, masked_slices
+from .overlaykernel import draw_things, visible_things
 from .sprites import pictures, rotations
 
-__all__ = ["compiled_slices", "compiled_composite"]
+__all__ = ["compiled_overlay", "Reports"]
 
 _NO_PALETTE = np.zeros((1, 1), dtype="<u4")        # an atlas of rgb pictures and boxes only
+_NO_WALLS = np.zeros((7, 0), dtype=np.int64), np.zeros((3, 0), dtype=np.float64)
 
 
-def compiled_slices(view, state, tables, walk, piece_keys, make_drawsegs, atlas, light=True):
-    """``(Slices or None, stats)`` of the things of the walk's leaves and the masked walls
-    of its pieces (``overlay.draw_masked``'s stats); ``make_drawsegs()`` gives the walk's
-    ``DrawSegs``."""
+class Reports(NamedTuple):
+    """What the drawn slices report per slice (``Slices``' ``kind``, ``index``, ``depth``)."""
+    kind: np.ndarray
+    index: np.ndarray
+    depth: np.ndarray
+
+
+def compiled_overlay(view, state, tables, walk, piece_keys, make_drawsegs, atlas,
+                     colour_columns, light=True):
+    """Draw the things of the walk's leaves and the masked walls of its pieces into
+    ``colour_columns``: ``(pixel, which, Reports or None, stats)`` (``overlay.draw_masked``'s
+    ``Overlay`` and stats); ``make_drawsegs()`` gives the walk's ``DrawSegs``."""
     things = state.things
-    considered, ids, dx, dy, depth, along = visible_things(
+    considered, ids, dx, dy, depth, along, masked = visible_things(
         np.asarray(walk.leaves, dtype=np.int64), len(things.tree.leaf_sector), things.leaf,
         things.alive, things.drawn, things.x, things.y, things.radius, view.x, view.y,
-        view.fx, view.fy, view.rx, view.ry, view.x0, view.f)
+        view.fx, view.fy, view.rx, view.ry, view.x0, view.f, piece_keys,
+        masked_key_slots(tables, state, atlas))
     stats = {"things_considered": int(considered), "things_drawn": 0, "masked_columns": 0}
-    parts, drawsegs = [], None
-    if len(ids):
-        drawsegs = make_drawsegs()
-        sprites, stats["things_drawn"] = _sprite_slices(view, state, tables, things, ids, depth,
-                                                        along, dx, dy, piece_keys, drawsegs,
-                                                        atlas, light)
-        if sprites is not None:
-            parts.append(sprites)
-    if shows_masked_walls(tables, state, piece_keys, atlas):
-        walls = masked_slices(view, state, tables, piece_keys,
-                              make_drawsegs() if drawsegs is None else drawsegs, atlas, light)
-        if walls is not None:
-            stats["masked_columns"] = len(walls)
-            parts.append(walls)
-    if not parts:
-        return None, stats
-    return (parts[0] if len(parts) == 1 else Slices.join(parts)), stats
-
-
-def _sprite_slices(view, state, tables, things, ids, depth, along, dx, dy, piece_keys,
-                   drawsegs, atlas, light):
-    """``(Slices or None, drawn)``: ``sprites.sprite_slices`` of the kept things."""
+    if not (len(ids) or masked):
+        return None, None, None, stats
+    drawsegs = make_drawsegs()
+    walls = masked_slices(view, state, tables, piece_keys, drawsegs, atlas, light) \
+        if masked else None
+    if walls is None:
+        wall_rows = _NO_WALLS
+    else:
+        stats["masked_columns"] = len(walls)
+        wall_rows = (np.stack([walls.col, walls.top, walls.bottom, walls.slot, walls.tx,
+                               walls.level, walls.index]),
+                     np.stack([walls.t0, walls.tstep, walls.depth]))
     seen = np.degrees(np.arctan2(dy, dx))
-    _, _, _, width, height, left, top, _ = atlas.arrays()
     table = _choices(atlas, things)
     for _ in range(2):                       # again once the missing choices are made
-        ints, floats, kinds, drawn = sprite_columns(
+        texels, opaque, offset, width, height, left, top, paletted = atlas.arrays()
+        kind, index, slice_depth, pixel, which, drawn = draw_things(
             ids, depth, along, seen, things.angle, things.type, table.kind, table.chosen,
             width, height, left, top, things.sector, things.flags, things.height, things.z,
             things.bright, SPAWNCEILING, state.floor, state.ceiling, state.light, bool(light),
-            view.u, view.x0, view.y0, view.z, view.f, view.width, view.height, drawsegs.col,
-            drawsegs.w, drawsegs.open_top, drawsegs.open_bottom, drawsegs.piece, piece_keys,
-            tables.key_near, tables.key_far)
+            view.u, view.x0, view.y0, view.z, view.f, drawsegs.col, drawsegs.w,
+            drawsegs.open_top, drawsegs.open_bottom, drawsegs.piece, piece_keys,
+            tables.key_near, tables.key_far, *wall_rows, texels, opaque, offset, paletted,
+            _NO_PALETTE if atlas.lit_palette is None else atlas.lit_palette, colour_columns)
         if drawn >= 0:
             break
         table.choose(things, ids, view, atlas)
-        _, _, _, width, height, left, top, _ = atlas.arrays()     # new pictures, new slots
-    if not len(kinds):
-        return None, int(drawn)
-    col, top, bottom, slot, tx, level, index = ints
-    t0, tstep, depth = floats
-    return Slices(col, top, bottom, slot, tx, t0, tstep, level, kinds, index, depth), int(drawn)
+    stats["things_drawn"] = int(drawn)
+    return pixel, which, Reports(kind, index, slice_depth), stats
 
 
 class _Choices:
@@ -119,12 +117,3 @@ def _choices(atlas, things) -> _Choices:
     if table is None:
         table = per_atlas[things] = _Choices()
     return table.fit(len(things))
-
-
-def compiled_composite(slices, atlas, colour_columns):
-    """``(pixel, which)``: ``overlay.composite`` of ``slices`` into ``colour_columns``."""
-    texels, opaque, offset, _, tex_height, _, _, paletted = atlas.arrays()
-    palette = _NO_PALETTE if atlas.lit_palette is None else atlas.lit_palette
-    return composite_slices(slices.col, slices.top, slices.bottom, slices.slot, slices.tx,
-                            slices.t0, slices.tstep, slices.level, slices.depth, texels,
-                            opaque, offset, tex_height, paletted, palette, colour_columns)

@@ -5,30 +5,35 @@ ways).  ``overlaycompiled`` gathers their inputs.
 
 - ``visible_things``: the drawn things of the visited leaves, leaf by leaf (as
   ``Things.things_in_leaves`` orders them), kept when ahead of the eye and not far aside;
-- ``sprite_columns``: their pictures (as ``sprites.pictures`` chose them before: a table
-  per thing and rotation), and their columns clipped to the walk's windows
-  (``ClipWindows``), as the rows of a ``Slices``;
-- ``composite_slices``: slices drawn into the frame, the nearest opaque texel of a
-  pixel winning (a column's slices are drawn far to near).
+- ``draw_things``: their pictures (as ``sprites.pictures`` chose them before: a table per
+  thing and rotation), their columns clipped to the walk's windows (``ClipWindows``) as the
+  rows of a ``Slices``, joined by the masked walls' slices and drawn into the frame, the
+  nearest opaque texel of a pixel winning (a column's slices are drawn far to near).
 """
 from __future__ import annotations
 
 import numpy as np
 
 from ..compiled import kernel
-from .frame import KIND_THING
+from .frame import KIND_THING, KIND_WALL
 from .shading import FULL_BRIGHT, LIGHT_DISTANCE, LIGHT_LEVELS
 from .sprites import MIN_DEPTH
 
-__all__ = ["visible_things", "sprite_columns", "composite_slices"]
+__all__ = ["visible_things", "draw_things"]
 
 
 @kernel
 def visible_things(leaves, n_leaves, leaf, alive, drawn, x, y, radius, vx, vy, fx, fy, rx, ry,
-                   x0, f):
-    """``(considered, ids, dx, dy, depth, along)``: how many drawn things the ``leaves``
-    hold, and those at forward depth >= MIN_DEPTH whose widest likely picture reaches the
-    view (``sprites.sprite_slices``' first cut), with their offsets from the eye."""
+                   x0, f, piece_keys, masked_slot):
+    """``(considered, ids, dx, dy, depth, along, masked)``: how many drawn things the
+    ``leaves`` hold, and those at forward depth >= MIN_DEPTH whose widest likely picture
+    reaches the view (``sprites.sprite_slices``' first cut), with their offsets from the
+    eye; and whether a piece's side key has a masked middle (``masked_slot`` >= 0)."""
+    masked = False
+    for k in range(piece_keys.shape[0]):
+        if masked_slot[piece_keys[k]] >= 0:
+            masked = True
+            break
     n = leaf.shape[0]
     head = np.full(n_leaves, -1, dtype=np.int64)      # per leaf its lowest thing, then
     after = np.empty(n, dtype=np.int64)                # the next higher one of its leaf
@@ -58,7 +63,8 @@ def visible_things(leaves, n_leaves, leaf, alive, drawn, x, y, radius, vx, vy, f
                     out[0, kept], out[1, kept], out[2, kept], out[3, kept] = dx, dy, depth, along
                     kept += 1
             i = after[i]
-    return considered, ids[:kept], out[0, :kept], out[1, :kept], out[2, :kept], out[3, :kept]
+    return (considered, ids[:kept], out[0, :kept], out[1, :kept], out[2, :kept],
+            out[3, :kept], masked)
 
 
 @kernel
@@ -75,19 +81,24 @@ def _first_at_least(values, x):
 
 
 @kernel
-def _window(col, lo, d, own, ds_col, ds_w, ds_open_top, ds_open_bottom, ds_piece, piece_keys,
-            key_near, key_far, floor, ceiling, y0, z, f, height):
-    """``ClipWindows.windows`` of one column at depth ``d`` (``lo``: the column's first
-    entry, if it has one): rows ``(top, bottom)``.  The column's entries are searched
-    alone: its keys (``col + 1/(1 + w)``, running max) lie above every earlier column's, so
-    the last key below the query's is the same one."""
+def _window(col, lo, fraction, scale, own, ds, keys, key_near, key_far, floor, ceiling, y0, z,
+            height):
+    """``ClipWindows.windows`` of one column for something of ``own`` sector at depth ``d``
+    (``fraction``: ``d / (1 + d)``; ``scale``: ``f / d``) and the column's first entry
+    ``lo`` (if it has one): rows ``(top, bottom)``.  The column's entries are searched
+    alone: their keys (``col + 1/(1 + w)``, running max) lie above every earlier column's,
+    so the last key below the query's is the same one.  ``keys`` keeps each entry's
+    ``1/(1 + w)`` once made (NaN before)."""
+    ds_col, ds_w, ds_open_top, ds_open_bottom, ds_piece, piece_keys = ds
     if lo == ds_col.shape[0] or ds_col[lo] != col:   # no piece: out of the map
         top, bottom, beyond = 0, height, -1
     else:
-        q = col + d / (1.0 + d)
+        q = col + fraction
         last, key = lo - 1, -np.inf
         while last + 1 < ds_col.shape[0] and ds_col[last + 1] == col:
-            key = max(key, col + 1.0 / (1.0 + ds_w[last + 1]))
+            if np.isnan(keys[last + 1]):
+                keys[last + 1] = 1.0 / (1.0 + ds_w[last + 1])
+            key = max(key, col + keys[last + 1])
             if not key < q:
                 break
             last += 1
@@ -97,7 +108,6 @@ def _window(col, lo, d, own, ds_col, ds_w, ds_open_top, ds_open_bottom, ds_piece
         else:                                         # the column's ray starts here
             top, bottom, beyond = 0, height, key_near[piece_keys[ds_piece[lo]]]
     if beyond >= 0 and beyond != own:
-        scale = f / d
         floor_row = np.ceil(y0 - (floor[beyond] - z) * scale)
         ceiling_row = np.ceil(y0 - (ceiling[beyond] - z) * scale)
         bottom = int(min(float(bottom), floor_row))
@@ -121,15 +131,15 @@ def _chosen_pictures(ids, seen, angle, kind, chosen_kind, chosen):
 
 
 @kernel
-def sprite_columns(ids, depth, along, seen, angle, kind, chosen_kind, chosen, pic_width,
-                   pic_height, pic_left, pic_top, sector, flags, thing_height, thing_z, bright,
-                   hanging, floor, ceiling, light, lit, u, x0, y0, z, f, width, height,
-                   ds_col, ds_w, ds_open_top, ds_open_bottom, ds_piece, piece_keys, key_near,
-                   key_far):
-    """``(ints (7, n), floats (3, n), kinds, drawn)``: the sprite columns of the things
-    ``visible_things`` kept, clipped to the windows: ``Slices``' ``col, top, bottom, slot,
-    tx, level, index`` and ``t0, tstep, depth`` (kind: a thing), and how many things have
-    one; ``drawn`` is -1 (and nothing is made) when a thing's picture is not chosen yet
+def _sprite_columns(ids, depth, along, seen, angle, kind, chosen_kind, chosen, pic_width,
+                    pic_height, pic_left, pic_top, sector, flags, thing_height, thing_z,
+                    bright, hanging, floor, ceiling, light, lit, u, x0, y0, z, f, width,
+                    height, ds_col, ds_w, ds_open_top, ds_open_bottom, ds_piece, piece_keys,
+                    key_near, key_far):
+    """``(ints (7, n), floats (3, n), drawn)``: the sprite columns of the things
+    ``visible_things`` kept, clipped to the windows, as ``Slices``' ``col, top, bottom,
+    slot, tx, level, index`` and ``t0, tstep, depth``, and how many things have one;
+    ``drawn`` is -1 (and nothing is made) when a thing's picture is not chosen yet
     (``_chosen_pictures``)."""
     m = ids.shape[0]
     picture = _chosen_pictures(ids, seen, angle, kind, chosen_kind, chosen)
@@ -138,7 +148,7 @@ def sprite_columns(ids, depth, along, seen, angle, kind, chosen_kind, chosen, pi
     total = 0
     for s in range(m):
         if picture[s] < 0:
-            return np.empty((7, 0), np.int64), np.empty((3, 0)), np.empty(0, np.uint8), -1
+            return np.empty((7, 0), np.int64), np.empty((3, 0)), -1
         w, lft = pic_width[picture[s] >> 1], pic_left[picture[s] >> 1]
         scale = f / depth[s]
         c1 = int(max(np.ceil(x0 + (along[s] - lft) * scale), 0.0))
@@ -147,6 +157,8 @@ def sprite_columns(ids, depth, along, seen, angle, kind, chosen_kind, chosen, pi
         total += counts[s]
     ints = np.empty((7, total), dtype=np.int64)
     floats = np.empty((3, total), dtype=np.float64)
+    ds = (ds_col, ds_w, ds_open_top, ds_open_bottom, ds_piece, piece_keys)
+    keys = np.full(ds_col.shape[0], np.nan)
     n, drawn = 0, 0
     for s in range(m):
         if counts[s] == 0:
@@ -169,8 +181,11 @@ def sprite_columns(ids, depth, along, seen, angle, kind, chosen_kind, chosen, pi
             far = LIGHT_LEVELS - 1 - 4.0 * (15 - np.floor(light[home] / 16.0))
             level = int(min(max(np.floor(far + LIGHT_DISTANCE * (1.0 / d)), 0.0),
                             float(FULL_BRIGHT)))
+        if min(r2, height) <= max(r1, 0):             # above or below the frame
+            continue
         before = n
         lo = _first_at_least(ds_col, first[s])
+        fraction = d / (1.0 + d)
         for col in range(first[s], first[s] + counts[s]):
             while lo < ds_col.shape[0] and ds_col[lo] < col:
                 lo += 1
@@ -178,9 +193,8 @@ def sprite_columns(ids, depth, along, seen, angle, kind, chosen_kind, chosen, pi
             tx = min(max(tx, 0), w - 1)
             if picture[s] & 1:                            # mirrored
                 tx = w - 1 - tx
-            win_top, win_bottom = _window(col, lo, d, sector[i], ds_col, ds_w, ds_open_top,
-                                          ds_open_bottom, ds_piece, piece_keys, key_near,
-                                          key_far, floor, ceiling, y0, z, f, height)
+            win_top, win_bottom = _window(col, lo, fraction, scale, sector[i], ds, keys,
+                                          key_near, key_far, floor, ceiling, y0, z, height)
             row1 = max(r1, win_top)
             row2 = max(min(r2, win_bottom), row1)
             if row2 > row1:
@@ -189,7 +203,7 @@ def sprite_columns(ids, depth, along, seen, angle, kind, chosen_kind, chosen, pi
                 floats[0, n], floats[1, n], floats[2, n] = t0, tstep, d
                 n += 1
         drawn += n > before
-    return ints[:, :n], floats[:, :n], np.full(n, KIND_THING, dtype=np.uint8), drawn
+    return ints[:, :n], floats[:, :n], drawn
 
 
 @kernel
@@ -205,8 +219,15 @@ def _colour(texel, paletted, level, lit_palette):
 
 
 @kernel
-def composite_slices(col, top, bottom, slot, tx, t0, tstep, level, depth, texels, opaque,
-                     offset, tex_height, paletted, lit_palette, colour_columns):
+def _put(colour_columns, col, row, rgb):
+    colour_columns[col, row, 0] = rgb & 255
+    colour_columns[col, row, 1] = (rgb >> 8) & 255
+    colour_columns[col, row, 2] = (rgb >> 16) & 255
+
+
+@kernel
+def _composite(col, top, bottom, slot, tx, t0, tstep, level, depth, texels, opaque, offset,
+               tex_height, paletted, lit_palette, colour_columns):
     """``overlay.composite`` into ``colour_columns`` (``width × height × 3`` uint8):
     ``(pixel, which)`` of the pixels written.  A column's slices are drawn far to near
     (the stable order of depth, the first of equals nearest), each opaque texel taking its
@@ -233,24 +254,63 @@ def composite_slices(col, top, bottom, slot, tx, t0, tstep, level, depth, texels
     which = np.empty(size, dtype=np.int64)
     out = 0
     for c in range(width):
-        for b in range(per_col[c], per_col[c + 1]):
+        alone = per_col[c + 1] - per_col[c] == 1      # nothing to settle: draw it
+        for b in range(per_col[c], per_col[c + 1]):    # far to near: the nearest owns a row
             s = bucket[b]
             last_row = tex_height[slot[s]] - 1
             base = offset[slot[s]] + tx[s] * (last_row + 1)
             for row in range(top[s], bottom[s]):
                 texel = base + min(int(t0[s] + row * tstep[s]), last_row)
                 if opaque[texel]:
-                    owner[row], found[row] = s, texel
+                    if alone:
+                        _put(colour_columns, c, row, _colour(texels[texel], paletted[slot[s]],
+                                                             level[s], lit_palette))
+                        pixel[out], which[out] = c * height + row, s
+                        out += 1
+                    else:
+                        owner[row], found[row] = s, texel
+        if alone:
+            continue
         for b in range(per_col[c], per_col[c + 1]):
             s = bucket[b]
             for row in range(top[s], bottom[s]):
                 if owner[row] == s:
                     owner[row] = -1
-                    rgb = _colour(texels[found[row]], paletted[slot[s]], level[s],
-                                  lit_palette)
-                    colour_columns[c, row, 0] = rgb & 255
-                    colour_columns[c, row, 1] = (rgb >> 8) & 255
-                    colour_columns[c, row, 2] = (rgb >> 16) & 255
+                    _put(colour_columns, c, row, _colour(texels[found[row]], paletted[slot[s]],
+                                                         level[s], lit_palette))
                     pixel[out], which[out] = c * height + row, s
                     out += 1
     return pixel[:out], which[:out]
+
+
+@kernel
+def draw_things(ids, depth, along, seen, angle, kind, chosen_kind, chosen, pic_width,
+                pic_height, pic_left, pic_top, sector, flags, thing_height, thing_z, bright,
+                hanging, floor, ceiling, light, lit, u, x0, y0, z, f, ds_col, ds_w,
+                ds_open_top, ds_open_bottom, ds_piece, piece_keys, key_near, key_far,
+                wall_ints, wall_floats, texels, opaque, offset, paletted, lit_palette,
+                colour_columns):
+    """Draw the sprites of the kept things and the masked-wall slices (``wall_ints``,
+    ``wall_floats``: rows as ``_sprite_columns`` gives them) into ``colour_columns``
+    (``width × height × 3`` uint8), the nearest opaque texel of a pixel winning; returns
+    ``(kind, index, depth)`` of the slices (sprites first), ``(pixel, which)`` of the
+    pixels written and how many things were drawn (-1, nothing drawn: a picture to
+    choose first)."""
+    ints, floats, drawn = _sprite_columns(
+        ids, depth, along, seen, angle, kind, chosen_kind, chosen, pic_width, pic_height,
+        pic_left, pic_top, sector, flags, thing_height, thing_z, bright, hanging, floor,
+        ceiling, light, lit, u, x0, y0, z, f, colour_columns.shape[0],
+        colour_columns.shape[1], ds_col, ds_w, ds_open_top, ds_open_bottom, ds_piece,
+        piece_keys, key_near, key_far)
+    n_sprites = ints.shape[1]
+    if drawn < 0 or n_sprites + wall_ints.shape[1] == 0:
+        empty = np.empty(0, dtype=np.int64)
+        return np.empty(0, np.uint8), empty, np.empty(0), empty, empty, drawn
+    ints = np.concatenate((ints, wall_ints), axis=1)
+    floats = np.concatenate((floats, wall_floats), axis=1)
+    kinds = np.full(ints.shape[1], KIND_WALL, dtype=np.uint8)
+    kinds[:n_sprites] = KIND_THING
+    pixel, which = _composite(ints[0], ints[1], ints[2], ints[3], ints[4], floats[0],
+                              floats[1], ints[5], floats[2], texels, opaque, offset,
+                              pic_height, paletted, lit_palette, colour_columns)
+    return kinds, ints[6], floats[2], pixel, which, drawn
