@@ -24,10 +24,10 @@ from .shading import FULL_BRIGHT, light_levels
 from .tables import key_light
 from .textures import side_geometry, switched_name
 
-__all__ = ["masked_slices", "has_masked_walls", "masked_key_slots"]
+__all__ = ["masked_slices", "has_masked_walls", "masked_keys", "MaskedKeys"]
 
 
-class _MaskedKeys:
+class MaskedKeys:
     """Per side key: the atlas slot of its middle texture now (-1: none), where the
     texture starts and runs, and its offsets and pegging (``textures.side_geometry``)."""
 
@@ -54,32 +54,28 @@ class _MaskedKeys:
 _KEYS: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
 
 
-def _masked_keys(tables, state, atlas) -> _MaskedKeys:
+def masked_keys(tables, state, atlas) -> MaskedKeys:
+    """The ``MaskedKeys`` of the state's middle textures now (made once per texture
+    version)."""
     per_state = _KEYS.get(atlas)
     if per_state is None:                 # (setdefault would make a dictionary every call)
         per_state = _KEYS[atlas] = weakref.WeakKeyDictionary()
     cached = per_state.get(state)
     if cached is None or cached.texture_version != state.texture_version \
             or cached.slot.shape[0] != len(tables.key_wall):
-        cached = per_state[state] = _MaskedKeys(tables, state, atlas)
+        cached = per_state[state] = MaskedKeys(tables, state, atlas)
     return cached
 
 
 def has_masked_walls(tables, state, atlas) -> bool:
     """Whether any two-sided wall of the level has a middle texture the atlas can draw."""
-    return _masked_keys(tables, state, atlas).any
-
-
-def masked_key_slots(tables, state, atlas) -> np.ndarray:
-    """Per side key, the atlas slot of its masked middle texture now (-1: none): a frame
-    none of whose pieces has one has no masked-wall slices."""
-    return _masked_keys(tables, state, atlas).slot
+    return masked_keys(tables, state, atlas).any
 
 
 def masked_slices(view, state, tables, piece_keys, drawsegs, atlas, light=True):
     """``Slices`` of the masked middle textures of the drawn pieces (None when none):
     ``piece_keys`` are the side keys of the walk's pieces, ``drawsegs`` their entries."""
-    keys = _masked_keys(tables, state, atlas)
+    keys = masked_keys(tables, state, atlas)
     if not len(drawsegs.col) or not keys.any:
         return None
     entry_key = piece_keys[drawsegs.piece]

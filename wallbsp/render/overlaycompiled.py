@@ -1,15 +1,15 @@
-"""The masked pass by the compiled kernels (``overlaykernel``): the same pixels, the same
-reports and the same counts as ``overlay.draw_masked``'s numpy code, in a handful of calls a
-frame.
+"""The masked pass by the compiled kernels (``overlaykernel``, ``maskedkernel``): the same
+pixels, the same reports and the same counts as ``overlay.draw_masked``'s numpy code, in two
+to four calls a frame.
 
 This module gathers the kernels' inputs: the things of the visited leaves come out of
 ``visible_things`` already cut to those ahead of the eye (and whether a drawn piece has a
-masked middle); ``draw_things`` looks their pictures up in a table of the choices
-``sprites.pictures`` made (a thing seen from a rotation not chosen before sends the frame
-back here once, to choose it), clips their columns and draws them with the masked walls'
-slices (``masked.masked_slices``, numpy).  The angle to a thing is numpy's ``arctan2``, as
-in the numpy code: a compiled ``atan2`` need not share its last bit.  The walk's
-``DrawSegs`` are made only when something needs clipping.
+masked middle: then ``masked_columns`` makes the masked walls' slices); ``draw_things``
+looks the things' pictures up in a table of the choices ``sprites.pictures`` made (a thing
+seen from a rotation not chosen before sends the frame back here once, to choose it), clips
+their columns and draws them with the masked walls' slices.  The angle to a thing is
+numpy's ``arctan2``, as in the numpy code: a compiled ``atan2`` need not share its last
+bit.  The walk's ``DrawSegs`` are made only when something needs clipping.
 """
 from __future__ import annotations
 
@@ -19,8 +19,10 @@ from typing import NamedTuple
 import numpy as np
 
 from ..thingtypes import SPAWNCEILING
-from .masked import masked_key_slots, masked_slices
+from .masked import masked_keys
+from .maskedkernel import masked_columns
 from .overlaykernel import draw_things, visible_things
+from .tables import key_light
 from .sprites import pictures, rotations
 
 __all__ = ["compiled_overlay", "Reports"]
@@ -42,28 +44,29 @@ def compiled_overlay(view, state, tables, walk, piece_keys, make_drawsegs, atlas
     ``colour_columns``: ``(pixel, which, Reports or None, stats)`` (``overlay.draw_masked``'s
     ``Overlay`` and stats); ``make_drawsegs()`` gives the walk's ``DrawSegs``."""
     things = state.things
+    keys = masked_keys(tables, state, atlas)
     considered, ids, dx, dy, depth, along, masked = visible_things(
         np.asarray(walk.leaves, dtype=np.int64), len(things.tree.leaf_sector), things.leaf,
         things.alive, things.drawn, things.x, things.y, things.radius, view.x, view.y,
-        view.fx, view.fy, view.rx, view.ry, view.x0, view.f, piece_keys,
-        masked_key_slots(tables, state, atlas))
+        view.fx, view.fy, view.rx, view.ry, view.x0, view.f, piece_keys, keys.slot)
     stats = {"things_considered": int(considered), "things_drawn": 0, "masked_columns": 0}
     if not (len(ids) or masked):
         return None, None, None, stats
     drawsegs = make_drawsegs()
-    walls = masked_slices(view, state, tables, piece_keys, drawsegs, atlas, light) \
-        if masked else None
-    if walls is None:
-        wall_rows = _NO_WALLS
-    else:
-        stats["masked_columns"] = len(walls)
-        wall_rows = (np.stack([walls.col, walls.top, walls.bottom, walls.slot, walls.tx,
-                               walls.level, walls.index]),
-                     np.stack([walls.t0, walls.tstep, walls.depth]))
+    texels, opaque, offset, width, height, left, top, paletted = atlas.arrays()
+    wall_rows = _NO_WALLS
+    if masked:
+        wall_rows = masked_columns(
+            drawsegs.piece, drawsegs.col, drawsegs.w, drawsegs.open_top, drawsegs.open_bottom,
+            piece_keys, keys.slot, keys.start, keys.direction, keys.x_offset, keys.y_offset,
+            keys.unpegged, key_light(tables, state), state.wall_x_offset, tables.key_wall,
+            tables.key_near, tables.key_far, state.floor, state.ceiling, width, height,
+            bool(light), view.u, view.x, view.y, view.z, view.fx, view.fy, view.rx, view.ry,
+            view.f, view.y0)
+        stats["masked_columns"] = wall_rows[0].shape[1]
     seen = np.degrees(np.arctan2(dy, dx))
     table = _choices(atlas, things)
     for _ in range(2):                       # again once the missing choices are made
-        texels, opaque, offset, width, height, left, top, paletted = atlas.arrays()
         kind, index, slice_depth, pixel, which, drawn = draw_things(
             ids, depth, along, seen, things.angle, things.type, table.kind, table.chosen,
             width, height, left, top, things.sector, things.flags, things.height, things.z,
@@ -75,6 +78,7 @@ def compiled_overlay(view, state, tables, walk, piece_keys, make_drawsegs, atlas
         if drawn >= 0:
             break
         table.choose(things, ids, view, atlas)
+        texels, opaque, offset, width, height, left, top, paletted = atlas.arrays()
     stats["things_drawn"] = int(drawn)
     return pixel, which, Reports(kind, index, slice_depth), stats
 
