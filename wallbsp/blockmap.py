@@ -35,7 +35,8 @@ def _listing(ids, x0, y0, nx, ny) -> dict:
 
 
 class Blockmap:
-    """Some things by ``BLOCK`` cell, with their boxes ``(x, y, r)`` and ``box_sides``.
+    """Some things by ``BLOCK`` cell, with their boxes ``(x, y, r)`` (``box``: by id;
+    ``boxes``: an ``(n, 3)`` array in id order).
 
     A thing is listed, in index order, in every cell that its box grown by ``REACH`` meets,
     so a mover reaching no further finds all it may touch in the one cell under its centre
@@ -45,12 +46,11 @@ class Blockmap:
     REACH = 64.0
     WIDE = 64
 
-    def __init__(self, ids, x, y, r, sides):
-        """Things ``ids`` (ascending) at ``x``, ``y`` of radius ``r`` (arrays); ``sides``
-        their ``box_sides``, four each."""
+    def __init__(self, ids, x, y, r):
+        """Things ``ids`` (ascending) at ``x``, ``y`` of radius ``r`` (arrays)."""
         self.ids, self.x, self.y, self.r = ids, x, y, r
-        self.box = dict(zip(ids.tolist(), zip(x.tolist(), y.tolist(), r.tolist())))
-        self.sides = dict(zip(ids.tolist(), zip(*[iter(sides)] * 4)))     # four at a time
+        self.boxes = np.column_stack([x, y, r]).astype(np.float64).reshape(-1, 3)
+        self.box = dict(zip(ids.tolist(), map(tuple, self.boxes.tolist())))
         pad = _pad(x, y, r + self.REACH)
         x0, y0 = np.floor((x - pad) / BLOCK), np.floor((y - pad) / BLOCK)
         nx, ny = np.floor((x + pad) / BLOCK) - x0 + 1, np.floor((y + pad) / BLOCK) - y0 + 1

@@ -60,15 +60,22 @@ segment against every wall.
 from __future__ import annotations
 
 import math
+import sys
 import weakref
+from typing import NamedTuple
 
+from .compiled import kernels_enabled
 from .geometry import direction
-from .segments import SKIN, closest_point, crossing, slide
+from .querytables import Tables
+from .segments import (LOCATE, MET_KERNEL, MOVE_KERNEL, SURROUNDINGS_KERNEL, UNSURE,
+                       crossing, move_steps, opening, segs_near as search, surroundings_at,
+                       wall_side, walls_met)
 from .world import state_of
 
 __all__ = ["PLAYER_RADIUS", "MAX_STEP", "PLAYER_HEIGHT", "MAX_COORDINATE", "move",
            "floor_z", "ceiling_z", "standing_heights", "line_of_sight", "walls_crossed",
-           "use_target", "USE_RANGE", "segs_near", "sectors_overlapped"]
+           "use_target", "USE_RANGE", "segs_near", "sectors_overlapped", "surroundings",
+           "Surroundings"]
 
 PLAYER_RADIUS = 16
 MAX_STEP = 24
@@ -76,14 +83,19 @@ PLAYER_HEIGHT = 56
 USE_RANGE = 64              # DOOM's USERANGE: how far ahead a player reaches to use a wall
 MAX_COORDINATE = 2.0 ** 24  # |x|, |y| of a query point: 16 times the largest map (SPEC §1)
 
-_GEOMETRY: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
-_HEIGHTS: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+_TABLES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+_CACHES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+_RECENT: list = [None]             # the last state's _Cache: a tic asks about one state
+_LARGEST = sys.float_info.max
 
 
 # -- checked input ------------------------------------------------------------------------------
 
 def _finite(name, value, limit=None):
     """``value`` itself if it is a finite number (within ``limit``); else a ValueError."""
+    if (type(value) is float or type(value) is int) \
+            and abs(value) <= (_LARGEST if limit is None else limit):
+        return value                   # the common case, decided at once
     try:
         ok = math.isfinite(value)
     except (TypeError, OverflowError):
@@ -96,100 +108,59 @@ def _finite(name, value, limit=None):
 
 
 def _point(name, x, y):
+    if type(x) is float and type(y) is float and abs(x) <= MAX_COORDINATE \
+            and abs(y) <= MAX_COORDINATE:
+        return x, y
     return _finite(f"{name} x", x, MAX_COORDINATE), _finite(f"{name} y", y, MAX_COORDINATE)
 
 
-# -- per-tree geometry, per-version heights (Python lists: per-node work must not touch
-#    numpy scalars) --------------------------------------------------------------------------
+# -- per-tree tables, per-version heights ---------------------------------------------------------
 
-class _Geometry:
-    """The tree's node and seg arrays as lists, and each wall's ends, sectors and flags."""
-
-    def __init__(self, tree):
-        level = tree.level
-        self.root = tree.root
-        self.lines = tree.node_line.tolist()
-        self.norms = [math.hypot(a, b) for a, b, _ in self.lines]
-        self.child = tree.node_child.tolist()
-        self.node_segs = tree.node_segs.tolist()
-        self.bbox = tree.node_bbox.tolist()
-        self.seg_xy = tree.seg_xy.tolist()
-        self.seg_wall = tree.seg_wall.tolist()
-        self.wall_ends = [level.vertices[w.v1] + level.vertices[w.v2] for w in level.walls]
-        self.front = [w.front for w in level.walls]
-        self.back = [-1 if w.back is None else w.back for w in level.walls]
-        # a one-sided wall, or a two-sided one flagged ``blocks``, stops the player
-        self.impassable = [w.back is None or w.blocks for w in level.walls]
-        self.special = [w.special for w in level.walls]
-        xs = [v[0] for v in level.vertices] or [0]
-        ys = [v[1] for v in level.vertices] or [0]
-        self.extent = math.hypot(max(xs) - min(xs), max(ys) - min(ys))
-
-
-class _Heights:
-    """The state's sector floors and ceilings as lists, for one ``version``."""
+class _Cache:
+    """What the queries keep for one state: its tree's ``Tables``; for its current
+    ``version``, the heights as arrays (kernels) and lists (the interpreter; made on first
+    use), and the last ``surroundings`` answer (a tic asks for the player's several times
+    at one place)."""
 
     def __init__(self, state):
-        self.version = state.version
-        self.floors = state.floor.tolist()
-        self.ceilings = state.ceiling.tolist()
+        self.state = weakref.ref(state)
+        self.tables = _TABLES.get(state.tree)
+        if self.tables is None:
+            self.tables = _TABLES[state.tree] = Tables(state.tree)
+        self.version = None
 
-    def opening(self, geo, wall):
-        """``(bottom, top)`` of a wall's opening now; a one-sided wall has none (+inf, -inf)."""
-        back = geo.back[wall]
-        if back < 0:
-            return math.inf, -math.inf
-        front = geo.front[wall]
-        return (max(self.floors[front], self.floors[back]),
-                min(self.ceilings[front], self.ceilings[back]))
+    def current(self, state):
+        if self.version != state.version:
+            self.version = state.version
+            self.arrays = (state.floor, state.ceiling)
+            self._lists = None
+            self.last = None             # ((x, y, radius), Surroundings)
+            self.met = None              # ((x0, y0, x1, y1), walls met: the last move's)
+        return self
+
+    def moved(self, way, radius, around, met) -> None:
+        """Keep what the compiled move found besides the end of ``way`` (``x0, y0, x1,
+        y1``): the surroundings there and the walls met on the way, asked for next."""
+        if around[0] != UNSURE:
+            self.last = ((way[2], way[3], radius), _surroundings(around))
+        self.met = (way, met)
+
+    def lists(self):
+        if self._lists is None:
+            self._lists = (self.arrays[0].tolist(), self.arrays[1].tolist())
+        return self._lists
 
 
 def _world(source):
-    """``(tree, geometry, heights)`` for a tree, WorldState or world."""
+    """``(state, cache)`` for a tree, WorldState or world."""
     state = state_of(source)
-    tree = state.tree
-    geo = _GEOMETRY.get(tree)
-    if geo is None:
-        geo = _GEOMETRY[tree] = _Geometry(tree)
-    heights = _HEIGHTS.get(state)
-    if heights is None or heights.version != state.version:
-        heights = _HEIGHTS[state] = _Heights(state)
-    return tree, geo, heights
-
-
-# -- the tree search ------------------------------------------------------------------------------
-# Not ``BSPTree.walk``: that is a view order from a point and visits both sides of every
-# node; a range search skips the side of a line its region cannot reach.
-
-def _segs_near(geo, ax, ay, bx, by, reach):
-    """Seg ids that may come within ``reach`` of the segment a-b (a == b: of a point); a
-    superset, the caller measures.  Boxes hold rounded split points: a hair of margin."""
-    lo_x, hi_x = min(ax, bx) - reach - 1e-6, max(ax, bx) + reach + 1e-6
-    lo_y, hi_y = min(ay, by) - reach - 1e-6, max(ay, by) + reach + 1e-6
-    found, stack = [], [geo.root]
-    while stack:
-        node = stack.pop()
-        if node < 0:
-            continue
-        x0, y0, x1, y1 = geo.bbox[node]
-        if hi_x < x0 or lo_x > x1 or hi_y < y0 or lo_y > y1:
-            continue
-        a, b, c = geo.lines[node]
-        norm = geo.norms[node]
-        sa, sb = (a * ax + b * ay + c) / norm, (a * bx + b * by + c) / norm
-        if sa > reach and sb > reach:          # wholly behind the line
-            stack.append(geo.child[node][1])
-        elif sa < -reach and sb < -reach:      # wholly in front of it
-            stack.append(geo.child[node][0])
-        else:
-            found.extend(range(*geo.node_segs[node]))
-            stack.extend(geo.child[node])
-    return found
-
-
-def _walls_along(geo, ax, ay, bx, by) -> set:
-    """Walls with a seg that may meet the segment a-b (the caller tests exactly)."""
-    return {geo.seg_wall[seg] for seg in _segs_near(geo, ax, ay, bx, by, 0.0)}
+    cache = _RECENT[0]
+    if cache is None or cache.state() is not state:
+        cache = _CACHES.get(state)
+        if cache is None:
+            cache = _CACHES[state] = _Cache(state)
+        _RECENT[0] = cache
+    return state, cache.current(state)
 
 
 def segs_near(source, x, y, reach) -> list:
@@ -198,8 +169,8 @@ def segs_near(source, x, y, reach) -> list:
     x, y = _point("segs_near: point", x, y)
     if not _finite("segs_near: reach", reach, MAX_COORDINATE) >= 0:
         raise ValueError(f"segs_near: reach must not be negative, not {reach!r}")
-    _tree, geo, _heights = _world(source)
-    return _segs_near(geo, x, y, x, y, reach)
+    root, nodes, links = _world(source)[1].tables.lists[:3]
+    return search(root, nodes, links, x, y, x, y, reach)
 
 
 # -- movement -------------------------------------------------------------------------------------
@@ -210,114 +181,107 @@ def move(source, x, y, dx, dy, z_floor, radius=PLAYER_RADIUS, step=MAX_STEP,
     new (x, y).  It stops ``radius`` short of blocking walls and slides along them."""
     x, y = _point("move: start", x, y)
     dx, dy = _finite("move: dx", dx), _finite("move: dy", dy)
-    for name, value in (("z_floor", z_floor), ("step", step), ("headroom", headroom)):
-        _finite(f"move: {name}", value)
+    for name, value in (("move: z_floor", z_floor), ("move: step", step),
+                        ("move: headroom", headroom)):
+        _finite(name, value)
     if not _finite("move: radius", radius) > 0:
         raise ValueError(f"move: radius must be positive, not {radius!r}")
-    _tree, geo, heights = _world(source)
+    state, cache = _world(source)
+    tables = cache.tables
     length = math.hypot(dx, dy)
     if length == 0:
         return x, y
-    things = state_of(source).things
-    limit = geo.extent + 2 * radius
+    limit = tables.extent + 2 * radius
     if length > limit:                # bounded cost: no run longer than the map
         dx, dy, length = dx * limit / length, dy * limit / length, limit
     pieces = max(1, math.ceil(length / radius))   # no sub-step longer than the radius
-    sx, sy = dx / pieces, dy / pieces
-    rules = (z_floor, radius, step, headroom)
-    for _ in range(pieces):
-        nx, ny = _try_move(geo, heights, things, x, y, sx, sy, rules)
-        if nx == x and ny == y:
-            break                     # stuck: every further sub-step would be this one
-        x, y = nx, ny
-    return x, y
-
-
-def _try_move(geo, heights, things, x, y, dx, dy, rules):
-    """One sub-step: slide; if stuck, try the x and y parts alone (P_SlideMove's fallback).
-    Solid things' boxes block as walls do (module docstring)."""
-    radius = rules[1]
-    reach = math.hypot(dx, dy) + radius + 2 * SKIN
-    walls = _blocking_segs(geo, heights, x, y, reach, rules)
-    if len(things):
-        walls += things.solid_sides(x, y, reach)
-    if not walls:
-        return x + dx, y + dy
-    big = radius + SKIN
-    nx, ny = slide(x, y, dx, dy, walls, big)
-    if (nx - x) ** 2 + (ny - y) ** 2 < 1e-18:
-        nx, ny = slide(x, y, dx, 0.0, walls, big)
-        nx, ny = slide(nx, ny, 0.0, dy, walls, big)
-    return nx, ny
-
-
-def _blocking_segs(geo, heights, x, y, reach, rules):
-    """Ends of the segs within reach that the player cannot cross (module docstring)."""
-    z_floor, _radius, step, headroom = rules
-    out = []
-    for seg in _segs_near(geo, x, y, x, y, reach):
-        wall = geo.seg_wall[seg]
-        if geo.impassable[wall]:
-            out.append(geo.seg_xy[seg])
-            continue
-        bottom, top = heights.opening(geo, wall)
-        if top - bottom < headroom or bottom - z_floor > step:
-            out.append(geo.seg_xy[seg])
-    return out
+    rules = (float(z_floor), float(radius), float(step), float(headroom))
+    things = state.things
+    if kernels_enabled():
+        nx, ny, around, met = MOVE_KERNEL(tables.arrays, *cache.arrays, things.solid_boxes(),
+                                          float(x), float(y), dx / pieces, dy / pieces,
+                                          pieces, rules)
+        cache.moved((x, y, nx, ny), radius, around, met)
+        return nx, ny
+    # the solid things any sub-step may reach (each sweeps at most its length, twice that
+    # when it slides along both axes): the same boxes pass each sub-step's own test
+    boxes = things.solid_boxes_near(x, y, 3 * length + radius + 1) if len(things) else []
+    return move_steps(tables.lists, *cache.lists(), boxes, x, y, dx / pieces, dy / pieces,
+                      pieces, rules)
 
 
 # -- where a player stands ------------------------------------------------------------------------
 
+class Surroundings(NamedTuple):
+    """What a circle at a point stands in: the ``sector`` under its centre (None outside
+    the map), DOOM's ``floorz`` and ``ceilingz`` there (None outside), and the two-sided
+    ``walls`` it overlaps (one per seg, so maybe repeated)."""
+    sector: int | None
+    floor: float | None
+    ceiling: float | None
+    walls: list
+
+
+def surroundings(source, x, y, radius=PLAYER_RADIUS) -> Surroundings:
+    """The ``Surroundings`` of a circle at (x, y) (module docstring: which floor to pass)."""
+    x, y = _point("floor_z: point", x, y)
+    _finite("floor_z: radius", radius)
+    state, cache = _world(source)
+    key = (x, y, radius)
+    if cache.last is not None and cache.last[0] == key:
+        return cache.last[1]
+    if not len(state.floor):                     # no sectors: no walls either
+        found = (-1, None, None, [])
+    else:
+        found = _surroundings_at(cache, x, y, radius, LOCATE)
+        if found[0] == UNSURE:                   # too close to a line for doubles: exactly
+            sector = state.tree.locate(x, y)
+            found = _surroundings_at(cache, x, y, radius, -1 if sector is None else sector)
+    cache.last = (key, _surroundings(found))
+    return cache.last[1]
+
+
+def _surroundings(found) -> Surroundings:
+    sector, bottom, top, walls = found
+    if sector < 0:
+        return Surroundings(None, None, None, walls)
+    return Surroundings(sector, bottom, top, walls)
+
+
+def _surroundings_at(cache, x, y, radius, sector):
+    if kernels_enabled():
+        return SURROUNDINGS_KERNEL(cache.tables.arrays, *cache.arrays, float(x), float(y),
+                                   float(radius), sector)
+    return surroundings_at(cache.tables.lists, *cache.lists(), x, y, radius, sector)
+
+
 def floor_z(source, x, y, radius=PLAYER_RADIUS):
     """DOOM's ``floorz`` at (x, y): the floor under the centre now, raised to the opening
     bottom of every two-sided wall the circle overlaps; None outside the map."""
-    heights = standing_heights(source, x, y, radius)
-    return None if heights is None else heights[0]
+    return surroundings(source, x, y, radius).floor
 
 
 def ceiling_z(source, x, y, radius=PLAYER_RADIUS):
     """DOOM's ``ceilingz`` at (x, y): the ceiling over the centre now, lowered to the
     opening top of every two-sided wall the circle overlaps; None outside the map."""
-    heights = standing_heights(source, x, y, radius)
-    return None if heights is None else heights[1]
+    return surroundings(source, x, y, radius).ceiling
 
 
 def standing_heights(source, x, y, radius=PLAYER_RADIUS):
     """``(floorz, ceilingz)`` of a circle at (x, y) (``floor_z``, ``ceiling_z``), or None
     outside the map."""
-    x, y = _point("floor_z: point", x, y)
-    _finite("floor_z: radius", radius)
-    tree, geo, heights = _world(source)
-    sector = tree.locate(x, y)
-    if sector is None:
-        return None
-    bottom, top = heights.floors[sector], heights.ceilings[sector]
-    for wall in _two_sided_overlapped(geo, x, y, radius):
-        low, high = heights.opening(geo, wall)
-        bottom, top = max(bottom, low), min(top, high)
-    return bottom, top
+    found = surroundings(source, x, y, radius)
+    return None if found.sector is None else (found.floor, found.ceiling)
 
 
 def sectors_overlapped(source, x, y, radius=PLAYER_RADIUS) -> set:
     """Both sectors of every two-sided wall a circle at (x, y) overlaps: with the sector
     under its centre, all that ``standing_heights`` there depends on."""
-    x, y = _point("sectors_overlapped: point", x, y)
-    _finite("sectors_overlapped: radius", radius)
-    _tree, geo, _heights = _world(source)
+    walls = _world(source)[1].tables.lists[5]
     found = set()
-    for wall in _two_sided_overlapped(geo, x, y, radius):
-        found.update((geo.front[wall], geo.back[wall]))
+    for wall in surroundings(source, x, y, radius).walls:
+        found.update(walls[wall][:2])
     return found
-
-
-def _two_sided_overlapped(geo, x, y, radius):
-    """The two-sided walls (one per seg, so maybe repeated) a circle at (x, y) overlaps."""
-    for seg in _segs_near(geo, x, y, x, y, radius):
-        wall = geo.seg_wall[seg]
-        if geo.back[wall] >= 0:
-            qx, qy = closest_point(x, y, *geo.seg_xy[seg])
-            if math.hypot(x - qx, y - qy) < radius:
-                yield wall
 
 
 # -- sight ----------------------------------------------------------------------------------------
@@ -330,12 +294,13 @@ def line_of_sight(source, a, b, za=None, zb=None) -> bool:
     (ax, ay), (bx, by) = _point("line_of_sight: a", *a), _point("line_of_sight: b", *b)
     if za is not None:
         za, zb = _finite("line_of_sight: za", za), _finite("line_of_sight: zb", zb)
-    _tree, geo, heights = _world(source)
-    for wall in _walls_along(geo, ax, ay, bx, by):
-        where = crossing(ax, ay, bx, by, *geo.wall_ends[wall])
+    cache = _world(source)[1]
+    root, nodes, links, _segs, seg_wall, walls, ends = cache.tables.lists[:7]
+    for wall in {seg_wall[seg] for seg in search(root, nodes, links, ax, ay, bx, by, 0.0)}:
+        where = crossing(ax, ay, bx, by, *ends[wall])
         if where is None:
             continue
-        bottom, top = heights.opening(geo, wall)
+        bottom, top = opening(walls, *cache.lists(), wall)
         if bottom >= top:
             return False
         if za is not None and not all(bottom < za + t * (zb - za) < top for t in where):
@@ -345,20 +310,14 @@ def line_of_sight(source, a, b, za=None, zb=None) -> bool:
 
 # -- walking over and using walls -----------------------------------------------------------------
 
-def _side(ends, x, y) -> int:
-    """DOOM's P_PointOnLineSide: 0 on the wall's front (its right), 1 behind it or on it."""
-    x1, y1, x2, y2 = ends
-    return 0 if (x2 - x1) * (y - y1) - (y2 - y1) * (x - x1) < 0 else 1
-
-
-def _walls_met(geo, ax, ay, bx, by):
+def _walls_met(cache, ax, ay, bx, by):
     """``[(t, wall), ...]`` of the walls the segment a-b meets, by t along it."""
-    hits = []
-    for wall in _walls_along(geo, ax, ay, bx, by):
-        where = crossing(ax, ay, bx, by, *geo.wall_ends[wall])
-        if where is not None:
-            hits.append((min(where), wall))
-    return sorted(hits)
+    if cache.met is not None and cache.met[0] == (ax, ay, bx, by):
+        return sorted(cache.met[1])
+    if kernels_enabled():
+        return sorted(MET_KERNEL(cache.tables.arrays, float(ax), float(ay), float(bx),
+                                 float(by)))
+    return sorted(walls_met(cache.tables.lists, ax, ay, bx, by))
 
 
 def walls_crossed(source, a, b) -> list:
@@ -367,11 +326,12 @@ def walls_crossed(source, a, b) -> list:
     0 being the wall's front.  A wall counts when the two points lie on different sides of
     it (DOOM's side test: on the line is behind) and the segment a-b meets it."""
     (ax, ay), (bx, by) = _point("walls_crossed: a", *a), _point("walls_crossed: b", *b)
-    _tree, geo, _heights = _world(source)
+    cache = _world(source)[1]
+    ends = cache.tables.lists[6]
     crossed = []
-    for _t, wall in _walls_met(geo, ax, ay, bx, by):
-        before = _side(geo.wall_ends[wall], ax, ay)
-        if before != _side(geo.wall_ends[wall], bx, by):
+    for _t, wall in _walls_met(cache, ax, ay, bx, by):
+        before = wall_side(ends[wall], ax, ay)
+        if before != wall_side(ends[wall], bx, by):
             crossed.append((wall, before))
     return crossed
 
@@ -384,11 +344,12 @@ def use_target(source, x, y, angle, reach=USE_RANGE):
     x, y = _point("use_target: point", x, y)
     cos, sin = direction(_finite("use_target: angle", angle))
     reach = _finite("use_target: reach", reach, MAX_COORDINATE)
-    _tree, geo, heights = _world(source)
-    for _t, wall in _walls_met(geo, x, y, x + reach * cos, y + reach * sin):
-        if geo.special[wall]:
-            return wall, _side(geo.wall_ends[wall], x, y)
-        bottom, top = heights.opening(geo, wall)
+    cache = _world(source)[1]
+    tables = cache.tables
+    for _t, wall in _walls_met(cache, x, y, x + reach * cos, y + reach * sin):
+        if tables.special[wall]:
+            return wall, wall_side(tables.lists[6][wall], x, y)
+        bottom, top = opening(tables.lists[5], *cache.lists(), wall)
         if top <= bottom:
             return None
     return None

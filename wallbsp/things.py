@@ -24,7 +24,7 @@ grouped by leaf that is rebuilt on first use after a change (one argsort), so mo
 things in a tic costs one vectorised locate (``locate_leaves``) and no regrouping until a
 frame asks.
 
-``overlapping`` and ``solid_sides`` (asked every sub-step of every move) read a blockmap,
+``overlapping`` and ``solid_boxes_near`` (asked by every move) read a blockmap,
 as DOOM's P_BlockThingsIterator does: the alive things with the asked flags by 128-unit
 cell, remade only after a thing with those flags is added, moved or removed.  A step near
 none of them costs one dictionary look-up, however many things the map has.
@@ -37,6 +37,7 @@ import numpy as np
 
 from .blockmap import Blockmap
 from .geometry import exact_side
+from .segments import box_sides
 from .thingtypes import DEATHMATCH_START, PLAYER_STARTS, SOLID, SPAWNCEILING, thing_info
 
 __all__ = ["Things", "level_things", "spawned_at", "locate_leaves", "MULTIPLAYER_ONLY"]
@@ -303,29 +304,35 @@ class Things:
         if found is None:
             ids = np.flatnonzero(self.alive & ((self.flags & flags) != 0))
             found = self._blockmaps[flags] = Blockmap(
-                ids, self.x[ids], self.y[ids], self.radius[ids], self.box_sides(ids))
+                ids, self.x[ids], self.y[ids], self.radius[ids])
         return found
 
     def box_sides(self, i) -> list:
         """The four sides ``(x1, y1, x2, y2)`` of each thing's box (half-size its radius), as
         a mover's blocking segments: a circle kept ``radius`` away from them stays out of
-        DOOM's blocking square but for its rounded corners."""
-        i = np.asarray(i, dtype=np.int64)
-        x, y, r = self.x[i], self.y[i], self.radius[i]
-        x0, x1, y0, y1 = x - r, x + r, y - r, y + r
-        sides = np.stack([np.stack([x0, y0, x1, y0], 1), np.stack([x1, y0, x1, y1], 1),
-                          np.stack([x1, y1, x0, y1], 1), np.stack([x0, y1, x0, y0], 1)], 1)
-        return [tuple(side) for side in sides.reshape(-1, 4).tolist()]
+        DOOM's blocking square but for its rounded corners (``segments.box_sides``)."""
+        i = np.atleast_1d(np.asarray(i, dtype=np.int64))
+        boxes = zip(self.x[i].tolist(), self.y[i].tolist(), self.radius[i].tolist())
+        return [side for box in boxes for side in box_sides(*box)]
+
+    def solid_boxes(self) -> np.ndarray:
+        """``(n, 3)`` float64: ``x, y, radius`` of every alive solid thing, by index (what
+        the compiled move tests each sub-step; remade when such a thing changes)."""
+        return (self._blockmaps.get(SOLID) or self._blockmap(SOLID)).boxes
+
+    def solid_boxes_near(self, x, y, reach) -> list:
+        """``[(x, y, radius), ...]`` of the alive solid things whose box meets a mover of
+        ``reach`` at (x, y) (``overlapping``'s test), by index.  DOOM blocks a solid thing
+        at every height (its thing collision ignores z; most decorations are 16 high in its
+        table), so z plays no part."""
+        blockmap = self._blockmaps.get(SOLID) or self._blockmap(SOLID)
+        near = blockmap.near(x, y, reach)
+        return [blockmap.box[i] for i in near] if near else []
 
     def solid_sides(self, x, y, reach) -> list:
         """``(x1, y1, x2, y2)`` sides of the boxes of the alive solid things that come within
-        ``reach`` of (x, y), as blocking segments for a mover's sweep (``queries.move``
-        gathers walls within a sub-step's length plus its radius).  DOOM blocks a solid
-        thing at every height (its thing collision ignores z; most decorations are 16 high
-        in its table), so z plays no part."""
-        blockmap = self._blockmaps.get(SOLID) or self._blockmap(SOLID)
-        near = blockmap.near(x, y, reach)
-        return [side for i in near for side in blockmap.sides[i]] if near else []
+        ``reach`` of (x, y) (``solid_boxes_near``), as blocking segments for a mover's sweep."""
+        return [side for box in self.solid_boxes_near(x, y, reach) for side in box_sides(*box)]
 
     def feet(self, i, floor, ceiling) -> np.ndarray:
         """Feet heights of things ``i`` with sector heights ``floor``/``ceiling`` now: the

@@ -32,8 +32,8 @@ from collections import deque
 
 import numpy as np
 
-from ..queries import (MAX_COORDINATE, PLAYER_HEIGHT, PLAYER_RADIUS, sectors_overlapped,
-                       standing_heights, use_target, walls_crossed)
+from ..queries import (MAX_COORDINATE, PLAYER_HEIGHT, PLAYER_RADIUS, standing_heights,
+                       surroundings, use_target, walls_crossed)
 from ..resources import shared_resources
 from ..thingtypes import SHOOTABLE
 from ..world import WorldState
@@ -71,8 +71,8 @@ class World:
         self.frozen = 0                    # tics the player cannot move (after a teleport)
         self._use_held = False
         self._touching = None              # ((x, y), sectors the player's circle touches)
-        self._sector = None                # ((x, y), sector under the centre)
         self._rest = None                  # heights around the player when it last stood still
+        self._around = None                # ((x, y, state version), heights around the player)
         self._tallest = None               # (things version, tallest shootable by sector)
         start = self.level.start
         self.player = spawn_player(self.state, start.x, start.y, start.angle)
@@ -182,9 +182,13 @@ class World:
 
     def _heights_around(self) -> tuple:
         """Floors and ceilings of the sectors the player's circle touches: all that its
-        floorz and ceilingz depend on."""
-        state = self.state
-        return tuple((state.floor[s], state.ceiling[s]) for s in self._touched_sectors())
+        floorz and ceilingz depend on (kept while the player and the heights stay)."""
+        p, state = self.player, self.state
+        key = (p.x, p.y, state.version)
+        if self._around is None or self._around[0] != key:
+            floors, ceilings = state.floor, state.ceiling
+            self._around = (key, tuple((floors[s], ceilings[s]) for s in self._touched_sectors()))
+        return self._around[1]
 
     def _crossed(self, before) -> None:
         p = self.player
@@ -232,9 +236,7 @@ class World:
 
     def _sector_under(self):
         p = self.player
-        if self._sector is None or self._sector[0] != (p.x, p.y):
-            self._sector = ((p.x, p.y), self.tree.locate(p.x, p.y))
-        return self._sector[1]
+        return surroundings(self.state, p.x, p.y).sector
 
     def _hurt(self, damage: int) -> None:
         """P_DamageMobj on the player: armour takes its share (a third, or half for blue),
@@ -308,10 +310,11 @@ class World:
         p = self.player
         if self._touching is not None and self._touching[0] == (p.x, p.y):
             return self._touching[1]
-        found = sectors_overlapped(self.state, p.x, p.y, PLAYER_RADIUS)
-        centre = self._sector_under()
-        if centre is not None:
-            found.add(centre)
+        around = surroundings(self.state, p.x, p.y, PLAYER_RADIUS)
+        walls = self.level.walls
+        found = {s for w in around.walls for s in (walls[w].front, walls[w].back)}
+        if around.sector is not None:
+            found.add(around.sector)
         self._touching = ((p.x, p.y), tuple(sorted(found)))
         return self._touching[1]
 
@@ -334,6 +337,8 @@ class World:
 
 def _number(name, value, limit) -> float:
     """``value`` as a float within ±``limit`` (NaN is within nothing), else a ValueError."""
+    if type(value) is float and -limit <= value <= limit:
+        return value                       # the common case, decided at once
     numeric = isinstance(value, (int, float, np.integer, np.floating)) \
         and not isinstance(value, (bool, np.bool_))
     number = float(value) if numeric else math.nan
