@@ -26,7 +26,9 @@ class Atlas:
         self.resources = resources
         self.offset, self.width, self.height = [], [], []
         self.left, self.top, self.paletted = [], [], []
-        self._texels, self._opaque = [], []
+        # every slot's texels and opacity one after another, in buffers grown by doubling
+        # (a new picture costs its own size, not the atlas's)
+        self._texels, self._opaque = np.zeros(0, dtype=np.uint32), np.zeros(0, dtype=bool)
         self._packed = None                      # the arrays above as numpy, made on demand
         self._slots: dict = {}
         # per Things: (type, rotation) -> (slot, mirrored), as the sprite pass chose them
@@ -86,9 +88,14 @@ class Atlas:
         self.left.append(int(left))
         self.top.append(int(top))
         self.paletted.append(bool(paletted))
-        self._texels.append(texels.reshape(-1))
-        self._opaque.append(np.asarray(opaque, dtype=bool).reshape(-1))
-        self._size += texels.size
+        end = self._size + texels.size
+        if end > len(self._texels):
+            capacity = max(end, 2 * len(self._texels))
+            self._texels = _grown(self._texels, self._size, capacity)
+            self._opaque = _grown(self._opaque, self._size, capacity)
+        self._texels[self._size:end] = texels.reshape(-1)
+        self._opaque[self._size:end] = np.asarray(opaque, dtype=bool).reshape(-1)
+        self._size = end
         self._packed = None
         return slot
 
@@ -96,9 +103,7 @@ class Atlas:
     def arrays(self):
         """``(texels, opaque, offset, width, height, left, top, paletted)`` as numpy arrays."""
         if self._packed is None:
-            empty = [np.zeros(0, dtype=np.uint32)], [np.zeros(0, dtype=bool)]
-            self._packed = (np.concatenate(self._texels or empty[0]),
-                            np.concatenate(self._opaque or empty[1]),
+            self._packed = (self._texels[:self._size], self._opaque[:self._size],
                             *(np.array(v, dtype=np.int64) for v in (
                                 self.offset, self.width, self.height, self.left, self.top)),
                             np.array(self.paletted, dtype=bool))
@@ -113,6 +118,13 @@ class Atlas:
         if rgb.any():
             out[rgb] = scaled_rgb(texels[rgb], level[rgb])
         return out
+
+
+def _grown(values, used, capacity):
+    """``values[:used]`` in a new buffer of ``capacity`` (arrays handed out keep the old)."""
+    grown = np.empty(capacity, dtype=values.dtype)
+    grown[:used] = values[:used]
+    return grown
 
 
 _ATLASES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()

@@ -63,4 +63,4 @@ def masked_columns(ds_piece, ds_col, ds_w, ds_open_top, ds_open_bottom, piece_ke
         ints[4, n], ints[5, n], ints[6, n] = tx, level, key_wall[key]
         floats[0, n], floats[1, n], floats[2, n] = t0, tstep, depth
         n += 1
-    return ints[:, :n], floats[:, :n]
+    return ints[:, :n].copy(), floats[:, :n].copy()     # contiguous: draw_things' one type

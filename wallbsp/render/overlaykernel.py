@@ -207,9 +207,9 @@ def _sprite_columns(ids, depth, along, seen, angle, kind, chosen_kind, chosen, p
 
 
 @kernel
-def _colour(texel, paletted, level, lit_palette):
+def _colour(texel, rgb, level, lit_palette):
     """``overlay._lit`` of one texel: the WAD's lit palette, or rgb scaled (``scaled_rgb``)."""
-    if paletted:
+    if not rgb:
         return lit_palette[level, texel]
     scale = (level + 1.0) / LIGHT_LEVELS
     r = np.uint32(np.rint((texel & 255) * scale))
@@ -259,25 +259,27 @@ def _composite(col, top, bottom, slot, tx, t0, tstep, level, depth, texels, opaq
             s = bucket[b]
             last_row = tex_height[slot[s]] - 1
             base = offset[slot[s]] + tx[s] * (last_row + 1)
+            start, step, lit, rgb = t0[s], tstep[s], level[s], not paletted[slot[s]]
             for row in range(top[s], bottom[s]):
-                texel = base + min(int(t0[s] + row * tstep[s]), last_row)
-                if opaque[texel]:
-                    if alone:
-                        _put(colour_columns, c, row, _colour(texels[texel], paletted[slot[s]],
-                                                             level[s], lit_palette))
-                        pixel[out], which[out] = c * height + row, s
-                        out += 1
-                    else:
-                        owner[row], found[row] = s, texel
+                texel = base + min(int(start + row * step), last_row)
+                if not opaque[texel]:
+                    continue
+                if not alone:
+                    owner[row], found[row] = s, texel
+                    continue
+                _put(colour_columns, c, row, _colour(texels[texel], rgb, lit, lit_palette))
+                pixel[out], which[out] = c * height + row, s
+                out += 1
         if alone:
             continue
         for b in range(per_col[c], per_col[c + 1]):
             s = bucket[b]
+            lit, rgb = level[s], not paletted[slot[s]]
             for row in range(top[s], bottom[s]):
                 if owner[row] == s:
                     owner[row] = -1
-                    _put(colour_columns, c, row, _colour(texels[found[row]], paletted[slot[s]],
-                                                         level[s], lit_palette))
+                    _put(colour_columns, c, row, _colour(texels[found[row]], rgb, lit,
+                                                         lit_palette))
                     pixel[out], which[out] = c * height + row, s
                     out += 1
     return pixel[:out], which[:out]
