@@ -68,6 +68,24 @@ def test_observations_have_their_shapes_and_types(exit_level):
     assert (obs["labels"][walls][:, 1] >= 0).all()
 
 
+def test_view_observations_are_the_frame_in_new_c_ordered_arrays(exit_level):
+    """The frame's column-major buffers, copied row-major (a vector env's batch copy is
+    then a plain memory copy); a step later the arrays kept are unchanged."""
+    env = make("wallbsp/Exit-v0", level=exit_level.level, size=(40, 30),
+               observations=("rgb", "depth", "labels", "automap"))
+    obs, _ = env.reset(seed=0)
+    frame = env.frame
+    assert np.array_equal(obs["rgb"], frame.color)
+    assert np.array_equal(obs["depth"], frame.depth)
+    assert np.array_equal(obs["labels"][..., 0], frame.kind)
+    assert np.array_equal(obs["labels"][..., 1], frame.index)
+    assert all(a.flags.c_contiguous and a.flags.owndata for a in obs.values())
+    kept = {k: v.copy() for k, v in obs.items()}
+    new, *_ = env.step(ACTIONS.index("turn_left"))
+    assert not np.array_equal(new["rgb"], kept["rgb"])          # the view turned ...
+    assert all(np.array_equal(obs[k], kept[k]) for k in obs)    # ... the old arrays did not
+
+
 def test_same_seed_same_observations_other_seed_other_level():
     def run(seed):
         env = make("wallbsp/Explore-v0", **SMALL)

@@ -32,7 +32,7 @@ from ..queries import PLAYER_RADIUS
 from ..render import render
 from . import actions
 from .observations import (VIEW_KEYS, Automap, check_observations, observation_space,
-                           pose_of, view_observation)
+                           pose_of, rows_of, view_observation)
 
 __all__ = ["WallbspEnv", "DEFAULT_OBSERVATIONS", "TICRATE"]
 
@@ -60,6 +60,7 @@ class WallbspEnv(gym.Env):
             raise ValueError(f"fov must be between 0 and 180 degrees, not {fov!r}")
         self.fov, self.textures, self.skill = float(fov), bool(textures), int(skill)
         self.keys = check_observations(observations)
+        self._views = bool(VIEW_KEYS & set(self.keys))       # a frame is drawn each step
         if render_mode is not None and render_mode not in self.metadata["render_modes"]:
             raise ValueError(f"render_mode must be one of {self.metadata['render_modes']} "
                              f"or None, not {render_mode!r}")
@@ -113,7 +114,7 @@ class WallbspEnv(gym.Env):
     def render(self):
         if self.render_mode is None or self.world is None:
             return None
-        rgb = self._view().color.copy()
+        rgb = rows_of(self._view().color_columns)
         if self.render_mode == "rgb_array":
             return rgb
         if self._window is None:
@@ -137,7 +138,7 @@ class WallbspEnv(gym.Env):
 
     def _observe(self) -> dict:
         self.frame = None
-        obs = view_observation(self._view(), self.keys) if VIEW_KEYS & set(self.keys) else {}
+        obs = view_observation(self._view(), self.keys) if self._views else {}
         if "automap" in self.keys:
             obs["automap"] = self._map_picture()
         if "pose" in self.keys:
