@@ -120,3 +120,24 @@ def test_crowded_things_draw_the_same_both_ways(path):
     cameras.append(eye_camera(state, x - 60 * np.cos(a), y - 60 * np.sin(a), start.angle))
     seen = assert_same(state, cameras, sizes=((96, 60), (160, 100)), options=VARIANTS[:3])
     assert seen["things_drawn"] > 20 and seen["thing_pixels"] > 2000
+
+
+@pytest.mark.parametrize("path", [ROOT / "wallbsp" / "data" / "textured.json"], ids=["bundled"])
+def test_things_added_and_retyped_after_a_frame_draw_the_same_both_ways(path):
+    """The kernels keep the pictures chosen per thing: a thing whose type changed after a
+    frame gets its new picture, and one added later its own."""
+    state = WorldState(compile_level(load_level(path)))
+    start = state.tree.level.start
+    a = np.radians(start.angle)
+    x, y = start.x + 150 * np.cos(a), start.y + 150 * np.sin(a)
+    first = state.things.add(x, y, BARREL)
+    camera = eye_camera(state, start.x, start.y, start.angle)
+    before, _ = both_ways(state, camera, (96, 60))
+    state.things.type[first] = STIMPACK
+    retyped = assert_same(state, [camera], sizes=((96, 60),))
+    added = state.things.add(x - 30 * np.sin(a), y + 30 * np.cos(a), BARREL)
+    grown = assert_same(state, [camera], sizes=((96, 60),))
+    after, _ = both_ways(state, camera, (96, 60))
+    assert retyped["thing_pixels"] < (before.kind == KIND_THING).sum()    # a smaller picture
+    assert grown["things_drawn"] == retyped["things_drawn"] + 1
+    assert int(added[0]) in after.index[after.kind == KIND_THING]
