@@ -17,7 +17,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Camera", "EYE_HEIGHT", "Projection", "eye_camera"]
+__all__ = ["Camera", "EYE_HEIGHT", "Projection", "eye_camera", "column_rays"]
 
 EYE_HEIGHT = 41.0     # DOOM's VIEWHEIGHT: the eye above the floor the player stands on
 
@@ -41,6 +41,22 @@ def eye_camera(state, x, y, angle, fov=90.0, floor=None) -> Camera:
         sector = state.tree.locate(x, y)
         floor = 0.0 if sector is None else float(state.floor[sector])
     return Camera(x, y, floor + EYE_HEIGHT, angle, fov)
+
+
+_RAYS: dict = {}
+
+
+def column_rays(width: int, f: float) -> np.ndarray:
+    """Every column's ``u = (c - x0) / f`` (read-only, made once per frame size and focal
+    length: a game renders the same size every frame)."""
+    key = (width, f)
+    rays = _RAYS.get(key)
+    if rays is None:
+        if len(_RAYS) > 16:
+            _RAYS.clear()
+        rays = _RAYS[key] = (np.arange(width, dtype=np.float64) + 0.5 - width / 2.0) / f
+        rays.flags.writeable = False
+    return rays
 
 
 class Projection:
@@ -69,4 +85,4 @@ class Projection:
         self.f = (self.width / 2.0) / math.tan(math.radians(fov) / 2.0)
         self.x0 = self.width / 2.0 - 0.5           # column c sees u = (c - x0) / f
         self.y0 = self.height / 2.0 - 0.5          # row r sees v = (y0 - r) / f
-        self.u = (np.arange(self.width, dtype=np.float64) + 0.5 - self.width / 2.0) / self.f
+        self.u = column_rays(self.width, self.f)

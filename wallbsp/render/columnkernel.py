@@ -9,7 +9,7 @@ bytes (the tests draw frames both ways):
 - ``column_entries``: the pieces' entries with their unclipped boundaries (``Entries``) and
   the windows open when each was drawn (``column_windows``: the running max of the openings'
   tops and min of their bottoms, kept per column as DOOM keeps ``ceilingclip`` and
-  ``floorclip``), and the entries' order by column (the ``DrawSegs`` order);
+  ``floorclip``), and the same as ``DrawSegs``, by column;
 - ``paint_textured``: every pixel's texel and light (``RunSurfaces`` and its shaders);
 - ``paint_layers``: kind, index and depth (``RunLayers``), only when asked for.
 
@@ -44,8 +44,9 @@ def _boundary(y0, fz, w, height):
 
 @kernel
 def column_entries(pieces, u, key_heights, f, z, y0, width, height):
-    """``(keys, cols, w, bounds, order)`` of the pieces' entries in piece order; ``order``
-    lists them by column, then walk order."""
+    """The pieces' entries in piece order, ``(keys, cols, w, bounds, open_top,
+    open_bottom)`` (the last two: the windows each column has left open), and their
+    drawsegs ``(piece, col, w, windows)`` (windows: top, bottom, open top, open bottom)."""
     n = 0
     for p in range(pieces.shape[0]):
         n += int(pieces[p, 4]) - int(pieces[p, 3])
@@ -85,12 +86,21 @@ def column_entries(pieces, u, key_heights, f, z, y0, width, height):
             i += 1
     for c in range(width):
         per_col[c + 1] += per_col[c]
-    order = np.empty(n, dtype=np.int64)
+    # the drawsegs: by column, then walk order (a counting sort)
+    ds_piece = np.empty(n, dtype=np.int64)
+    ds_col = np.empty(n, dtype=np.int64)
+    ds_w = np.empty(n, dtype=np.float64)
+    ds_windows = np.empty((4, n), dtype=np.int64)
     for i in range(n):
         c = cols[i]
-        order[per_col[c]] = i
+        k = per_col[c]
         per_col[c] += 1
-    return keys, piece_of, cols, ws, bounds, order, open_top, open_bottom
+        ds_piece[k], ds_col[k], ds_w[k] = piece_of[i], c, ws[i]
+        ds_windows[0, k], ds_windows[1, k] = bounds[4, i], bounds[5, i]
+        ds_windows[2, k] = bounds[6, i]
+        ds_windows[3, k] = max(bounds[7, i], bounds[6, i])
+    return (keys, cols, ws, bounds, open_top, open_bottom, ds_piece, ds_col, ds_w,
+            ds_windows)
 
 
 @kernel
@@ -98,6 +108,12 @@ def _light(far, inverse_depth, n_colours):
     """``shading.light_levels`` of one surface, as a lut row offset."""
     level = np.floor(far + LIGHT_DISTANCE * inverse_depth)
     return int(min(max(level, 0.0), float(LIGHTS))) * n_colours
+
+
+@kernel
+def _far_level(light):
+    """``shading.far_level``: the level a sector's light leaves a surface at far away."""
+    return LIGHTS - 4.0 * (15 - np.floor(light / 16.0))
 
 
 @kernel
@@ -186,7 +202,7 @@ def _plane(out, at, r0, r1, h, base, far, ray, view, atlas, lut, n_colours, ligh
 def paint_textured(keys, cols, ws, bounds, open_top, open_bottom, u, view, sky_columns,
                    part_kind, part_index, part_table, key_far, key_far_light, key_wall,
                    wall_x_offset, scrolling, key_heights, sector_sky, floor, ceiling,
-                   sector_far, plane_base, sky_texture, sky_colour, tex_base, tex_pitch,
+                   sector_light, plane_base, sky_texture, sky_colour, tex_base, tex_pitch,
                    tex_stride, tex_height, atlas, lut, n_colours, black, light, height, out):
     """Every pixel of the frame into ``out`` (packed rgb, column-major ``width*height``):
     each entry's four parts (ceiling, upper, lower, floor), then each column's window left
@@ -236,7 +252,8 @@ def paint_textured(keys, cols, ws, bounds, open_top, open_bottom, u, view, sky_c
             else:
                 h = ceiling[sector] if ceil else floor[sector]
                 _plane(out, at, r0, r1, h, plane_base[sector, 1 if ceil else 0],
-                       sector_far[sector], ray, view, atlas, lut, n_colours, light)
+                       _far_level(sector_light[sector]), ray, view, atlas, lut, n_colours,
+                       light)
     nothing = lut[atlas[tex_base[black]] + unlit]
     for c in range(len(open_top)):
         top = open_top[c]
@@ -293,7 +310,7 @@ def paint_layers(keys, cols, ws, bounds, open_top, open_bottom, view, part_kind,
 @kernel
 def paint_flat(keys, cols, ws, bounds, open_top, open_bottom, view, key_near, key_surfaces,
                key_upper_sky, key_far_light, plane_surface, sector_sky, floor, ceiling,
-               sector_far, lit_colours, surface_colour, light, height, out):
+               sector_light, lit_colours, surface_colour, light, height, out):
     """Every pixel of a flat-colour frame into ``out`` (``fill.fill_flat``): a wall part
     is one colour (its column's light), a plane is shaded per row, "nothing" is black.
     ``key_surfaces`` ``(2, keys)``: the upper and lower parts' surfaces.  Returns the
@@ -333,8 +350,9 @@ def paint_flat(keys, cols, ws, bounds, open_top, open_bottom, view, key_near, ke
                 continue
             h = ceiling[sector] if ceil else floor[sector]
             fz_abs = max(abs(view[3] * (h - view[2])), 1e-9)
+            far = _far_level(sector_light[sector])
             for r in range(r0, r1):
-                out[at + r] = row[_light(sector_far[sector], abs(view[8] - r) / fz_abs, 1)]
+                out[at + r] = row[_light(far, abs(view[8] - r) / fz_abs, 1)]
     for c in range(len(open_top)):
         top = open_top[c]
         for r in range(top, max(open_bottom[c], top)):

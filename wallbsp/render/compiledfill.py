@@ -14,7 +14,7 @@ import numpy as np
 from .columnkernel import column_entries, paint_flat, paint_layers, paint_textured
 from .fill import DrawSegs
 from .frame import KIND_CEILING, KIND_FLOOR, KIND_WALL
-from .shading import LIGHT_LEVELS, far_level
+from .shading import LIGHT_LEVELS
 from .tables import key_light
 from .texfill import SKY_COLUMNS, SKY_ROW, SKY_ROWS_PER_V, FLAT_OFFSET, key_parts
 
@@ -22,23 +22,21 @@ __all__ = ["CompiledEntries", "CompiledLayers", "fill_compiled"]
 
 
 class CompiledEntries:
-    """The entries ``column_entries`` made: per entry (piece order) its ``keys``,
-    ``pieces``, ``cols``, ``w`` and ``bounds`` ``(8, n)``; ``order`` by column; the windows
-    left open per column.  ``piece_keys``: each piece's side key (the masked pass's)."""
+    """The entries ``column_entries`` made: per entry (piece order) its ``keys``, ``cols``,
+    ``w`` and ``bounds`` ``(8, n)``; the windows left open per column; the drawsegs.
+    ``piece_keys``: each piece's side key (the masked pass's)."""
 
     def __init__(self, tables, heights, view, pieces):
-        table = np.array(pieces, dtype=np.float64).reshape(-1, 5)
+        table = np.asarray(pieces, dtype=np.float64).reshape(-1, 5)
         self.piece_keys = table[:, 0].astype(np.int64)
-        (self.keys, self.pieces, self.cols, self.w, self.bounds, self.order, self.open_top,
-         self.open_bottom) = column_entries(table, view.u, heights.key_heights, view.f,
-                                            view.z, view.y0, view.width, view.height)
+        (self.keys, self.cols, self.w, self.bounds, self.open_top, self.open_bottom,
+         *self._drawsegs) = column_entries(table, view.u, heights.key_heights, view.f, view.z,
+                                           view.y0, view.width, view.height)
 
     def drawsegs(self) -> DrawSegs:
         """``fill.DrawSegs`` of the entries: by column, then walk order."""
-        order, bounds = self.order, self.bounds
-        top, bottom, open_top = bounds[4][order], bounds[5][order], bounds[6][order]
-        return DrawSegs(self.pieces[order], self.cols[order], self.w[order], top, bottom,
-                        open_top, np.maximum(bounds[7][order], open_top))
+        piece, col, w, windows = self._drawsegs
+        return DrawSegs(piece, col, w, *windows)
 
 
 class CompiledLayers:
@@ -82,12 +80,22 @@ def _view_numbers(view) -> np.ndarray:
                      SKY_ROWS_PER_V / view.f, view.x + FLAT_OFFSET, FLAT_OFFSET - view.y])
 
 
+_SKY: dict = {}
+
+
 def _sky_columns(tex, view) -> np.ndarray:
-    """The sky texture's column in every screen column (``texfill``'s ``_sky``)."""
-    if tex.sky < 0:
-        return np.zeros(view.width, dtype=np.int64)
-    angle = view.angle - np.degrees(np.arctan(view.u))
-    return np.floor(SKY_COLUMNS * angle / 360.0).astype(np.int64) % tex.width[tex.sky]
+    """The sky texture's column in every screen column (``texfill``'s ``_sky``); the last
+    one made is kept, as a view often turns less often than it moves."""
+    width = int(tex.width[tex.sky]) if tex.sky >= 0 else 0
+    key = (view.angle, view.width, view.f, width)
+    if _SKY.get("key") != key:
+        if width:
+            angle = view.angle - np.degrees(np.arctan(view.u))
+            columns = np.floor(SKY_COLUMNS * angle / 360.0).astype(np.int64) % width
+        else:
+            columns = np.zeros(view.width, dtype=np.int64)
+        _SKY.update(key=key, columns=columns)
+    return _SKY["columns"]
 
 
 _PLANE_BASES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
@@ -137,7 +145,7 @@ def _paint_flat(tables, heights, state, view, e, light, colour):
         e.keys, e.cols, e.w, e.bounds, e.open_top, e.open_bottom, _view_numbers(view),
         tables.key_near, _key_surfaces(tables), tables.key_upper_sky, key_light(tables, state),
         tables.plane_base_surface, tables.sector_sky, heights.floor, heights.ceiling,
-        far_level(state.light), tables.lit_colours, tables.surface_colour, bool(light),
+        state.light, tables.lit_colours, tables.surface_colour, bool(light),
         view.height, colour)
 
 
@@ -161,6 +169,6 @@ def _paint_textured(tables, tex, heights, state, view, e, parts, light, colour):
         _sky_columns(tex, view), kinds, indices, tex.part_table, tables.key_far,
         key_light(tables, state), tables.key_wall, offsets, bool(offsets.any()),
         heights.key_heights, tables.sector_sky, heights.floor, heights.ceiling,
-        far_level(state.light), _plane_bases(tex), tex.sky, tex.sky_colour, tex.base,
+        state.light, _plane_bases(tex), tex.sky, tex.sky_colour, tex.base,
         tex.pitch, tex.stride, tex.height, tex.atlas, tex.lut_flat, tex.n_colours, tex.black,
         bool(light), view.height, colour)
