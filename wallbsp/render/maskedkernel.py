@@ -63,4 +63,14 @@ def masked_columns(ds_piece, ds_col, ds_w, ds_open_top, ds_open_bottom, piece_ke
         ints[4, n], ints[5, n], ints[6, n] = tx, level, key_wall[key]
         floats[0, n], floats[1, n], floats[2, n] = t0, tstep, depth
         n += 1
-    return ints[:, :n].copy(), floats[:, :n].copy()     # contiguous: draw_things' one type
+    return _contiguous(ints, n), _contiguous(floats, n)  # draw_things' one type
+
+
+@kernel
+def _contiguous(rows, n):
+    """``rows[:, :n]`` as a new contiguous array (element by element: quick to compile)."""
+    out = np.empty((rows.shape[0], n), dtype=rows.dtype)
+    for r in range(rows.shape[0]):
+        for k in range(n):
+            out[r, k] = rows[r, k]
+    return out

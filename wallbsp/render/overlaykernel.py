@@ -230,11 +230,10 @@ def _composite(col, top, bottom, slot, tx, t0, tstep, level, depth, texels, opaq
                tex_height, paletted, lit_palette, colour_columns):
     """``overlay.composite`` into ``colour_columns`` (``width × height × 3`` uint8):
     ``(pixel, which)`` of the pixels written.  A column's slices are drawn far to near
-    (the stable order of depth, the first of equals nearest), each opaque texel taking its
-    pixel; the colours are written once, the nearest's."""
+    (by depth, the first of equals nearest, as ``overlay._nearest`` ranks them), each
+    opaque texel taking its pixel; the colours are written once, the nearest's."""
     width, height = colour_columns.shape[0], colour_columns.shape[1]
     n = col.shape[0]
-    order = np.argsort(depth, kind="mergesort")      # nearest first, ties in slice order
     per_col = np.zeros(width + 1, dtype=np.int64)
     size = 0
     for s in range(n):
@@ -243,11 +242,19 @@ def _composite(col, top, bottom, slot, tx, t0, tstep, level, depth, texels, opaq
     for c in range(width):
         per_col[c + 1] += per_col[c]
     bucket = np.empty(n, dtype=np.int64)               # by column, far to near within one
-    fill = per_col[:width].copy()
-    for k in range(n - 1, -1, -1):
-        s = order[k]
+    fill = np.empty(width, dtype=np.int64)
+    for c in range(width):
+        fill[c] = per_col[c]
+    for s in range(n):
         bucket[fill[col[s]]] = s
         fill[col[s]] += 1
+    for c in range(width):                             # a column holds a few: insertion
+        for b in range(per_col[c] + 1, per_col[c + 1]):
+            s, j = bucket[b], b - 1
+            while j >= per_col[c] and depth[bucket[j]] <= depth[s]:   # equals: the later
+                bucket[j + 1] = bucket[j]                             # slice drawn first
+                j -= 1
+            bucket[j + 1] = s
     owner = np.full(height, -1, dtype=np.int64)        # per row: the nearest slice so far
     found = np.empty(height, dtype=np.int64)           # and its texel
     pixel = np.empty(size, dtype=np.int64)
@@ -286,6 +293,20 @@ def _composite(col, top, bottom, slot, tx, t0, tstep, level, depth, texels, opaq
 
 
 @kernel
+def _joined(first, then):
+    """The columns of ``first`` and then of ``then`` (``np.concatenate(axis=1)``; element by
+    element: numba takes seconds to compile an array slice's assignment)."""
+    n = first.shape[1]
+    out = np.empty((first.shape[0], n + then.shape[1]), dtype=first.dtype)
+    for r in range(first.shape[0]):
+        for k in range(n):
+            out[r, k] = first[r, k]
+        for k in range(then.shape[1]):
+            out[r, n + k] = then[r, k]
+    return out
+
+
+@kernel
 def draw_things(ids, depth, along, seen, angle, kind, chosen_kind, chosen, pic_width,
                 pic_height, pic_left, pic_top, sector, flags, thing_height, thing_z, bright,
                 hanging, floor, ceiling, light, lit, u, x0, y0, z, f, ds_col, ds_w,
@@ -308,10 +329,10 @@ def draw_things(ids, depth, along, seen, angle, kind, chosen_kind, chosen, pic_w
     if drawn < 0 or n_sprites + wall_ints.shape[1] == 0:
         empty = np.empty(0, dtype=np.int64)
         return np.empty(0, np.uint8), empty, np.empty(0), empty, empty, drawn
-    ints = np.concatenate((ints, wall_ints), axis=1)
-    floats = np.concatenate((floats, wall_floats), axis=1)
+    ints, floats = _joined(ints, wall_ints), _joined(floats, wall_floats)
     kinds = np.full(ints.shape[1], KIND_WALL, dtype=np.uint8)
-    kinds[:n_sprites] = KIND_THING
+    for k in range(n_sprites):
+        kinds[k] = KIND_THING
     pixel, which = _composite(ints[0], ints[1], ints[2], ints[3], ints[4], floats[0],
                               floats[1], ints[5], floats[2], texels, opaque, offset,
                               pic_height, paletted, lit_palette, colour_columns)
