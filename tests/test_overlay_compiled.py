@@ -4,6 +4,7 @@ same counts, on the bundled levels and on Freedoom E1M1 and MAP01 with their ski
 things, front to back and by the painter, textured and as boxes, lit and full bright; and
 where the composite has choices to make: things crowded at one spot (equal depths), things
 hanging, raised, bright, and half off the view."""
+import sys
 from pathlib import Path
 
 import numpy as np
@@ -14,6 +15,9 @@ from wallbsp.camera import eye_camera
 from wallbsp.world import WorldState
 
 ROOT = Path(__file__).resolve().parent.parent
+sys.path.insert(0, str(ROOT / "tools"))
+from benchkit.things import random_views  # noqa: E402  (the views bench_things times)
+
 FREEDOOM = Path("/usr/share/games/doom")
 LAYERS = ("color", "kind", "index", "depth")
 COUNTS = ("things_considered", "things_drawn", "masked_columns")
@@ -56,18 +60,6 @@ def assert_same(state, cameras, sizes=((96, 60), (61, 37)), options=({},)):
     return seen
 
 
-def random_cameras(state, count, seed):
-    tree = state.tree
-    xy = np.array(tree.level.vertices, dtype=np.float64)
-    rng = np.random.default_rng(seed)
-    cameras = []
-    while len(cameras) < count:
-        x, y = rng.uniform(xy.min(0), xy.max(0))
-        if tree.locate(x, y) is not None:
-            cameras.append(eye_camera(state, x, y, rng.uniform(0, 360)))
-    return cameras
-
-
 VARIANTS = ({}, {"light": False}, {"textures": False}, {"order": "back_to_front"})
 
 
@@ -76,7 +68,7 @@ VARIANTS = ({}, {"light": False}, {"textures": False}, {"order": "back_to_front"
     (ROOT / "levels" / "textured" / "multi.json", "masked_columns")], ids=["bundled", "multi"])
 def test_the_bundled_levels_things_and_grates_draw_the_same_both_ways(path, shown):
     state = WorldState(compile_level(load_level(path)))
-    seen = assert_same(state, random_cameras(state, 10, seed=5), options=VARIANTS)
+    seen = assert_same(state, random_views(state.tree, state, 10, seed=5), options=VARIANTS)
     assert seen["things_drawn"] > 10 and seen[shown] > 300
 
 
@@ -84,14 +76,15 @@ def test_the_bundled_levels_things_and_grates_draw_the_same_both_ways(path, show
 def test_e1m1_things_and_grates_draw_the_same_both_ways(freedoom_cache):
     state = WorldState(freedoom_cache.tree("freedoom1.wad", "E1M1"))
     cameras = [eye_camera(state, x, y, angle + 0.0123) for x, y, angle in E1M1_VIEWS]
-    seen = assert_same(state, cameras + random_cameras(state, 6, seed=1), options=VARIANTS)
+    seen = assert_same(state, cameras + random_views(state.tree, state, 6, seed=1),
+                       options=VARIANTS)
     assert seen["things_drawn"] > 20 and seen["masked_columns"] > 100
 
 
 @pytest.mark.skipif(not (FREEDOOM / "freedoom2.wad").exists(), reason="Freedoom not installed")
 def test_map01_things_and_masked_walls_draw_the_same_both_ways(freedoom_cache):
     state = WorldState(freedoom_cache.tree("freedoom2.wad", "MAP01"))
-    seen = assert_same(state, random_cameras(state, 24, seed=7), sizes=((96, 60),))
+    seen = assert_same(state, random_views(state.tree, state, 24, seed=7), sizes=((96, 60),))
     assert seen["things_drawn"] > 10 and seen["masked_columns"] > 0
 
 

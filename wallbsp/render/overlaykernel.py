@@ -68,19 +68,6 @@ def visible_things(leaves, n_leaves, leaf, alive, drawn, x, y, radius, vx, vy, f
 
 
 @kernel
-def _first_at_least(values, x):
-    """The first index of sorted ``values`` holding ``x`` or more (searchsorted left)."""
-    lo, hi = 0, values.shape[0]
-    while lo < hi:
-        mid = (lo + hi) >> 1
-        if values[mid] < x:
-            lo = mid + 1
-        else:
-            hi = mid
-    return lo
-
-
-@kernel
 def _window(col, lo, fraction, scale, own, ds, keys, key_near, key_far, floor, ceiling, y0, z,
             height):
     """``ClipWindows.windows`` of one column for something of ``own`` sector at depth ``d``
@@ -184,7 +171,7 @@ def _sprite_columns(ids, depth, along, seen, angle, kind, chosen_kind, chosen, p
         if min(r2, height) <= max(r1, 0):             # above or below the frame
             continue
         before = n
-        lo = _first_at_least(ds_col, first[s])
+        lo = np.searchsorted(ds_col, first[s])          # the first column's first entry
         fraction = d / (1.0 + d)
         for col in range(first[s], first[s] + counts[s]):
             while lo < ds_col.shape[0] and ds_col[lo] < col:
