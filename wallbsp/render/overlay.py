@@ -7,6 +7,10 @@ one batch: every slice row becomes a pixel, transparent texels drop out, and whe
 overlap the nearest opaque texel wins — the painter's far-to-near order without a loop.
 The frame's ``kind``, ``index`` and ``depth`` layers are the walls' with the overlay's
 pixels written over them (``OverlayLayers``).
+
+With the compiled kernels on (``compiled.kernels_enabled``), ``overlaycompiled`` does the
+same work in a few kernel calls (``overlaykernel``, ``maskedkernel``); this numpy code is
+the reference they are tested against.
 """
 from __future__ import annotations
 
