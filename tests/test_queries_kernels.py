@@ -120,3 +120,33 @@ def test_queries_answer_the_same_compiled_or_not(tree):
                             queries.use_target(state, x, y, 30.0, reach=200.0)))
             answers[on] = out
     assert answers[True] == answers[False]
+
+
+def test_the_compiled_length_is_math_hypot():
+    """``lengths.length`` compiled is ``rounded_hypot``, the nearest double found exactly:
+    the same number as CPython's ``math.hypot``, which the interpreted code calls."""
+    import math
+
+    import numba
+    from wallbsp.lengths import length
+
+    @numba.njit
+    def lengths_of(a, b, out):
+        for i in range(a.size):
+            out[i] = length(a[i], b[i])
+
+    rng = np.random.default_rng(9)
+    a = rng.uniform(-1, 1, 200_000) * 10.0 ** rng.integers(-12, 5, 200_000)
+    b = rng.uniform(-1, 1, 200_000) * 10.0 ** rng.integers(-12, 5, 200_000)
+    b[::4] = a[::4] * rng.choice([1.0, 0.5, 2.0, 1e-9, 1e-30], a[::4].size)
+    edges = [(0.0, 0.0), (-0.0, 3.0), (3.0, 4.0), (1e308, 1e308), (5e-324, 5e-324),
+             (1e-200, 3e-201), (1.0, 1e-300), (2.0 ** 600, 1.0)]
+    a = np.concatenate([a, [x for x, _ in edges]])
+    b = np.concatenate([b, [y for _, y in edges]])
+    out = np.empty_like(a)
+    lengths_of(a, b, out)
+    assert out.tolist() == list(map(math.hypot, a.tolist(), b.tolist()))
+    special = np.array([math.inf, math.nan, -math.inf])
+    out = np.empty(3)
+    lengths_of(special, np.array([math.nan, 1.0, 2.0]), out)
+    assert out[0] == math.inf and math.isnan(out[1]) and out[2] == math.inf

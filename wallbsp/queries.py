@@ -68,7 +68,7 @@ from .compiled import kernels_enabled
 from .geometry import direction
 from .querytables import Tables
 from .segments import (LOCATE, MET_KERNEL, MOVE_KERNEL, SURROUNDINGS_KERNEL, UNSURE,
-                       crossing, move_steps, opening, segs_near as search, surroundings_at,
+                       meet, move_steps, opening, segs_near as search, surroundings_at,
                        wall_side, walls_met)
 from .world import state_of
 
@@ -297,9 +297,10 @@ def line_of_sight(source, a, b, za=None, zb=None) -> bool:
     cache = _world(source)[1]
     root, nodes, links, _segs, seg_wall, walls, ends = cache.tables.lists[:7]
     for wall in {seg_wall[seg] for seg in search(root, nodes, links, ax, ay, bx, by, 0.0)}:
-        where = crossing(ax, ay, bx, by, *ends[wall])
-        if where is None:
+        count, t0, t1 = meet(ax, ay, bx, by, *ends[wall])
+        if not count:
             continue
+        where = (t0,) if count == 1 else (t0, t1)
         bottom, top = opening(walls, *cache.lists(), wall)
         if bottom >= top:
             return False

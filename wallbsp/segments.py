@@ -1,21 +1,15 @@
 """A circle moving among line segments, the tree search that finds the segments near it, and
 where two segments meet: the float 2-D work under ``queries`` (DOOM's P_TryMove,
-P_SlideMove and P_CheckSight on plain coordinates).
+P_SlideMove and P_CheckSight on plain coordinates).  A wall here is ``(x1, y1, x2, y2)``.
 
-A wall here is a tuple ``(x1, y1, x2, y2)``.  ``slide`` sweeps a circle of radius ``big``
-by a motion, stops it at the first contact and keeps the motion's component along the walls
-it touches; ``crossing`` says where two closed segments meet, exactly for integer ends.
-
-**One source, two ways to run it.**  Every function below is written in the subset of
-Python that numba compiles (``jitable``): the interpreter runs it on a tree's
-``querytables.Tables`` as Python lists (the reference, and what runs without numba), and
-the ``*_KERNEL`` entry points are the same functions compiled, run on the same tables as
-numpy arrays.  So both give the same floats
-operation by operation (numba keeps Python's ``min``/``max`` and does not fuse
-multiply-adds).  Lengths are ``sqrt(x*x + y*y)``, not ``math.hypot``: CPython's hypot is
-its own algorithm, not the C library's that numba calls, and the two differ in the last
-bit now and then.  Everything the kernels compile is in this one file, because numba's
-disk cache only notices changes to the file of the compiled function.
+**One source, two ways to run it.**  Every function below is in the subset of Python that
+numba compiles (``jitable``): the interpreter runs it on a tree's ``querytables.Tables`` as
+Python lists (the reference, and what runs without numba); the ``*_KERNEL`` entry points
+are the same functions compiled, run on the same tables as numpy arrays.  Both give the
+same floats, operation by operation: numba keeps Python's ``min``/``max`` and fuses no
+multiply-adds, and ``lengths.length`` is ``math.hypot`` in Python and the same number
+compiled.  Everything the kernels compile is in this file and ``lengths``: numba's disk
+cache only notices changes to this file, the one of the compiled functions.
 """
 from __future__ import annotations
 
@@ -23,6 +17,7 @@ import math
 
 from .compiled import AVAILABLE, kernel
 from .geometry import SIDE_ERROR, SIDE_UNDERFLOW
+from .lengths import length
 
 if AVAILABLE:
     from numba.extending import register_jitable as jitable
@@ -30,10 +25,10 @@ else:                                    # pragma: no cover - where numba is abs
     def jitable(function):
         return function
 
-__all__ = ["SKIN", "slide", "closest_point", "crossing", "box_sides", "segs_near",
-           "opening", "move_steps", "move_and_look", "standing", "tolerance", "locate", "surroundings_at",
-           "walls_met", "wall_side", "LOCATE", "UNSURE", "MOVE_KERNEL", "SURROUNDINGS_KERNEL",
-           "MET_KERNEL"]
+__all__ = ["SKIN", "slide", "closest_point", "meet", "box_sides",
+           "segs_near", "opening", "move_steps", "move_and_look", "standing", "tolerance",
+           "locate", "surroundings_at", "walls_met", "wall_side", "LOCATE", "UNSURE",
+           "MOVE_KERNEL", "SURROUNDINGS_KERNEL", "MET_KERNEL"]
 
 SKIN = 1e-4          # a contact stops this far outside the radius, so float error never
 #                      leaves the circle overlapping a wall it was stopped by
@@ -42,8 +37,6 @@ _MAX_SLIDES = 4      # sweeps per sub-step: one per wall met, like P_SlideMove's
 _TANGENT = 1e-12     # relative inward motion accepted as "along the wall" (float noise)
 _MARGIN = 1e-6       # node boxes hold rounded split points: a hair of margin
 LOCATE, UNSURE = -3, -2   # surroundings_at: find the sector; it could not be told in doubles
-
-
 # -- the tree search --------------------------------------------------------------------------
 # Not ``BSPTree.walk``: that is a view order from a point and visits both sides of every
 # node; a range search skips the side of a line its region cannot reach.
@@ -120,13 +113,13 @@ def _blocking(tables, floors, ceilings, boxes, x, y, reach, rules):
 def _try_move(tables, floors, ceilings, boxes, x, y, dx, dy, rules):
     """One sub-step: slide; if stuck, try the x and y parts alone (P_SlideMove's fallback)."""
     radius = rules[1]
-    reach = math.sqrt(dx * dx + dy * dy) + radius + 2 * SKIN
+    reach = length(dx, dy) + radius + 2 * SKIN
     walls = _blocking(tables, floors, ceilings, boxes, x, y, reach, rules)
     if not walls:
         return x + dx, y + dy
     big = radius + SKIN
     nx, ny = slide(x, y, dx, dy, walls, big)
-    if (nx - x) * (nx - x) + (ny - y) * (ny - y) < 1e-18:
+    if (nx - x) ** 2 + (ny - y) ** 2 < 1e-18:
         nx, ny = slide(x, y, dx, 0.0, walls, big)
         nx, ny = slide(nx, ny, 0.0, dy, walls, big)
     return nx, ny
@@ -169,14 +162,14 @@ def _contacts(x, y, walls, big):
     normals, free = [], []
     for wall in walls:
         qx, qy = closest_point(x, y, wall[0], wall[1], wall[2], wall[3])
-        dist = math.sqrt((x - qx) * (x - qx) + (y - qy) * (y - qy))
+        dist = length(x - qx, y - qy)
         if dist < big + _CONTACT:
             if dist > 0:
                 normals.append(((x - qx) / dist, (y - qy) / dist))
             else:                      # centre on the wall: only its line's normal makes sense
                 ex, ey = wall[2] - wall[0], wall[3] - wall[1]
-                length = math.sqrt(ex * ex + ey * ey)
-                nx, ny = -ey / length, ex / length
+                size = length(ex, ey)
+                nx, ny = -ey / size, ex / size
                 normals.append((nx, ny))
                 normals.append((-nx, -ny))
         else:
@@ -198,7 +191,7 @@ def _project_out(dx, dy, normals):
                 dx, dy, moved = dx - k * nx, dy - k * ny, True
         if not moved:
             break
-    size = math.sqrt(dx * dx + dy * dy)
+    size = length(dx, dy)
     for nx, ny in normals:
         if dx * nx + dy * ny < -_TANGENT * size:
             return 0.0, 0.0
@@ -220,14 +213,14 @@ def _sweep_time(px, py, dx, dy, x1, y1, x2, y2, big):
     for a centre that starts outside the capsule; inf if never."""
     t = math.inf
     ex, ey = x2 - x1, y2 - y1
-    length = math.sqrt(ex * ex + ey * ey)
-    nx, ny = -ey / length, ex / length
+    size = length(ex, ey)
+    nx, ny = -ey / size, ex / size
     h0 = (px - x1) * nx + (py - y1) * ny       # signed distance to the wall's line
     hd = dx * nx + dy * ny
     if h0 * hd < 0 and abs(h0) >= big:          # the flat side, approached from outside
         s = (abs(h0) - big) / abs(hd)
-        along = ((px + s * dx - x1) * ex + (py + s * dy - y1) * ey) / length
-        if 0 <= along <= length:
+        along = ((px + s * dx - x1) * ex + (py + s * dy - y1) * ey) / size
+        if 0 <= along <= size:
             t = s
     t = min(t, _circle_time(px - x1, py - y1, dx, dy, big))     # the round ends
     return min(t, _circle_time(px - x2, py - y2, dx, dy, big))
@@ -306,7 +299,7 @@ def standing(tables, floors, ceilings, sector, x, y, radius):
         if walls[wall][1] >= 0:
             s = segs[seg]
             qx, qy = closest_point(x, y, s[0], s[1], s[2], s[3])
-            if math.sqrt((x - qx) * (x - qx) + (y - qy) * (y - qy)) < radius:
+            if length(x - qx, y - qy) < radius:
                 low, high = opening(walls, floors, ceilings, wall)
                 bottom, top = max(bottom, low), min(top, high)
                 found.append(wall)
@@ -327,7 +320,7 @@ def walls_met(tables, ax, ay, bx, by):
             continue
         seen.add(wall)
         e = ends[wall]
-        count, t0, t1 = _meet(ax, ay, bx, by, e[0], e[1], e[2], e[3])
+        count, t0, t1 = meet(ax, ay, bx, by, e[0], e[1], e[2], e[3])
         if count:
             hits.append((min(t0, t1), wall))
     return hits
@@ -346,16 +339,10 @@ def _orient(ax, ay, bx, by, cx, cy):
     return (bx - ax) * (cy - ay) - (by - ay) * (cx - ax)
 
 
-def crossing(ax, ay, bx, by, cx, cy, dx, dy):
-    """Where the closed segments ab and cd meet, as parameters t along ab: one t, or the two
-    ends of the shared stretch when they are collinear; None if they do not meet."""
-    count, t0, t1 = _meet(ax, ay, bx, by, cx, cy, dx, dy)
-    return None if not count else (t0,) if count == 1 else (t0, t1)
-
-
 @jitable
-def _meet(ax, ay, bx, by, cx, cy, dx, dy):
-    """``crossing`` as ``(count, t0, t1)``: 0 (they do not meet), 1 (at t0) or 2 (t0 to t1)."""
+def meet(ax, ay, bx, by, cx, cy, dx, dy):
+    """Where the closed segments ab and cd meet, as ``(count, t0, t1)`` with t along ab:
+    count 0, they do not; 1, at t0; 2, collinear, along t0 to t1.  Exact for integer ends."""
     o1, o2 = _orient(ax, ay, bx, by, cx, cy), _orient(ax, ay, bx, by, dx, dy)
     o3, o4 = _orient(cx, cy, dx, dy, ax, ay), _orient(cx, cy, dx, dy, bx, by)
     if (o1 > 0 and o2 > 0) or (o1 < 0 and o2 < 0) or (o3 > 0 and o4 > 0) or (o3 < 0 and o4 < 0):

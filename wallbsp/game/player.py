@@ -111,6 +111,8 @@ def walk_by(source, player: Player, dx, dy) -> None:
 
 def _fraction(name, value) -> float:
     """An input in [-1, 1] (clamped, as a game pad's axis is)."""
+    if type(value) is float and -1.0 <= value <= 1.0:
+        return value                    # the common case, decided at once
     return max(-1.0, min(1.0, _number(name, value)))
 
 

@@ -144,10 +144,11 @@ class World:
         if pressed and not self.dead and not self.frozen:
             self._use()
         self._in_sector()
-        around = self._heights_around()
+        moving = bool(self.rules.movers)   # only movers already started change heights
+        around = self._heights_around() if moving else None
         self.rules.tic()
         self._tic_powers()
-        if self._heights_around() != around:
+        if moving and self._heights_around() != around:
             self._clip_player()
 
     # -- the steps of a tic ---------------------------------------------------------------------
