@@ -45,13 +45,14 @@ def compiled_overlay(view, state, tables, walk, piece_keys, make_drawsegs, atlas
     ``Overlay`` and stats); ``make_drawsegs()`` gives the walk's ``DrawSegs``."""
     things = state.things
     keys = masked_keys(tables, state, atlas)
-    considered, ids, dx, dy, depth, along, masked = visible_things(
+    considered, ids, offsets, masked = visible_things(
         np.asarray(walk.leaves, dtype=np.int64), len(things.tree.leaf_sector), things.leaf,
         things.alive, things.drawn, things.x, things.y, things.radius, view.x, view.y,
         view.fx, view.fy, view.rx, view.ry, view.x0, view.f, piece_keys, keys.slot)
     stats = {"things_considered": int(considered), "things_drawn": 0, "masked_columns": 0}
     if not (len(ids) or masked):
         return None, None, None, stats
+    dx, dy, depth, along = offsets
     drawsegs = make_drawsegs()
     texels, opaque, offset, width, height, left, top, paletted = atlas.arrays()
     wall_rows = _NO_WALLS

@@ -25,10 +25,11 @@ __all__ = ["visible_things", "draw_things"]
 @kernel
 def visible_things(leaves, n_leaves, leaf, alive, drawn, x, y, radius, vx, vy, fx, fy, rx, ry,
                    x0, f, piece_keys, masked_slot):
-    """``(considered, ids, dx, dy, depth, along, masked)``: how many drawn things the
+    """``(considered, ids, (dx, dy, depth, along), masked)``: how many drawn things the
     ``leaves`` hold, and those at forward depth >= MIN_DEPTH whose widest likely picture
     reaches the view (``sprites.sprite_slices``' first cut), with their offsets from the
-    eye; and whether a piece's side key has a masked middle (``masked_slot`` >= 0)."""
+    eye as the rows of one array; and whether a piece's side key has a masked middle
+    (``masked_slot`` >= 0)."""
     masked = False
     for k in range(piece_keys.shape[0]):
         if masked_slot[piece_keys[k]] >= 0:
@@ -63,8 +64,7 @@ def visible_things(leaves, n_leaves, leaf, alive, drawn, x, y, radius, vx, vy, f
                     out[0, kept], out[1, kept], out[2, kept], out[3, kept] = dx, dy, depth, along
                     kept += 1
             i = after[i]
-    return (considered, ids[:kept], out[0, :kept], out[1, :kept], out[2, :kept],
-            out[3, :kept], masked)
+    return considered, ids[:kept], out[:, :kept], masked
 
 
 @kernel
