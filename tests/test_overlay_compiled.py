@@ -134,3 +134,18 @@ def test_things_added_and_retyped_after_a_frame_draw_the_same_both_ways(path):
     assert retyped["thing_pixels"] < (before.kind == KIND_THING).sum()    # a smaller picture
     assert grown["things_drawn"] == retyped["things_drawn"] + 1
     assert int(added[0]) in after.index[after.kind == KIND_THING]
+
+
+@pytest.mark.skipif(not (FREEDOOM / "freedoom1.wad").exists(), reason="Freedoom not installed")
+def test_each_kernel_is_compiled_once(freedoom_cache):
+    """Every frame hands the kernels the same types (a second signature would compile, or
+    load, in the middle of a game: seconds the first time a grate comes into view).  E1M1's
+    grates are partly hidden in some of these views, and things in all of them."""
+    from wallbsp.render import maskedkernel, overlaykernel
+    state = WorldState(freedoom_cache.tree("freedoom1.wad", "E1M1"))
+    cameras = [eye_camera(state, x, y, angle) for x, y, angle in E1M1_VIEWS]
+    assert_same(state, cameras + random_views(state.tree, state, 12, seed=3), sizes=((80, 50),),
+                options=VARIANTS)
+    for kernel in (overlaykernel.visible_things, overlaykernel.draw_things,
+                   maskedkernel.masked_columns):
+        assert len(kernel.signatures) == 1, kernel.signatures
