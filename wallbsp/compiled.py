@@ -1,35 +1,89 @@
 """Compiled kernels: numba's ``njit`` for the few loops that numpy cannot batch cheaply.
 
 A frame is a few hundred small batches; at 160×120 numpy's fixed cost per call, not the
-pixels, sets the frame rate.  The hot stages (the column fill of a front-to-back frame, the
-masked pass, collision) therefore have a compiled kernel beside their numpy code.  The numpy
-code stays the reference: the tests draw every frame both ways and require the same bytes,
-and it is what runs where numba is missing or ``WALLBSP_KERNELS=numpy`` is set.
+pixels, sets the frame rate.  The hot stages (the walk, the column fill of a front-to-back
+frame, the masked pass, collision) therefore have a compiled kernel beside their numpy or
+Python code.  That code stays the reference: the tests draw every frame both ways and
+require the same bytes, and it is what runs where numba is missing or
+``WALLBSP_KERNELS=numpy`` is set.
 
-Kernels are compiled on first use and cached on disk (numba's ``cache=True``), so only the
-first run after an install pays for compiling them.
+numba is imported when the first kernel is first called, not with the package: importing
+it costs a third of a second, which a command that draws nothing (``wallbsp stats``) should
+not pay.  Until then a kernel is a ``LazyKernel``; the first call compiles every kernel made
+so far (numba's dispatchers, which compile per signature on their first call and keep the
+result on disk, ``cache=True``) and puts the dispatchers in place of the lazy kernels in
+the modules that define them, so kernels that call kernels are compiled together.
 """
 from __future__ import annotations
 
+import importlib.util
 import os
 
-try:                                    # numba is a dependency, but a platform may lack it
-    import numba
-except ImportError:                     # pragma: no cover - exercised where numba is absent
-    numba = None
+__all__ = ["kernel", "kernels_enabled", "use_kernels", "AVAILABLE", "LazyKernel"]
 
-__all__ = ["kernel", "kernels_enabled", "use_kernels", "AVAILABLE"]
+AVAILABLE = importlib.util.find_spec("numba") is not None
+_STATE = {"on": AVAILABLE and os.environ.get("WALLBSP_KERNELS", "") != "numpy",
+          "numba": None}
+_LAZY: list = []
 
-AVAILABLE = numba is not None
-_STATE = {"on": AVAILABLE and os.environ.get("WALLBSP_KERNELS", "") != "numpy"}
+
+def _jit(function):
+    numba = _STATE["numba"]
+    return numba.njit(cache=True, nogil=True, error_model="numpy")(function)
+
+
+class LazyKernel:
+    """A kernel before numba is imported: calling it (or reading a dispatcher attribute
+    such as ``signatures``) compiles every lazy kernel and forwards to its dispatcher."""
+
+    def __init__(self, function):
+        self.py_func = function
+        self.dispatcher = None
+        self.__name__, self.__doc__ = function.__name__, function.__doc__
+        self.__wrapped__ = function
+
+    def __call__(self, *args):
+        if self.dispatcher is None:
+            _load_numba()
+        return self.dispatcher(*args)
+
+    def __getattr__(self, name):
+        if name == "dispatcher":                # not set yet: during __init__ only
+            raise AttributeError(name)
+        if self.dispatcher is None:
+            _load_numba()
+        return getattr(self.dispatcher, name)
+
+
+def _load_numba():
+    """Import numba, make every lazy kernel's dispatcher and swap the dispatchers in for
+    the lazy kernels in the globals of the modules that define kernels (a kernel that
+    calls another must see a dispatcher when numba compiles it)."""
+    if _STATE["numba"] is None:
+        import numba
+        _STATE["numba"] = numba
+    for lazy in _LAZY:
+        if lazy.dispatcher is None:
+            lazy.dispatcher = _jit(lazy.py_func)
+    for names in {id(lazy.py_func.__globals__): lazy.py_func.__globals__
+                  for lazy in _LAZY}.values():
+        for name, value in list(names.items()):
+            if isinstance(value, LazyKernel):
+                names[name] = value.dispatcher
+    _LAZY.clear()
 
 
 def kernel(function):
-    """``function`` compiled by numba (no Python objects, no GIL, cached on disk); the
-    plain Python function where numba is absent (never called then: see ``kernels_enabled``)."""
-    if numba is None:
+    """``function`` to be compiled by numba (no Python objects, no GIL, cached on disk),
+    lazily (see the module's docstring); the plain function where numba is absent (never
+    called then: see ``kernels_enabled``)."""
+    if not AVAILABLE:
         return function
-    return numba.njit(cache=True, nogil=True, error_model="numpy")(function)
+    if _STATE["numba"] is not None:
+        return _jit(function)
+    lazy = LazyKernel(function)
+    _LAZY.append(lazy)
+    return lazy
 
 
 def kernels_enabled() -> bool:
