@@ -74,24 +74,24 @@ def test_moves_and_surroundings_are_the_same_compiled_or_not(tree):
     moved = blocked = 0
     for x, y in sample_points(tree, 400, 7):
         dx, dy = rng.uniform(-40, 40, 2).tolist()
-        pieces, z, rules = int(rng.integers(1, 4)), float(rng.choice([0.0, 30.0])), None
+        pieces, z = int(rng.integers(1, 4)), float(rng.choice([0.0, 30.0]))
         rules = (z, float(PLAYER_RADIUS), 24.0, 56.0)
         args = (state.floor, state.ceiling)
-        got = segments.MOVE_KERNEL(tables.arrays, *args, boxes, x, y, dx, dy, pieces, rules)
-        want = segments.move_and_look(tables.lists, state.floor.tolist(),
-                                      state.ceiling.tolist(), [tuple(b) for b in boxes.tolist()],
-                                      x, y, dx, dy, pieces, rules)
+        lists = (tables.lists, state.floor.tolist(), state.ceiling.tolist())
+        got = segments.KERNEL(tables.arrays, *args, boxes, segments.MOVE, x, y, dx, dy, pieces,
+                              rules, segments.LOCATE)
+        want = segments.ask(*lists, [tuple(b) for b in boxes.tolist()], segments.MOVE, x, y,
+                            dx, dy, pieces, rules, segments.LOCATE)
         assert got == want
         moved += got[:2] != (x, y)
         blocked += got[:2] != (x + pieces * dx, y + pieces * dy)
         assert segments.tolerance(tables.lists, x, y) == tree.side_tolerance(x, y)
-        for sector in (segments.LOCATE, 0):
-            assert segments.SURROUNDINGS_KERNEL(tables.arrays, *args, x, y, 16.0, sector) \
-                == segments.surroundings_at(tables.lists, state.floor.tolist(),
-                                            state.ceiling.tolist(), x, y, 16.0, sector)
-        ends = (x, y, x + 4 * dx, y + 4 * dy)
-        assert sorted(segments.MET_KERNEL(tables.arrays, *ends)) == \
-            sorted(segments.walls_met(tables.lists, *ends))
+        far = (x + 4 * dx, y + 4 * dy)
+        for question, sector, end in ((segments.STAND, segments.LOCATE, (x, y)),
+                                      (segments.STAND, 0, (x, y)), (segments.MEET, 0, far)):
+            assert segments.KERNEL(tables.arrays, *args, boxes[:0], question, x, y, *end, 0,
+                                   rules, sector) == \
+                segments.ask(*lists, [], question, x, y, *end, 0, rules, sector)
     assert moved > 100 and blocked > 20
 
 

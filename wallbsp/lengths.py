@@ -14,6 +14,8 @@ from __future__ import annotations
 
 import math
 
+import numpy as np
+
 from .compiled import AVAILABLE
 
 if AVAILABLE:
@@ -57,17 +59,20 @@ def _two_sum(a, b):
 
 @jitable
 def _sign_of_sum(terms):
-    """The exact sign of a sum of doubles (Shewchuk's growing expansion)."""
-    parts = [0.0]                       # non-overlapping, smallest first
+    """The exact sign of a sum of doubles (Shewchuk's growing expansion; compiled only,
+    so its parts go in a small array, not a list)."""
+    parts = np.zeros(2 * len(terms))    # non-overlapping, smallest first
+    size = 0
     for term in terms:
-        q, grown = term, []
-        for part in parts:
-            q, error = _two_sum(q, part)
+        q, kept = term, 0
+        for k in range(size):
+            q, error = _two_sum(q, parts[k])
             if error != 0.0:
-                grown.append(error)
-        grown.append(q)
-        parts = grown
-    for k in range(len(parts) - 1, -1, -1):
+                parts[kept] = error
+                kept += 1
+        parts[kept] = q
+        size = kept + 1
+    for k in range(size - 1, -1, -1):
         if parts[k] != 0.0:
             return 1 if parts[k] > 0.0 else -1
     return 0

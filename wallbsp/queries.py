@@ -64,12 +64,13 @@ import sys
 import weakref
 from typing import NamedTuple
 
+import numpy as np
+
 from .compiled import kernels_enabled
 from .geometry import direction
 from .querytables import Tables
-from .segments import (LOCATE, MET_KERNEL, MOVE_KERNEL, SURROUNDINGS_KERNEL, UNSURE,
-                       meet, move_steps, opening, segs_near as search, surroundings_at,
-                       wall_side, walls_met)
+from .segments import (KERNEL, LOCATE, MEET, MOVE, STAND, UNSURE, meet, move_steps, opening,
+                       segs_near as search, surroundings_at, wall_side, walls_met)
 from .world import state_of
 
 __all__ = ["PLAYER_RADIUS", "MAX_STEP", "PLAYER_HEIGHT", "MAX_COORDINATE", "move",
@@ -87,6 +88,7 @@ _TABLES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
 _CACHES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
 _RECENT: list = [None]             # the last state's _Cache: a tic asks about one state
 _LARGEST = sys.float_info.max
+_NO_BOXES = np.zeros((0, 3))       # no things for a question that moves nothing
 
 
 # -- checked input ------------------------------------------------------------------------------
@@ -198,9 +200,9 @@ def move(source, x, y, dx, dy, z_floor, radius=PLAYER_RADIUS, step=MAX_STEP,
     rules = (float(z_floor), float(radius), float(step), float(headroom))
     things = state.things
     if kernels_enabled():
-        nx, ny, around, met = MOVE_KERNEL(tables.arrays, *cache.arrays, things.solid_boxes(),
-                                          float(x), float(y), dx / pieces, dy / pieces,
-                                          pieces, rules)
+        nx, ny, around, met = KERNEL(tables.arrays, *cache.arrays, things.solid_boxes(), MOVE,
+                                     float(x), float(y), dx / pieces, dy / pieces, pieces,
+                                     rules, LOCATE)
         cache.moved((x, y, nx, ny), radius, around, met)
         return nx, ny
     # the solid things any sub-step may reach (each sweeps at most its length, twice that
@@ -250,9 +252,15 @@ def _surroundings(found) -> Surroundings:
 
 def _surroundings_at(cache, x, y, radius, sector):
     if kernels_enabled():
-        return SURROUNDINGS_KERNEL(cache.tables.arrays, *cache.arrays, float(x), float(y),
-                                   float(radius), sector)
+        return _ask(cache, STAND, x, y, x, y, radius, sector)[2]
     return surroundings_at(cache.tables.lists, *cache.lists(), x, y, radius, sector)
+
+
+def _ask(cache, question, x, y, u, v, radius=PLAYER_RADIUS, sector=LOCATE):
+    """``segments.ask`` compiled, for a question that moves nothing."""
+    rules = (0.0, float(radius), 0.0, 0.0)
+    return KERNEL(cache.tables.arrays, *cache.arrays, _NO_BOXES, question, float(x),
+                  float(y), float(u), float(v), 0, rules, sector)
 
 
 def floor_z(source, x, y, radius=PLAYER_RADIUS):
@@ -316,8 +324,7 @@ def _walls_met(cache, ax, ay, bx, by):
     if cache.met is not None and cache.met[0] == (ax, ay, bx, by):
         return sorted(cache.met[1])
     if kernels_enabled():
-        return sorted(MET_KERNEL(cache.tables.arrays, float(ax), float(ay), float(bx),
-                                 float(by)))
+        return sorted(_ask(cache, MEET, ax, ay, bx, by)[3])
     return sorted(walls_met(cache.tables.lists, ax, ay, bx, by))
 
 

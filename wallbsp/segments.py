@@ -4,12 +4,12 @@ P_SlideMove and P_CheckSight on plain coordinates).  A wall here is ``(x1, y1, x
 
 **One source, two ways to run it.**  Every function below is in the subset of Python that
 numba compiles (``jitable``): the interpreter runs it on a tree's ``querytables.Tables`` as
-Python lists (the reference, and what runs without numba); the ``*_KERNEL`` entry points
-are the same functions compiled, run on the same tables as numpy arrays.  Both give the
-same floats, operation by operation: numba keeps Python's ``min``/``max`` and fuses no
-multiply-adds, and ``lengths.length`` is ``math.hypot`` in Python and the same number
-compiled.  Everything the kernels compile is in this file and ``lengths``: numba's disk
-cache only notices changes to this file, the one of the compiled functions.
+Python lists (the reference, and what runs without numba); ``KERNEL`` is ``ask`` compiled,
+run on the same tables as numpy arrays.  Both give the same floats, operation by
+operation: numba keeps Python's ``min``/``max`` and fuses no multiply-adds, and
+``lengths.length`` is ``math.hypot`` in Python and the same number compiled.  Everything
+the kernel compiles is in this file and ``lengths``: numba's disk cache only notices
+changes to this file, the one of the compiled function.
 """
 from __future__ import annotations
 
@@ -26,9 +26,9 @@ else:                                    # pragma: no cover - where numba is abs
         return function
 
 __all__ = ["SKIN", "slide", "closest_point", "meet", "box_sides",
-           "segs_near", "opening", "move_steps", "move_and_look", "standing", "tolerance",
+           "segs_near", "opening", "move_steps", "ask", "standing", "tolerance",
            "locate", "surroundings_at", "walls_met", "wall_side", "LOCATE", "UNSURE",
-           "MOVE_KERNEL", "SURROUNDINGS_KERNEL", "MET_KERNEL"]
+           "MOVE", "STAND", "MEET", "KERNEL"]
 
 SKIN = 1e-4          # a contact stops this far outside the radius, so float error never
 #                      leaves the circle overlapping a wall it was stopped by
@@ -37,6 +37,7 @@ _MAX_SLIDES = 4      # sweeps per sub-step: one per wall met, like P_SlideMove's
 _TANGENT = 1e-12     # relative inward motion accepted as "along the wall" (float noise)
 _MARGIN = 1e-6       # node boxes hold rounded split points: a hair of margin
 LOCATE, UNSURE = -3, -2   # surroundings_at: find the sector; it could not be told in doubles
+MOVE, STAND, MEET = 0, 1, 2   # what ``ask`` is asked
 # -- the tree search --------------------------------------------------------------------------
 # Not ``BSPTree.walk``: that is a view order from a point and visits both sides of every
 # node; a range search skips the side of a line its region cannot reach.
@@ -313,12 +314,12 @@ def walls_met(tables, ax, ay, bx, by):
     """``[(t, wall), ...]`` of the walls the segment a-b meets, ``t`` the first point along
     it (unsorted: the caller sorts)."""
     root, nodes, links, seg_wall, ends = tables[0], tables[1], tables[2], tables[4], tables[6]
-    hits, seen = [], set()
+    hits, seen = [], []                 # (a wall has few segs: a list is quick to search)
     for seg in segs_near(root, nodes, links, ax, ay, bx, by, 0.0):
         wall = seg_wall[seg]
         if wall in seen:
             continue
-        seen.add(wall)
+        seen.append(wall)
         e = ends[wall]
         count, t0, t1 = meet(ax, ay, bx, by, e[0], e[1], e[2], e[3])
         if count:
@@ -362,15 +363,25 @@ def meet(ax, ay, bx, by, cx, cy, dx, dy):
 
 
 @jitable
-def move_and_look(tables, floors, ceilings, boxes, x, y, sx, sy, pieces, rules):
-    """``move_steps``, then what a tic asks next: ``(x, y, surroundings_at the end (the
-    mover's radius), walls_met on the straight way there)``, in one call."""
-    nx, ny = move_steps(tables, floors, ceilings, boxes, x, y, sx, sy, pieces, rules)
-    around = surroundings_at(tables, floors, ceilings, nx, ny, rules[1], LOCATE)
-    return nx, ny, around, walls_met(tables, x, y, nx, ny)
+def ask(tables, floors, ceilings, boxes, question, x, y, u, v, pieces, rules, sector):
+    """The collision queries in one call, ``(x, y, surroundings_at, walls_met)``:
+
+    - ``MOVE``: ``move_steps`` by ``pieces`` sub-steps (u, v), then what a tic asks next:
+      the surroundings where it ends and the walls met on the straight way there;
+    - ``STAND``: (x, y) stays; its surroundings (``sector`` as ``surroundings_at`` takes it);
+    - ``MEET``: (x, y) stays; the walls met from it to (u, v).
+
+    The circle's radius is ``rules[1]``; what was not asked for is answered too, cheaply."""
+    ex, ey = u, v
+    if question == MOVE:
+        ex, ey = move_steps(tables, floors, ceilings, boxes, x, y, u, v, pieces, rules)
+    elif question == STAND:
+        ex, ey = x, y
+    centre = LOCATE if question != STAND else sector
+    ax, ay = (ex, ey) if question == MOVE else (x, y)
+    around = surroundings_at(tables, floors, ceilings, ax, ay, rules[1], centre)
+    return ax, ay, around, walls_met(tables, x, y, ex, ey)
 
 
-# the entry points, compiled (numba's njit of the same functions; see the module docstring)
-MOVE_KERNEL = kernel(move_and_look)
-SURROUNDINGS_KERNEL = kernel(surroundings_at)
-MET_KERNEL = kernel(walls_met)
+# the one compiled entry point (numba builds each entry point whole: one is quickest)
+KERNEL = kernel(ask)
