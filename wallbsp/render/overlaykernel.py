@@ -122,10 +122,11 @@ def _sprite_columns(ids, depth, along, seen, angle, kind, chosen_kind, chosen, p
                     pic_height, pic_left, pic_top, sector, flags, thing_height, thing_z,
                     bright, hanging, floor, ceiling, light, lit, u, x0, y0, z, f, width,
                     height, ds_col, ds_w, ds_open_top, ds_open_bottom, ds_piece, piece_keys,
-                    key_near, key_far):
-    """``(ints (7, n), floats (3, n), drawn)``: the sprite columns of the things
-    ``visible_things`` kept, clipped to the windows, as ``Slices``' ``col, top, bottom,
-    slot, tx, level, index`` and ``t0, tstep, depth``, and how many things have one;
+                    key_near, key_far, wall_ints, wall_floats):
+    """``(ints (7, n), floats (3, n), sprites, drawn)``: the sprite columns of the things
+    ``visible_things`` kept, clipped to the windows, then the masked walls' (``wall_ints``,
+    ``wall_floats``), as ``Slices``' ``col, top, bottom, slot, tx, level, index`` and ``t0,
+    tstep, depth``; how many of them are sprites', and how many things have one.
     ``drawn`` is -1 (and nothing is made) when a thing's picture is not chosen yet
     (``_chosen_pictures``)."""
     m = ids.shape[0]
@@ -135,15 +136,16 @@ def _sprite_columns(ids, depth, along, seen, angle, kind, chosen_kind, chosen, p
     total = 0
     for s in range(m):
         if picture[s] < 0:
-            return np.empty((7, 0), np.int64), np.empty((3, 0)), -1
+            return np.empty((7, 0), np.int64), np.empty((3, 0)), 0, -1
         w, lft = pic_width[picture[s] >> 1], pic_left[picture[s] >> 1]
         scale = f / depth[s]
         c1 = int(max(np.ceil(x0 + (along[s] - lft) * scale), 0.0))
         c2 = min(np.ceil(x0 + (along[s] - lft + w) * scale), float(width))
         first[s], counts[s] = c1, max(int(c2) - c1, 0)
         total += counts[s]
-    ints = np.empty((7, total), dtype=np.int64)
-    floats = np.empty((3, total), dtype=np.float64)
+    walls = wall_ints.shape[1]
+    ints = np.empty((7, total + walls), dtype=np.int64)
+    floats = np.empty((3, total + walls), dtype=np.float64)
     ds = (ds_col, ds_w, ds_open_top, ds_open_bottom, ds_piece, piece_keys)
     keys = np.full(ds_col.shape[0], np.nan)
     n, drawn = 0, 0
@@ -190,7 +192,12 @@ def _sprite_columns(ids, depth, along, seen, angle, kind, chosen_kind, chosen, p
                 floats[0, n], floats[1, n], floats[2, n] = t0, tstep, d
                 n += 1
         drawn += n > before
-    return ints[:, :n], floats[:, :n], drawn
+    for k in range(walls):                                # element by element: numba
+        for r in range(7):                                # compiles a slice assignment
+            ints[r, n + k] = wall_ints[r, k]              # for seconds
+        for r in range(3):
+            floats[r, n + k] = wall_floats[r, k]
+    return ints[:, :n + walls], floats[:, :n + walls], n, drawn
 
 
 @kernel
@@ -280,20 +287,6 @@ def _composite(col, top, bottom, slot, tx, t0, tstep, level, depth, texels, opaq
 
 
 @kernel
-def _joined(first, then):
-    """The columns of ``first`` and then of ``then`` (``np.concatenate(axis=1)``; element by
-    element: numba takes seconds to compile an array slice's assignment)."""
-    n = first.shape[1]
-    out = np.empty((first.shape[0], n + then.shape[1]), dtype=first.dtype)
-    for r in range(first.shape[0]):
-        for k in range(n):
-            out[r, k] = first[r, k]
-        for k in range(then.shape[1]):
-            out[r, n + k] = then[r, k]
-    return out
-
-
-@kernel
 def draw_things(ids, depth, along, seen, angle, kind, chosen_kind, chosen, pic_width,
                 pic_height, pic_left, pic_top, sector, flags, thing_height, thing_z, bright,
                 hanging, floor, ceiling, light, lit, u, x0, y0, z, f, ds_col, ds_w,
@@ -301,22 +294,20 @@ def draw_things(ids, depth, along, seen, angle, kind, chosen_kind, chosen, pic_w
                 wall_ints, wall_floats, texels, opaque, offset, paletted, lit_palette,
                 colour_columns):
     """Draw the sprites of the kept things and the masked-wall slices (``wall_ints``,
-    ``wall_floats``: rows as ``_sprite_columns`` gives them) into ``colour_columns``
+    ``wall_floats``: rows as ``_sprite_columns`` makes them) into ``colour_columns``
     (``width × height × 3`` uint8), the nearest opaque texel of a pixel winning; returns
     ``(kind, index, depth)`` of the slices (sprites first), ``(pixel, which)`` of the
     pixels written and how many things were drawn (-1, nothing drawn: a picture to
     choose first)."""
-    ints, floats, drawn = _sprite_columns(
+    ints, floats, n_sprites, drawn = _sprite_columns(
         ids, depth, along, seen, angle, kind, chosen_kind, chosen, pic_width, pic_height,
         pic_left, pic_top, sector, flags, thing_height, thing_z, bright, hanging, floor,
         ceiling, light, lit, u, x0, y0, z, f, colour_columns.shape[0],
         colour_columns.shape[1], ds_col, ds_w, ds_open_top, ds_open_bottom, ds_piece,
-        piece_keys, key_near, key_far)
-    n_sprites = ints.shape[1]
-    if drawn < 0 or n_sprites + wall_ints.shape[1] == 0:
+        piece_keys, key_near, key_far, wall_ints, wall_floats)
+    if drawn < 0 or ints.shape[1] == 0:
         empty = np.empty(0, dtype=np.int64)
         return np.empty(0, np.uint8), empty, np.empty(0), empty, empty, drawn
-    ints, floats = _joined(ints, wall_ints), _joined(floats, wall_floats)
     kinds = np.full(ints.shape[1], KIND_WALL, dtype=np.uint8)
     for k in range(n_sprites):
         kinds[k] = KIND_THING
