@@ -19,11 +19,10 @@ from typing import NamedTuple
 import numpy as np
 
 from ..thingtypes import SPAWNCEILING
-from .masked import masked_keys
-from .maskedkernel import masked_columns
-from .overlaykernel import draw_things, visible_things
-from .tables import key_light
+from . import maskedkernel, overlaykernel    # by module: compiled.py swaps numba's
+from .masked import masked_keys              # dispatchers in for the lazy kernels there
 from .sprites import pictures, rotations
+from .tables import key_light
 
 __all__ = ["compiled_overlay", "Reports"]
 
@@ -45,7 +44,7 @@ def compiled_overlay(view, state, tables, walk, piece_keys, make_drawsegs, atlas
     ``Overlay`` and stats); ``make_drawsegs()`` gives the walk's ``DrawSegs``."""
     things = state.things
     keys = masked_keys(tables, state, atlas)
-    considered, ids, offsets, masked = visible_things(
+    considered, ids, offsets, masked = overlaykernel.visible_things(
         np.asarray(walk.leaves, dtype=np.int64), len(things.tree.leaf_sector), things.leaf,
         things.alive, things.drawn, things.x, things.y, things.radius, view.x, view.y,
         view.fx, view.fy, view.rx, view.ry, view.x0, view.f, piece_keys, keys.slot)
@@ -57,7 +56,7 @@ def compiled_overlay(view, state, tables, walk, piece_keys, make_drawsegs, atlas
     texels, opaque, offset, width, height, left, top, paletted = atlas.arrays()
     wall_rows = _NO_WALLS
     if masked:
-        wall_rows = masked_columns(
+        wall_rows = maskedkernel.masked_columns(
             drawsegs.piece, drawsegs.col, drawsegs.w, drawsegs.open_top, drawsegs.open_bottom,
             piece_keys, keys.slot, keys.start, keys.direction, keys.x_offset, keys.y_offset,
             keys.unpegged, key_light(tables, state), state.wall_x_offset, tables.key_wall,
@@ -68,7 +67,7 @@ def compiled_overlay(view, state, tables, walk, piece_keys, make_drawsegs, atlas
     seen = np.degrees(np.arctan2(dy, dx))
     table = _choices(atlas, things)
     for _ in range(2):                       # again once the missing choices are made
-        kind, index, slice_depth, pixel, which, drawn = draw_things(
+        kind, index, slice_depth, pixel, which, drawn = overlaykernel.draw_things(
             ids, depth, along, seen, things.angle, things.type, table.kind, table.chosen,
             width, height, left, top, things.sector, things.flags, things.height, things.z,
             things.bright, SPAWNCEILING, state.floor, state.ceiling, state.light, bool(light),
