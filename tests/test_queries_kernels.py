@@ -128,7 +128,10 @@ def test_the_compiled_length_is_math_hypot():
     import math
 
     import numba
+    from wallbsp.jitable import register_jitables
     from wallbsp.lengths import length
+
+    register_jitables()                      # what a kernel's first use does
 
     @numba.njit
     def lengths_of(a, b, out):

@@ -16,13 +16,7 @@ import math
 
 import numpy as np
 
-from .compiled import AVAILABLE
-
-if AVAILABLE:
-    from numba.extending import overload, register_jitable as jitable
-else:                                    # pragma: no cover - where numba is absent
-    def jitable(function):
-        return function
+from .jitable import compiled_as, jitable
 
 __all__ = ["length", "rounded_hypot"]
 
@@ -132,7 +126,8 @@ def _beyond(p1, e1, p2, e2, h, gap):
     return _sign_of_sum((p1, e1, p2, e2, -p3, -e3, -h * gap, -gap * gap / 4))
 
 
-if AVAILABLE:
-    @overload(length, jit_options={"error_model": "numpy"})
-    def _compiled_length(x, y):
-        return lambda x, y: rounded_hypot(x, y)
+def _compiled_length(x, y):
+    return rounded_hypot                # inside a kernel, length(x, y) is rounded_hypot(x, y)
+
+
+compiled_as(length, _compiled_length)

@@ -69,7 +69,8 @@ import numpy as np
 from .compiled import kernels_enabled
 from .geometry import direction
 from .querytables import Tables
-from .segments import (KERNEL, LOCATE, MEET, MOVE, STAND, UNSURE, meet, move_steps, opening,
+from . import segments
+from .segments import (LOCATE, MEET, MOVE, STAND, UNSURE, meet, move_steps, opening,
                        segs_near as search, surroundings_at, wall_side, walls_met)
 from .world import state_of
 
@@ -200,9 +201,9 @@ def move(source, x, y, dx, dy, z_floor, radius=PLAYER_RADIUS, step=MAX_STEP,
     rules = (float(z_floor), float(radius), float(step), float(headroom))
     things = state.things
     if kernels_enabled():
-        nx, ny, around, met = KERNEL(tables.arrays, *cache.arrays, things.solid_boxes(), MOVE,
-                                     float(x), float(y), dx / pieces, dy / pieces, pieces,
-                                     rules, LOCATE)
+        nx, ny, around, met = segments.KERNEL(
+            tables.arrays, *cache.arrays, things.solid_boxes(), MOVE, float(x), float(y),
+            dx / pieces, dy / pieces, pieces, rules, LOCATE)
         cache.moved((x, y, nx, ny), radius, around, met)
         return nx, ny
     # the solid things any sub-step may reach (each sweeps at most its length, twice that
@@ -259,8 +260,8 @@ def _surroundings_at(cache, x, y, radius, sector):
 def _ask(cache, question, x, y, u, v, radius=PLAYER_RADIUS, sector=LOCATE):
     """``segments.ask`` compiled, for a question that moves nothing."""
     rules = (0.0, float(radius), 0.0, 0.0)
-    return KERNEL(cache.tables.arrays, *cache.arrays, _NO_BOXES, question, float(x),
-                  float(y), float(u), float(v), 0, rules, sector)
+    return segments.KERNEL(cache.tables.arrays, *cache.arrays, _NO_BOXES, question, float(x),
+                           float(y), float(u), float(v), 0, rules, sector)
 
 
 def floor_z(source, x, y, radius=PLAYER_RADIUS):

@@ -15,20 +15,15 @@ from __future__ import annotations
 
 import math
 
-from .compiled import AVAILABLE, kernel
+from .compiled import kernel
 from .geometry import SIDE_ERROR, SIDE_UNDERFLOW
+from .jitable import jitable, register_jitables
 from .lengths import length
-
-if AVAILABLE:
-    from numba.extending import register_jitable as jitable
-else:                                    # pragma: no cover - where numba is absent
-    def jitable(function):
-        return function
 
 __all__ = ["SKIN", "slide", "closest_point", "meet", "box_sides",
            "segs_near", "opening", "move_steps", "ask", "standing", "tolerance",
            "locate", "surroundings_at", "walls_met", "wall_side", "LOCATE", "UNSURE",
-           "MOVE", "STAND", "MEET", "KERNEL"]
+           "MOVE", "STAND", "MEET"]
 
 SKIN = 1e-4          # a contact stops this far outside the radius, so float error never
 #                      leaves the circle overlapping a wall it was stopped by
@@ -383,5 +378,12 @@ def ask(tables, floors, ceilings, boxes, question, x, y, u, v, pieces, rules, se
     return ax, ay, around, walls_met(tables, x, y, ex, ey)
 
 
-# the one compiled entry point (numba builds each entry point whole: one is quickest)
-KERNEL = kernel(ask)
+def __getattr__(name):
+    """``KERNEL``: ``ask`` compiled, the one entry point (numba builds each entry point
+    whole: one is quickest to build), made on first use, after the functions it calls are
+    registered with numba (``jitable``)."""
+    if name != "KERNEL":
+        raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+    register_jitables()
+    globals()["KERNEL"] = compiled = kernel(ask)
+    return compiled
