@@ -6,18 +6,24 @@ Two renderers share every piece of arithmetic and give the same pixels:
   ``R_RenderBSPNode`` does, keeping a sorted list of closed columns (``walk``);
 - ``order="back_to_front"`` is the painter's algorithm (``painter``).
 
-Only the walks are Python, touching each visited node and seg once; they record the drawn
-pieces, and all pixel work is batched in numpy: ``rows`` turns pieces into per-column rows,
-``fill`` the rows into runs and the runs into pixels (flat colours), ``texfill`` the runs
-into texels (SPEC §4b) from the level's ``textures`` (one atlas, one lit colour table),
-``shading`` gives light levels and colours, ``layers`` the id and depth buffers on demand.
-Heights and light come from the ``WorldState`` of the source each frame (``tables``).
-Things and masked middle textures are drawn over the finished frame (``overlay``).
+The reference code: only the walks are Python, touching each visited node and seg once;
+they record the drawn pieces, and all pixel work is batched in numpy: ``rows`` turns pieces
+into per-column rows, ``fill`` the rows into runs and the runs into pixels (flat colours),
+``texfill`` the runs into texels (SPEC §4b) from the level's ``textures`` (one atlas, one lit
+colour table), ``shading`` gives light levels and colours, ``layers`` the id and depth
+buffers on demand.  Heights and light come from the ``WorldState`` of the source each frame
+(``tables``).  Things and masked middle textures are drawn over the finished frame
+(``overlay``).
+
+Front to back, the same steps also run as compiled kernels (``compiled``), which give the
+same bytes and are used when numba is there: ``walkkernel`` (the walk), ``columnkernel``
+and ``compiledfill`` (entries, the flat and textured fills, the id and depth buffers),
+``overlaykernel``, ``maskedkernel`` and ``overlaycompiled`` (the masked pass).
 
 Modules: ``tables`` (what the tree and the world give), ``project`` (segs and boxes to
 columns), ``columns`` (the closed-column list), ``walk``, ``painter``, ``rows``, ``fill``,
 ``texfill``, ``textures``, ``shading``, ``layers``, ``frame``; the masked pass: ``overlay``,
-``sprites``, ``masked``, ``clipping``, ``atlas``.
+``sprites``, ``masked``, ``clipping``, ``atlas``; the kernels named above.
 """
 from __future__ import annotations
 

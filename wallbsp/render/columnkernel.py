@@ -149,12 +149,12 @@ def _column_run(out, at, r0, r1, first, last, texture, t0, t1, level, atlas, lut
         wrap = int(height)
         for r in range(r0, r1):
             t = t_rel + t1 * r
-            out[at + r] = lut[atlas[int(t) % wrap + address] + level]
+            out[at + r] = lut[int(atlas[int(t) % wrap + address]) + level]
     else:
         step = int(_rint(t1 * FIX_ONE))
         fixed = (address << FIX) + int(np.floor(t_rel * FIX_ONE + 0.5))
         for r in range(r0, r1):
-            out[at + r] = lut[atlas[(fixed + step * r) >> FIX] + level]
+            out[at + r] = lut[int(atlas[(fixed + step * r) >> FIX]) + level]
 
 
 @kernel
@@ -195,7 +195,7 @@ def _plane(out, at, r0, r1, h, base, far, ray, view, atlas, lut, n_colours, ligh
         ty = _int32(ky * inverse + view[12]) & 63
         if light:
             level = _light(far, abs(view[8] - r) / fz_abs, n_colours)
-        out[at + r] = lut[atlas[((tx << 6) | ty) + base] + level]
+        out[at + r] = lut[int(atlas[((tx << 6) | ty) + base]) + level]
 
 
 @kernel
@@ -254,7 +254,7 @@ def paint_textured(keys, cols, ws, bounds, open_top, open_bottom, u, view, sky_c
                 _plane(out, at, r0, r1, h, plane_base[sector, 1 if ceil else 0],
                        _far_level(sector_light[sector]), ray, view, atlas, lut, n_colours,
                        light)
-    nothing = lut[atlas[tex_base[black]] + unlit]
+    nothing = lut[int(atlas[tex_base[black]]) + unlit]
     for c in range(len(open_top)):
         top = open_top[c]
         for r in range(top, max(open_bottom[c], top)):
