@@ -11,7 +11,7 @@ import weakref
 
 import numpy as np
 
-from .columnkernel import column_entries, paint_flat, paint_layers, paint_textured
+from . import columnkernel as kernels      # by module: the kernels swapped in when compiled
 from .fill import DrawSegs
 from .frame import KIND_CEILING, KIND_FLOOR, KIND_WALL
 from .shading import LIGHT_LEVELS
@@ -30,8 +30,8 @@ class CompiledEntries:
         table = np.asarray(pieces, dtype=np.float64).reshape(-1, 5)
         self.piece_keys = table[:, 0].astype(np.int64)
         (self.keys, self.cols, self.w, self.bounds, self.open_top, self.open_bottom,
-         *self._drawsegs) = column_entries(table, view.u, heights.key_heights, view.f, view.z,
-                                           view.y0, view.width, view.height)
+         *self._drawsegs) = kernels.column_entries(table, view.u, heights.key_heights, view.f,
+                                                   view.z, view.y0, view.width, view.height)
 
     def drawsegs(self) -> DrawSegs:
         """``fill.DrawSegs`` of the entries: by column, then walk order."""
@@ -62,7 +62,7 @@ class CompiledLayers:
         index = np.empty(n, dtype=np.int32)
         depth = np.empty(n, dtype=np.float32)
         kinds, indices = self.parts
-        paint_layers(e.keys, e.cols, e.w, e.bounds, e.open_top, e.open_bottom,
+        kernels.paint_layers(e.keys, e.cols, e.w, e.bounds, e.open_top, e.open_bottom,
                      _view_numbers(view), kinds, indices, self.tables.sector_sky,
                      heights.floor, heights.ceiling, view.height, kind, index, depth)
         return {"kind": kind.reshape(shape), "index": index.reshape(shape),
@@ -141,7 +141,7 @@ def fill_compiled(tables, tex, heights, state, view, pieces, light=True):
 
 
 def _paint_flat(tables, heights, state, view, e, light, colour):
-    return paint_flat(
+    return kernels.paint_flat(
         e.keys, e.cols, e.w, e.bounds, e.open_top, e.open_bottom, _view_numbers(view),
         tables.key_near, _key_surfaces(tables), tables.key_upper_sky, key_light(tables, state),
         tables.plane_base_surface, tables.sector_sky, heights.floor, heights.ceiling,
@@ -164,7 +164,7 @@ def _key_surfaces(tables):
 def _paint_textured(tables, tex, heights, state, view, e, parts, light, colour):
     kinds, indices = parts
     offsets = state.wall_x_offset
-    return paint_textured(
+    return kernels.paint_textured(
         e.keys, e.cols, e.w, e.bounds, e.open_top, e.open_bottom, view.u, _view_numbers(view),
         _sky_columns(tex, view), kinds, indices, tex.part_table, tables.key_far,
         key_light(tables, state), tables.key_wall, offsets, bool(offsets.any()),
