@@ -63,8 +63,8 @@ class CompiledLayers:
         depth = np.empty(n, dtype=np.float32)
         kinds, indices = self.parts
         kernels.paint_layers(e.keys, e.cols, e.w, e.bounds, e.open_top, e.open_bottom,
-                     _view_numbers(view), kinds, indices, self.tables.sector_sky,
-                     heights.floor, heights.ceiling, view.height, kind, index, depth)
+                             _view_numbers(view), kinds, indices, self.tables.sector_sky,
+                             heights.floor, heights.ceiling, view.height, kind, index, depth)
         return {"kind": kind.reshape(shape), "index": index.reshape(shape),
                 "depth": depth.reshape(shape)}
 
