@@ -5,7 +5,9 @@ Every function takes a *source*: a ``BSPTree`` (the level's own heights), a
 ``WorldState`` or anything with one as ``.state`` (the game's world), resolved by
 ``world.state_of``.  The tree's geometry is cached per tree; sector heights are read from
 the state and cached per ``state.version``, so a door that opens is walked and seen through
-at once.  No pygame, no state of our own.
+at once.  No pygame.  What the queries keep per state is a cache: the last surroundings
+asked for and the walls the last move met, which a tic asks for next (a compiled move
+computes them with the move, one call a tic; ``segments``).
 
 **The player** is a circle of ``radius`` (DOOM: 16) whose feet are at ``z_floor``.  A seg
 blocks it when
@@ -16,8 +18,8 @@ blocks it when
 - the opening's bottom ``max(floors)`` is more than ``step`` (DOOM: 24) above ``z_floor``.
 
 **Solid things** (barrels, pillars, monsters: DOOM's MF_SOLID) block too, by DOOM's
-PIT_CheckThing: the sides of a square of half-size the thing's radius
-(``Things.solid_sides`` of the source's state) are blocking segs for the sweep, so the
+PIT_CheckThing: the sides of a square of half-size the thing's radius (the boxes of
+``Things.solid_boxes`` of the source's state) are blocking segs for the sweep, so the
 circle stops ``radius`` away from the square and slides round it; height plays no part,
 as in vanilla DOOM.  A tree's static state has the level's things.
 

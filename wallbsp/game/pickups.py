@@ -8,7 +8,8 @@
   move every tic, at the new position (DOOM touches items while checking the new spot).
 - ``blocked_at(things, x, y)``: whether a player there overlaps a solid thing's box
   (DOOM's P_CheckPosition refusal).  ``queries.move`` keeps the player out of those
-  boxes itself: their sides (``Things.solid_sides``) block its sweep as walls do.
+  boxes itself: their sides (``segments.box_sides`` of ``Things.solid_boxes``) block its
+  sweep as walls do.
 """
 from __future__ import annotations
 
