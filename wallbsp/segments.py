@@ -115,6 +115,8 @@ def _try_move(tables, floors, ceilings, boxes, x, y, dx, dy, rules):
         return x + dx, y + dy
     big = radius + SKIN
     nx, ny = slide(x, y, dx, dy, walls, big)
+    # (compiled, ** 2 is a product and CPython's may differ in the last bit: only a sum
+    # within a bit of 1e-18 could tell, and no move has been seen to come that close)
     if (nx - x) ** 2 + (ny - y) ** 2 < 1e-18:
         nx, ny = slide(x, y, dx, 0.0, walls, big)
         nx, ny = slide(nx, ny, 0.0, dy, walls, big)
