@@ -32,7 +32,7 @@ from ..queries import PLAYER_RADIUS
 from ..render import render
 from . import actions
 from .observations import (VIEW_KEYS, Automap, check_observations, observation_space,
-                           pose_of, rows_of, view_observation)
+                           pose_of, view_observation)
 
 __all__ = ["WallbspEnv", "DEFAULT_OBSERVATIONS", "TICRATE"]
 
@@ -114,7 +114,7 @@ class WallbspEnv(gym.Env):
     def render(self):
         if self.render_mode is None or self.world is None:
             return None
-        rgb = rows_of(self._view().color_columns)
+        rgb = self._view().rows("rgb")
         if self.render_mode == "rgb_array":
             return rgb
         if self._window is None:

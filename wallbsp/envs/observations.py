@@ -22,8 +22,10 @@ from __future__ import annotations
 
 import numpy as np
 
+from ..render.rowmajor import rows_of
+
 __all__ = ["OBSERVATIONS", "VIEW_KEYS", "observation_space", "check_observations", "Automap",
-           "pose_of", "rows_of", "view_observation"]
+           "pose_of", "view_observation"]
 
 OBSERVATIONS = ("rgb", "depth", "labels", "automap", "pose")
 VIEW_KEYS = frozenset({"rgb", "depth", "labels"})
@@ -60,26 +62,7 @@ def observation_space(keys, width: int, height: int):
 def view_observation(frame, keys) -> dict:
     """The view buffers of a rendered ``frame`` among ``keys`` (new C-ordered arrays: a
     vector env copies them on, and only a C-ordered array copies at memory speed)."""
-    out = {}
-    if "rgb" in keys:
-        out["rgb"] = rows_of(frame.color_columns)
-    if "depth" in keys:
-        out["depth"] = np.asarray(frame.depth, dtype=np.float32).copy()
-    if "labels" in keys:
-        labels = np.empty(frame.kind.shape + (2,), dtype=np.int32)
-        labels[..., 0], labels[..., 1] = frame.kind, frame.index
-        out["labels"] = labels
-    return out
-
-
-def rows_of(columns) -> np.ndarray:
-    """A C-ordered ``(H, W, C)`` copy of a column-major ``(W, H, C)`` picture, one channel
-    at a time: numpy copies the whole transposed view C bytes per inner loop, ~7x slower."""
-    width, height, channels = columns.shape
-    rows = np.empty((height, width, channels), dtype=columns.dtype)
-    for k in range(channels):
-        rows[..., k] = columns[..., k].T
-    return rows
+    return {name: frame.rows(name) for name in ("rgb", "depth", "labels") if name in keys}
 
 
 def pose_of(player) -> np.ndarray:

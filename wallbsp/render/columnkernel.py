@@ -268,6 +268,9 @@ def paint_layers(keys, cols, ws, bounds, open_top, open_bottom, view, part_kind,
     """Kind, index and depth of every pixel (``layers.RunLayers``), column-major: a wall's
     depth is its column's ``1/w``, a plane's ``|f*(h - z)| / |y0 - row|``, sky and nothing
     are infinitely far."""
+    inverse = np.empty(height, dtype=np.float64)
+    for r in range(height):
+        inverse[r] = 1.0 / abs(view[8] - r)
     for i in range(len(keys)):
         key, c = keys[i], cols[i]
         top, bottom = bounds[4, i], bounds[5, i]
@@ -297,7 +300,7 @@ def paint_layers(keys, cols, ws, bounds, open_top, open_bottom, view, part_kind,
             for r in range(r0, r1):
                 kind_out[at + r] = kind
                 index_out[at + r] = index
-                scale = b * (1.0 / abs(view[8] - r)) if b > 0.0 else b
+                scale = b * inverse[r] if b > 0.0 else b
                 depth_out[at + r] = np.float32(a + scale)
     for c in range(len(open_top)):
         top = open_top[c]

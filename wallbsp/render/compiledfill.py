@@ -41,18 +41,22 @@ class CompiledEntries:
 
 class CompiledLayers:
     """``columns(name)`` for ``kind``, ``index`` and ``depth`` (all three made by one
-    kernel pass the first time one is asked for; a fresh copy each call) and
-    ``drawsegs()``."""
+    kernel pass the first time one is asked for; each call's array is the caller's own:
+    the one made, the first time, then copies) and ``drawsegs()``."""
 
     def __init__(self, view, heights, tables, parts, entries: CompiledEntries):
         self.view, self.heights, self.tables, self.parts = view, heights, tables, parts
         self.entries = entries
         self._made = None
+        self._given = set()
 
     def columns(self, name):
         if self._made is None:
             self._made = self._paint()
-        return self._made[name].copy()
+        if name in self._given:
+            return self._made[name].copy()
+        self._given.add(name)
+        return self._made[name]
 
     def _paint(self):
         view, e, heights = self.view, self.entries, self.heights

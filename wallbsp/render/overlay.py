@@ -24,6 +24,7 @@ from .clipping import ClipWindows, Slices
 from .fill import drawsegs, front_to_back_runs
 from .masked import has_masked_walls, masked_slices
 from .overlaycompiled import compiled_overlay
+from .rowmajor import packed_pixels
 from .rows import Entries
 from .sprites import sprite_slices
 from .textures import level_resources
@@ -77,25 +78,12 @@ def composite(slices: Slices, atlas, colour_columns, height) -> Overlay:
                                    colour_columns.shape[0] * height)
     which, pixel, texel = which[keep], pixel[keep], texels[texel[keep]]
     packed = _lit(atlas, paletted[slices.slot], slices.level, which, texel)
-    whole = _packed_pixels(colour_columns)
+    whole = packed_pixels(colour_columns)     # one write a pixel instead of three bytes
     if whole is not None:
         whole[pixel] = packed
     else:
         colour_columns.reshape(-1, 3)[pixel] = packed.view(np.uint8).reshape(-1, 4)[:, :3]
     return Overlay(pixel, which, slices)
-
-
-def _packed_pixels(colour_columns):
-    """The frame as one packed uint32 per pixel, when ``colour_columns`` is the rgb view of
-    such a buffer (as every fill makes it): one write a pixel instead of three bytes."""
-    whole = colour_columns.base
-    width, height = colour_columns.shape[:2]
-    if (isinstance(whole, np.ndarray) and whole.dtype == np.dtype("<u4")
-            and whole.size == width * height and whole.flags.c_contiguous
-            and colour_columns.strides == (4 * height, 4, 1)
-            and colour_columns.ctypes.data == whole.ctypes.data):
-        return whole.reshape(-1)
-    return None
 
 
 def _lit(atlas, paletted, level, which, texel):

@@ -1,0 +1,92 @@
+"""A frame's buffers in row order: new C-ordered ``(H, W, ...)`` arrays.
+
+The renderer draws column-major (the layout pygame's ``blit_array`` takes); programs that
+learn want rows.  numpy copies a transposed view slowly (a byte or a few a step, strided),
+so the copies are small kernels when kernels are on, and numpy a channel at a time when not.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from ..compiled import kernel, kernels_enabled
+
+__all__ = ["rows_of", "rgb_rows", "labels_rows", "packed_pixels"]
+
+
+@kernel
+def _transpose(columns, rows):
+    for c in range(columns.shape[0]):
+        for r in range(columns.shape[1]):
+            rows[r, c] = columns[c, r]
+
+
+@kernel
+def _rgb_rows(packed, rows):
+    """Packed little-endian rgb pixels ``(W, H)`` into ``(H, W, 3)`` bytes."""
+    for c in range(packed.shape[0]):
+        for r in range(packed.shape[1]):
+            v = packed[c, r]
+            rows[r, c, 0] = v & 255
+            rows[r, c, 1] = (v >> 8) & 255
+            rows[r, c, 2] = (v >> 16) & 255
+
+
+@kernel
+def _label_rows(kind, index, rows):
+    for c in range(kind.shape[0]):
+        for r in range(kind.shape[1]):
+            rows[r, c, 0] = kind[c, r]
+            rows[r, c, 1] = index[c, r]
+
+
+def rows_of(columns) -> np.ndarray:
+    """A C-ordered ``(H, W, ...)`` copy of a column-major ``(W, H, ...)`` picture or layer."""
+    width, height = columns.shape[:2]
+    rows = np.empty((height, width) + columns.shape[2:], dtype=columns.dtype)
+    if kernels_enabled() and columns.ndim == 2 and columns.flags.c_contiguous:
+        _transpose(columns, rows)
+    elif columns.ndim == 2:
+        rows[...] = columns.T
+    else:
+        for k in range(columns.shape[2]):      # numpy: a channel at a time is ~7x faster
+            rows[..., k] = columns[..., k].T
+    return rows
+
+
+def rgb_rows(color_columns) -> np.ndarray:
+    """``(H, W, 3)`` uint8 rows of a frame's ``color_columns`` ``(W, H, 3)``; from the
+    packed pixel buffer it is a view of, when it is one (every fill makes it so)."""
+    packed = packed_pixels(color_columns)
+    if packed is None or not kernels_enabled():
+        return rows_of(color_columns)
+    width, height = color_columns.shape[:2]
+    rows = np.empty((height, width, 3), dtype=np.uint8)
+    _rgb_rows(packed.reshape(width, height), rows)
+    return rows
+
+
+def labels_rows(kind_columns, index_columns) -> np.ndarray:
+    """``(H, W, 2)`` int32 rows of kind and index, from their ``(W, H)`` columns."""
+    width, height = kind_columns.shape
+    rows = np.empty((height, width, 2), dtype=np.int32)
+    if kernels_enabled() and kind_columns.flags.c_contiguous \
+            and index_columns.flags.c_contiguous:
+        _label_rows(kind_columns, index_columns.astype(np.int32, copy=False), rows)
+    else:
+        rows[..., 0] = kind_columns.T
+        rows[..., 1] = index_columns.T
+    return rows
+
+
+def packed_pixels(colour_columns):
+    """The frame as one packed uint32 per pixel (flat, column-major), when
+    ``colour_columns`` (``(W, H, 3)`` uint8) is the rgb view of such a buffer, as every
+    fill makes it; else None."""
+    whole = colour_columns.base
+    width, height = colour_columns.shape[:2]
+    if (isinstance(whole, np.ndarray) and whole.dtype == np.dtype("<u4")
+            and whole.size == width * height and whole.flags.c_contiguous
+            and colour_columns.strides == (4 * height, 4, 1)
+            and colour_columns.ctypes.data == whole.ctypes.data):
+        return whole.reshape(-1)
+    return None
