@@ -106,3 +106,23 @@ def test_an_eye_on_a_partition_line_is_walked_the_same_both_ways(compiled_levels
     cameras = [Camera(x, y + 0.5, 41.0, angle) for y in np.linspace(min(ys), max(ys), 7)[1:-1]
                for angle in (0.0, 90.0)]
     assert_same_frames(tree, cameras, sizes=((48, 30),))
+
+
+@pytest.mark.parametrize("kernels", [True, False])
+def test_frame_rows_are_the_layers_in_c_order(compiled_levels, kernels):
+    tree = compiled_levels["multi"]
+    previous = compiled.use_kernels(kernels)
+    try:
+        frame = render(World(tree), spots(tree, 1)[-1], 37, 23)
+        rows = {name: frame.rows(name) for name in ("rgb", "kind", "index", "depth", "labels")}
+    finally:
+        compiled.use_kernels(previous)
+    for name in ("kind", "index", "depth"):
+        assert np.array_equal(rows[name], getattr(frame, name)) and rows[name].flags.c_contiguous
+    assert np.array_equal(rows["rgb"], frame.color) and rows["rgb"].dtype == np.uint8
+    assert rows["labels"].dtype == np.int32 and rows["labels"].flags.c_contiguous
+    assert np.array_equal(rows["labels"][..., 0], frame.kind)
+    assert np.array_equal(rows["labels"][..., 1], frame.index)
+    assert not np.shares_memory(rows["depth"], frame.depth)
+    with pytest.raises(KeyError):
+        frame.rows("colour")
