@@ -29,7 +29,12 @@ from .walk import (EYE, LOOK_AHEAD, PROBE, STEER, STEER_CANDIDATES, WALK, path_l
 
 COMMAND = "python tools/bench_maps.py"
 CHECK_FRAME = (320, 200)              # the start view, drawn by both renderers and compared
-FRAME_SIZES = ((320, 200), (640, 400))
+FRAME_SIZES = ((320, 200), (640, 400), (720, 450), (1280, 800))
+PAINTER_SIZES = ((320, 200), (640, 400))   # the painter's check; it is slow at large sizes
+# issue 10 (textured with light, front to back; things in, as issue 12 counts them) and
+# the untextured walk's floor
+FPS_TARGETS = {"320x200": 620, "720x450": 230, "1280x800": 80}
+UNTEXTURED_TARGET = ("320x200", 1000)
 WALKED_MAPS = ("E1M1", "MAP01")
 TIMED_MAP = "MAP12"                   # the largest map, 10,884 linedefs
 TARGETS = {"map12_compile_seconds": 0.5, "total_import_compile_seconds": 20.0,
@@ -135,7 +140,9 @@ def walk_line(tree, name: str, size, frames: int, repeat: int) -> dict:
     check that those frames are the same by both renderers."""
     cameras = walk_path(tree, frames)
     render(tree, cameras[0], *size)              # builds the per-tree render data once
+    render(tree, cameras[0], *size, textures=False)
     times = [[] for _ in cameras]
+    flat_times = [[] for _ in cameras]
     stats = [None] * len(cameras)                # the same every pass: the walk is fixed
     for _ in range(max(1, repeat)):
         for i, camera in enumerate(cameras):
@@ -143,21 +150,29 @@ def walk_line(tree, name: str, size, frames: int, repeat: int) -> dict:
             frame = render(tree, camera, *size)
             times[i].append(time.perf_counter() - started)
             stats[i] = frame.stats
+            started = time.perf_counter()
+            render(tree, camera, *size, textures=False)
+            flat_times[i].append(time.perf_counter() - started)
     per_frame = [statistics.median(t) for t in times]
-    painter = painter_pass(tree, cameras[::PAINTER_EVERY], size)
+    flat = statistics.median(statistics.median(t) for t in flat_times)
+    painter = painter_pass(tree, cameras[::PAINTER_EVERY] if size in PAINTER_SIZES else [],
+                           size)
     nodes = statistics.median(s["nodes_visited"] for s in stats)
     pixels = size[0] * size[1]
     return {"kind": "frames", "map": name, "size": f"{size[0]}x{size[1]}", "frames": len(cameras),
             "distance_walked": round(path_length(cameras), 1),
             "fps_median": round(1 / statistics.median(per_frame), 1),
+            "fps_untextured_median": round(1 / flat, 1),
             "frame_ms_median": round(1000 * statistics.median(per_frame), 2),
             "frame_ms_p95": round(1000 * float(np.percentile(per_frame, 95)), 2),
             "nodes": tree.node_count, "nodes_visited_median": nodes,
             "nodes_visited_fraction": round(nodes / tree.node_count, 4),
             "segs_drawn_median": statistics.median(s["segs_drawn"] for s in stats),
             "early_exit_rate": round(sum(bool(s["early_exit"]) for s in stats) / len(stats), 3),
-            "painter_fps_median": round(1 / statistics.median(painter["times"]), 1),
-            "painter_overdraw_median": round(statistics.median(painter["pixels"]) / pixels, 2),
+            "painter_fps_median": (round(1 / statistics.median(painter["times"]), 1)
+                                   if painter["times"] else None),
+            "painter_overdraw_median": (round(statistics.median(painter["pixels"]) / pixels, 2)
+                                        if painter["pixels"] else None),
             "painter_frames": len(painter["times"]),
             "mismatched_frames": painter["mismatches"]}
 
@@ -244,17 +259,39 @@ def frames_section(lines: list[dict]) -> str:
         f"the median of {s['repeat']} passes; fps = 1 / the median frame time. The painter "
         f"draws every {PAINTER_EVERY}th frame of the walk once, for its fps and overdraw "
         "(pixel writes / pixels), and each of those frames is compared with front to back "
-        "(color, kind, index).", "",
-        markdown_table(["map", "size", "fps (median)", "frame ms (median)", "frame ms (95th %)",
+        "(color, kind, index), at the two smaller sizes. The untextured fps is the same "
+        "walk in flat colours (`textures=False`), frame by frame beside the textured one.",
+        "", *fps_targets(walks),
+        markdown_table(["map", "size", "fps (median)", "untextured fps", "frame ms (median)",
+                        "frame ms (95th %)",
                         "nodes visited (median)", "of all nodes", "segs drawn (median)",
                         "early exit", "painter fps", "painter overdraw", "frames differing",
                         "walked"],
-                       [[w["map"], w["size"], w["fps_median"], w["frame_ms_median"],
+                       [[w["map"], w["size"], w["fps_median"], w["fps_untextured_median"],
+                         w["frame_ms_median"],
                          w["frame_ms_p95"], f"{w['nodes_visited_median']} / {w['nodes']}",
                          w["nodes_visited_fraction"], w["segs_drawn_median"],
                          w["early_exit_rate"], w["painter_fps_median"],
                          w["painter_overdraw_median"],
-                         f"{len(w['mismatched_frames'])} of {w['painter_frames']}",
+                         f"{len(w['mismatched_frames'])} of {w['painter_frames']}"
+                         if w["painter_frames"] else "-",
                          w["distance_walked"]] for w in walks]), ""]
     return "\n".join(body)
 
+
+def fps_targets(walks) -> list:
+    """The table of the walk's frame-rate targets (issues 10 and 12), map by map."""
+    rows = []
+    for w in walks:
+        wanted = FPS_TARGETS.get(w["size"])
+        if wanted:
+            rows.append([w["map"], f"textured, {w['size']}", w["fps_median"], f"≥ {wanted}",
+                         "yes" if w["fps_median"] >= wanted else "**no**"])
+        if w["size"] == UNTEXTURED_TARGET[0]:
+            wanted = UNTEXTURED_TARGET[1]
+            rows.append([w["map"], f"untextured, {w['size']}", w["fps_untextured_median"],
+                         f"≥ {wanted}", "yes" if w["fps_untextured_median"] >= wanted
+                         else "**no**"])
+    if not rows:
+        return []
+    return [markdown_table(["map", "walk", "fps (median)", "target", "met"], rows), ""]
