@@ -76,11 +76,15 @@ def test_maps_quick_prints_maps_frames_and_a_summary(maps):
                 "render_ok"} <= line.keys()
         assert line["validate_ok"] and line["render_ok"]
     assert {(ln["map"], ln["size"]) for ln in by_kind["frames"]} == {
-        (m, s) for m in ("E1M1", "MAP01") for s in ("320x200", "640x400")}
+        (m, s) for m in ("E1M1", "MAP01")
+        for s in ("320x200", "640x400", "720x450", "1280x800")}
     for line in by_kind["frames"]:
         assert line["frames"] == bench_maps.QUICK_FRAMES and line["fps_median"] > 0
+        assert line["fps_untextured_median"] > 0
         assert 0 < line["nodes_visited_fraction"] <= 1
         assert line["mismatched_frames"] == []
+        checked = line["size"] in ("320x200", "640x400")   # the painter's check
+        assert (line["painter_frames"] > 0) == checked
     assert {"all_ok", "measured", "targets", "fps_median"} <= summary.keys()
     assert summary["all_ok"] is True
 
