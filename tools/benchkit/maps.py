@@ -274,7 +274,7 @@ def frames_section(lines: list[dict]) -> str:
                          w["early_exit_rate"], w["painter_fps_median"],
                          w["painter_overdraw_median"],
                          f"{len(w['mismatched_frames'])} of {w['painter_frames']}"
-                         if w["painter_frames"] else "-",
+                         if w["painter_frames"] else "—",
                          w["distance_walked"]] for w in walks]), ""]
     return "\n".join(body)
 
