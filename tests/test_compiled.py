@@ -126,3 +126,25 @@ def test_frame_rows_are_the_layers_in_c_order(compiled_levels, kernels):
     assert not np.shares_memory(rows["depth"], frame.depth)
     with pytest.raises(KeyError):
         frame.rows("colour")
+
+
+@pytest.mark.skipif(not (FREEDOOM / "freedoom1.wad").exists(), reason="Freedoom not installed")
+def test_height_tables_are_the_same_both_ways(freedoom_cache):
+    from wallbsp.render.tables import HeightTables, tree_tables
+    tree = freedoom_cache.tree("freedoom1.wad", "E1M1")
+    state = World(tree).state
+    rng = np.random.default_rng(0)
+    for sector in rng.choice(len(state.floor), 20, replace=False):
+        floor = float(state.floor[sector]) + 30
+        state.set_sector(int(sector), floor=floor, ceiling=floor + float(rng.integers(0, 80)))
+    tables = tree_tables(tree)
+    previous = compiled.use_kernels(True)
+    try:
+        fast = HeightTables(tables, state)
+        compiled.use_kernels(False)
+        reference = HeightTables(tables, state)
+    finally:
+        compiled.use_kernels(previous)
+    assert np.array_equal(fast.key_heights, reference.key_heights)
+    assert np.array_equal(fast.key_closes, reference.key_closes)
+    assert fast.key_solid == reference.key_solid and any(fast.key_solid)

@@ -16,6 +16,7 @@ import weakref
 
 import numpy as np
 
+from ..compiled import kernel, kernels_enabled
 from .shading import LIGHT_LEVELS, colour_table, far_level
 
 __all__ = ["TreeTables", "HeightTables", "per_tree", "tree_tables", "height_tables",
@@ -85,19 +86,46 @@ class HeightTables:
     """What the current sector heights give: per key the heights ``(N.ceiling, N.floor,
     B.ceiling, B.floor)`` of its column (a one-sided wall's opening is empty: B's heights
     are N's ceiling), and whether the key closes its columns (DOOM's ``R_AddLine``: a
-    one-sided wall, or a two-sided one whose opening is shut now, like a closed door)."""
+    one-sided wall, or a two-sided one whose opening is shut now, like a closed door):
+    ``key_closes`` (bool array), ``key_solid`` (the same as a list)."""
 
     def __init__(self, tables: TreeTables, state):
         floor, ceil = state.floor, state.ceiling
         near, far = tables.key_near, tables.key_far
-        one_sided = far < 0
-        far_c = np.where(one_sided, ceil[near], ceil[np.maximum(far, 0)])
-        far_f = np.where(one_sided, ceil[near], floor[np.maximum(far, 0)])
         self.version = state.version
         self.floor, self.ceiling = floor.copy(), ceil.copy()   # as they were for this version
-        self.key_heights = np.stack([ceil[near], floor[near], far_c, far_f])   # (4, keys)
-        closed = (far_f >= far_c) | (far_c <= floor[near]) | (far_f >= ceil[near])
-        self.key_solid = (one_sided | closed).tolist()
+        if kernels_enabled():               # a world that moves rebuilds these every tic
+            self.key_heights = np.empty((4, len(near)))
+            self.key_closes = np.empty(len(near), dtype=np.bool_)
+            _key_heights(floor, ceil, near, far, self.key_heights, self.key_closes)
+        else:
+            one_sided = far < 0
+            far_c = np.where(one_sided, ceil[near], ceil[np.maximum(far, 0)])
+            far_f = np.where(one_sided, ceil[near], floor[np.maximum(far, 0)])
+            self.key_heights = np.stack([ceil[near], floor[near], far_c, far_f])  # (4, keys)
+            closed = (far_f >= far_c) | (far_c <= floor[near]) | (far_f >= ceil[near])
+            self.key_closes = one_sided | closed             # the kernels' form
+        self._solid = None
+
+    @property
+    def key_solid(self) -> list:
+        """``key_closes`` as a Python list (the Python walks' form), made when first read."""
+        if self._solid is None:
+            self._solid = self.key_closes.tolist()
+        return self._solid
+
+
+@kernel
+def _key_heights(floor, ceil, near, far, heights, closes):
+    """``HeightTables``' two tables in one pass over the keys (the same selections and
+    comparisons as its numpy code: no arithmetic, so the same values)."""
+    for k in range(len(near)):
+        n, b = near[k], far[k]
+        far_c = ceil[n] if b < 0 else ceil[b]
+        far_f = ceil[n] if b < 0 else floor[b]
+        heights[0, k], heights[1, k] = ceil[n], floor[n]
+        heights[2, k], heights[3, k] = far_c, far_f
+        closes[k] = b < 0 or far_f >= far_c or far_c <= floor[n] or far_f >= ceil[n]
 
 
 def node_lists(tree) -> tuple[list, list, list]:

@@ -278,16 +278,6 @@ class _WalkArrays:
 
 
 _ARRAYS: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
-_SOLID: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
-
-
-def _solid_keys(heights) -> np.ndarray:
-    solid = _SOLID.get(heights)
-    if solid is None:
-        solid = _SOLID[heights] = np.array(heights.key_solid, dtype=np.bool_)
-    return solid
-
-
 def walk_compiled(tables, heights, view, boxes=None) -> Walk:
     """``walk.walk_front_to_back`` by the kernel (the Python walk where the eye's side
     needs rationals); ``boxes``: the things' grown node boxes (an array) or None."""
@@ -299,7 +289,7 @@ def walk_compiled(tables, heights, view, boxes=None) -> Walk:
     status, pieces, leaves, visited, segs_drawn, early_exit = walk_kernel(
         numbers, eye_tolerance(tables.line_max, view.x, view.y), tables.root, arrays.lines,
         arrays.kids, arrays.boxes if boxes is None else boxes, arrays.seg_ranges,
-        arrays.inside, arrays.ends, arrays.flips, arrays.one_sided, _solid_keys(heights))
+        arrays.inside, arrays.ends, arrays.flips, arrays.one_sided, heights.key_closes)
     if status < 0:
         listed = None if boxes is None else boxes.tolist()
         return walk_front_to_back(tables, heights.key_solid, view, listed)
