@@ -13,6 +13,7 @@ wall); per key, N is the near sector (on the eye's side) and B the far one (-1: 
 from __future__ import annotations
 
 import weakref
+from functools import cached_property
 
 import numpy as np
 
@@ -25,7 +26,8 @@ __all__ = ["TreeTables", "HeightTables", "per_tree", "tree_tables", "height_tabl
 
 class TreeTables:
     """Per-tree constants: node and seg lists (Python lists, so per-node work never touches
-    numpy scalars) and per-key numpy tables."""
+    numpy scalars; made on first use, the kernels read the same as arrays) and per-key
+    numpy tables."""
 
     def __init__(self, tree):
         level = tree.level
@@ -36,17 +38,18 @@ class TreeTables:
         lines = np.asarray(tree.node_line, dtype=np.float64).reshape(-1, 3)
         # the largest |a|, |b|, |c|: the side test's tolerance for float eyes
         self.line_max = tuple(np.abs(lines).max(axis=0, initial=0).tolist())
-        self.node_boxes = np.asarray(tree.node_bbox, dtype=np.float64).tolist()
-        self.leaf_inside = (np.asarray(tree.leaf_sector) >= 0).tolist()
+        # the walk's tables as arrays (the kernels'); the Python walks' lists are made from
+        # them when first read (at 200,000 walls they are ~80 MB the kernels never need)
+        self.node_box_array = np.asarray(tree.node_bbox, dtype=np.float64).reshape(-1, 4)
+        self.leaf_inside_array = np.asarray(tree.leaf_sector) >= 0
         seg_wall = np.asarray(tree.seg_wall, dtype=np.int64)
         self.seg_xy = np.asarray(tree.seg_xy, dtype=np.float64).reshape(-1, 4)
-        self.seg_ends = self.seg_xy.tolist()
-        self.seg_flip = np.asarray(tree.seg_flip, dtype=np.int64).tolist()
+        self.seg_flip_array = np.asarray(tree.seg_flip, dtype=np.int64)
         self.back_of = np.array([-1 if w.back is None else w.back for w in walls],
                                 dtype=np.int64)
         self.front_of = np.array([w.front for w in walls], dtype=np.int64)
         self.seg_wall = seg_wall
-        self.seg_one_sided = (self.back_of[seg_wall] < 0).tolist()
+        self.seg_one_sided_array = self.back_of[seg_wall] < 0
         self.n_sectors = len(sectors)
         self.sector_sky = np.array([s.sky for s in sectors], dtype=bool)
         self._key_tables(level, seg_wall)
@@ -60,6 +63,26 @@ class TreeTables:
         self.textures = weakref.WeakKeyDictionary()              # state -> LevelTextures
         self.texture_pack = None                                 # textures.TexturePack
         self.side_geometry = None                                # textures.side_geometry
+
+    @cached_property
+    def node_boxes(self) -> list:
+        return self.node_box_array.tolist()
+
+    @cached_property
+    def leaf_inside(self) -> list:
+        return self.leaf_inside_array.tolist()
+
+    @cached_property
+    def seg_ends(self) -> list:
+        return self.seg_xy.tolist()
+
+    @cached_property
+    def seg_flip(self) -> list:
+        return self.seg_flip_array.tolist()
+
+    @cached_property
+    def seg_one_sided(self) -> list:
+        return self.seg_one_sided_array.tolist()
 
     def _key_tables(self, level, seg_wall):
         wall = np.repeat(seg_wall, 2)

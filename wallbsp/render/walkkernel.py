@@ -263,18 +263,17 @@ def _grown_rows(rows):
 
 
 class _WalkArrays:
-    """A tree's walk tables as arrays (``TreeTables`` keeps Python lists for the Python
-    walk)."""
+    """A tree's walk tables as the kernel reads them (contiguous arrays)."""
 
     def __init__(self, tables):
         self.lines = np.array(tables.node_lines, dtype=np.float64).reshape(-1, 3)
         self.kids = np.array(tables.node_kids, dtype=np.int64).reshape(-1, 2)
-        self.boxes = np.array(tables.node_boxes, dtype=np.float64).reshape(-1, 4)
+        self.boxes = np.ascontiguousarray(tables.node_box_array)
         self.seg_ranges = np.array(tables.node_segs, dtype=np.int64).reshape(-1, 2)
-        self.inside = np.array(tables.leaf_inside, dtype=np.bool_)
+        self.inside = np.ascontiguousarray(tables.leaf_inside_array, dtype=np.bool_)
         self.ends = np.ascontiguousarray(tables.seg_xy, dtype=np.float64)
-        self.flips = np.array(tables.seg_flip, dtype=np.int64)
-        self.one_sided = np.array(tables.seg_one_sided, dtype=np.bool_)
+        self.flips = np.ascontiguousarray(tables.seg_flip_array)
+        self.one_sided = np.ascontiguousarray(tables.seg_one_sided_array)
 
 
 _ARRAYS: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
