@@ -199,6 +199,22 @@ def _plane(out, at, r0, r1, h, base, far, ray, view, atlas, lut, n_colours, ligh
 
 
 @kernel
+def _part_rows(bounds, i, part):
+    """Entry ``i``'s part (0 ceiling, 1 upper, 2 lower, 3 floor): its rows ``[r0, r1)``
+    within the window open when it was drawn, and the part's unclipped first and last rows
+    (where its texture rows are anchored; the floor's are unused)."""
+    top, bottom = bounds[4, i], bounds[5, i]
+    if part == 0:
+        return top, min(max(bounds[0, i], top), bottom), 0, bounds[0, i] - 1
+    if part == 1:
+        return (min(max(bounds[0, i], top), bottom), bounds[6, i], bounds[0, i],
+                bounds[1, i] - 1)
+    if part == 2:
+        return bounds[7, i], min(max(bounds[3, i], top), bottom), bounds[2, i], bounds[3, i] - 1
+    return min(max(bounds[3, i], top), bottom), bottom, 0, 0
+
+
+@kernel
 def paint_textured(keys, cols, ws, bounds, open_top, open_bottom, u, view, sky_columns,
                    part_kind, part_index, part_table, key_far, key_far_light, key_wall,
                    wall_x_offset, scrolling, key_heights, sector_sky, floor, ceiling,
@@ -211,20 +227,10 @@ def paint_textured(keys, cols, ws, bounds, open_top, open_bottom, u, view, sky_c
     unlit = (LIGHTS + 1) * n_colours
     for i in range(len(keys)):
         key, c, w = keys[i], cols[i], ws[i]
-        top, bottom = bounds[4, i], bounds[5, i]
-        p1 = min(max(bounds[0, i], top), bottom)
-        fl = min(max(bounds[3, i], top), bottom)
         at = c * height
         ray = u[c]
         for part in range(4):
-            if part == 0:
-                r0, r1, first, last = top, p1, 0, bounds[0, i] - 1
-            elif part == 1:
-                r0, r1, first, last = p1, bounds[6, i], bounds[0, i], bounds[1, i] - 1
-            elif part == 2:
-                r0, r1, first, last = bounds[7, i], fl, bounds[2, i], bounds[3, i] - 1
-            else:
-                r0, r1, first, last = fl, bottom, 0, 0
+            r0, r1, first, last = _part_rows(bounds, i, part)
             if r1 <= r0:
                 continue
             written += r1 - r0
@@ -273,19 +279,9 @@ def paint_layers(keys, cols, ws, bounds, open_top, open_bottom, view, part_kind,
         inverse[r] = 1.0 / abs(view[8] - r)
     for i in range(len(keys)):
         key, c = keys[i], cols[i]
-        top, bottom = bounds[4, i], bounds[5, i]
-        p1 = min(max(bounds[0, i], top), bottom)
-        fl = min(max(bounds[3, i], top), bottom)
         at = c * height
         for part in range(4):
-            if part == 0:
-                r0, r1 = top, p1
-            elif part == 1:
-                r0, r1 = p1, bounds[6, i]
-            elif part == 2:
-                r0, r1 = bounds[7, i], fl
-            else:
-                r0, r1 = fl, bottom
+            r0, r1 = _part_rows(bounds, i, part)[:2]
             if r1 <= r0:
                 continue
             kind = part_kind[part, key]
@@ -321,20 +317,10 @@ def paint_flat(keys, cols, ws, bounds, open_top, open_bottom, view, key_near, ke
     written = 0
     for i in range(len(keys)):
         key, c = keys[i], cols[i]
-        top, bottom = bounds[4, i], bounds[5, i]
-        p1 = min(max(bounds[0, i], top), bottom)
-        fl = min(max(bounds[3, i], top), bottom)
         at = c * height
         level = _light(key_far_light[key], ws[i], 1) if light else LIGHTS
         for part in range(4):
-            if part == 0:
-                r0, r1 = top, p1
-            elif part == 1:
-                r0, r1 = p1, bounds[6, i]
-            elif part == 2:
-                r0, r1 = bounds[7, i], fl
-            else:
-                r0, r1 = fl, bottom
+            r0, r1 = _part_rows(bounds, i, part)[:2]
             if r1 <= r0:
                 continue
             written += r1 - r0
