@@ -5,6 +5,7 @@ scalars)."""
 from __future__ import annotations
 
 import math
+from functools import cached_property
 
 import numpy as np
 
@@ -41,8 +42,13 @@ class Tables:
                        np.asarray(tree.seg_wall, dtype=np.int64), walls, ends,
                        np.asarray(tree.leaf_sector, dtype=np.int64),
                        np.abs(lines).max(axis=0, initial=0).astype(np.float64))
-        self.lists = (self.arrays[0],) + tuple(a.tolist() for a in self.arrays[1:])
         self.special = [w.special for w in level.walls]
         xs = [v[0] for v in level.vertices] or [0]
         ys = [v[1] for v in level.vertices] or [0]
         self.extent = math.hypot(max(xs) - min(xs), max(ys) - min(ys))
+
+    @cached_property
+    def lists(self) -> tuple:
+        """``arrays`` as Python lists, made when the interpreter first asks (with the
+        kernels on it never does, and a level compiled per episode skips the copy)."""
+        return (self.arrays[0],) + tuple(a.tolist() for a in self.arrays[1:])

@@ -53,8 +53,8 @@ class TreeTables:
         self.n_sectors = len(sectors)
         self.sector_sky = np.array([s.sky for s in sectors], dtype=bool)
         self._key_tables(level, seg_wall)
-        self.lit_colours, self.surface_colour = colour_table(walls, sectors)
-        self.n_codes = LIGHT_LEVELS * len(self.surface_colour)
+        self._surfaces = (walls, sectors)                        # for the flat colours
+        self.n_codes = LIGHT_LEVELS * (3 * len(walls) + 2 * len(sectors))   # 3 a wall, 2 a sector
         self.plane_base_surface = 3 * len(walls)
         self.plane_key_base = self.n_codes                       # run keys: codes, planes,
         self.nothing_key = self.n_codes + 2 * len(sectors)       # then "nothing"
@@ -63,6 +63,20 @@ class TreeTables:
         self.textures = weakref.WeakKeyDictionary()              # state -> LevelTextures
         self.texture_pack = None                                 # textures.TexturePack
         self.side_geometry = None                                # textures.side_geometry
+
+    @cached_property
+    def flat_colours(self) -> tuple:
+        """``shading.colour_table`` of the level: made when flat colours are first drawn
+        (a textured view never needs it)."""
+        return colour_table(*self._surfaces)
+
+    @property
+    def lit_colours(self):
+        return self.flat_colours[0]
+
+    @property
+    def surface_colour(self):
+        return self.flat_colours[1]
 
     @cached_property
     def node_boxes(self) -> list:
