@@ -10,45 +10,64 @@ from __future__ import annotations
 import math
 
 from ..camera import Projection
+from ..jitable import jitable
 
-__all__ = ["NEAR", "make_projector", "make_box_check"]
+__all__ = ["NEAR", "make_projector", "make_box_check", "project_seg", "view_numbers"]
 
 NEAR = 1e-3                    # map units: the near plane for seg ends
+
+
+@jitable
+def project_seg(view, x1, y1, x2, y2, out):
+    """A seg seen with ``(x1, y1)`` on the left, into ``out``: columns ``[c1, c2)`` and
+    ``1/depth = A + B*u`` as ``(c1, c2, A, B)``; False when it covers no column.  ``view``
+    holds the eye ``x, y``, the forward and right vectors, ``f``, ``x0`` and the width.
+    One source for the Python walks and the walk kernel (``jitable``)."""
+    ex, ey, fx, fy, rx, ry = view[0], view[1], view[2], view[3], view[4], view[5]
+    f, x0, width = view[6], view[7], view[8]
+    ax = x1 - ex
+    ay = y1 - ey
+    bx = x2 - ex
+    by = y2 - ey
+    d1 = ax * fx + ay * fy
+    d2 = bx * fx + by * fy
+    if d1 < NEAR and d2 < NEAR:
+        return False
+    r1 = ax * rx + ay * ry
+    r2 = bx * rx + by * ry
+    k = r2 * d1 - d2 * r1              # > 0 when seen from the front, left end first
+    if k <= 0.0:
+        return False
+    if d1 < NEAR:
+        c1 = math.ceil(x0 + f * (r1 + (NEAR - d1) / (d2 - d1) * (r2 - r1)) / NEAR)
+    else:
+        c1 = math.ceil(x0 + f * r1 / d1)
+    if d2 < NEAR:
+        c2 = math.ceil(x0 + f * (r2 + (NEAR - d2) / (d1 - d2) * (r1 - r2)) / NEAR)
+    else:
+        c2 = math.ceil(x0 + f * r2 / d2)
+    c1 = c1 if c1 > 0 else 0
+    c2 = c2 if c2 < width else int(width)
+    if c1 >= c2:
+        return False
+    out[0], out[1], out[2], out[3] = c1, c2, (r2 - r1) / k, (d1 - d2) / k
+    return True
+
+
+def view_numbers(view: Projection) -> tuple:
+    """The projection's numbers as ``project_seg`` reads them."""
+    return (view.x, view.y, view.fx, view.fy, view.rx, view.ry, view.f, view.x0, view.width)
 
 
 def make_projector(view: Projection):
     """``project(xl, yl, xr, yr)``: a seg seen with (xl, yl) on the left, as
     ``(c1, c2, A, B)`` (columns ``[c1, c2)`` and ``1/depth = A + B*u``) or None."""
-    ex, ey, fx, fy, rx, ry = view.x, view.y, view.fx, view.fy, view.rx, view.ry
-    f, x0, width, near, ceil = view.f, view.x0, view.width, NEAR, math.ceil
+    numbers, out = view_numbers(view), [0, 0, 0.0, 0.0]
 
     def project(x1, y1, x2, y2):
-        ax = x1 - ex
-        ay = y1 - ey
-        bx = x2 - ex
-        by = y2 - ey
-        d1 = ax * fx + ay * fy
-        d2 = bx * fx + by * fy
-        if d1 < near and d2 < near:
+        if not project_seg(numbers, x1, y1, x2, y2, out):
             return None
-        r1 = ax * rx + ay * ry
-        r2 = bx * rx + by * ry
-        k = r2 * d1 - d2 * r1              # > 0 when seen from the front, left end first
-        if k <= 0.0:
-            return None
-        if d1 < near:
-            c1 = ceil(x0 + f * (r1 + (near - d1) / (d2 - d1) * (r2 - r1)) / near)
-        else:
-            c1 = ceil(x0 + f * r1 / d1)
-        if d2 < near:
-            c2 = ceil(x0 + f * (r2 + (near - d2) / (d1 - d2) * (r1 - r2)) / near)
-        else:
-            c2 = ceil(x0 + f * r2 / d2)
-        c1 = c1 if c1 > 0 else 0                      # (conditionals: no calls, hot loop)
-        c2 = c2 if c2 < width else width
-        if c1 >= c2:
-            return None
-        return c1, c2, (r2 - r1) / k, (d1 - d2) / k
+        return out[0], out[1], out[2], out[3]
 
     return project
 

@@ -13,7 +13,8 @@ import weakref
 import numpy as np
 
 from ..compiled import kernel
-from .project import NEAR
+from ..jitable import register_jitables
+from .project import project_seg, view_numbers
 from .walk import Walk, eye_tolerance, walk_front_to_back
 
 __all__ = ["walk_compiled"]
@@ -61,41 +62,6 @@ def _merge(starts, ends, count, c1, c2):
     for k in range(lo + 1, count - gone):
         starts[k], ends[k] = starts[k + gone], ends[k + gone]
     return count - gone
-
-
-@kernel
-def _project(view, x1, y1, x2, y2, out):
-    """``project.make_projector``'s ``project`` into ``out`` (c1, c2, A, B); False when the
-    seg covers no column."""
-    ex, ey, fx, fy, rx, ry, f, x0, width = (view[0], view[1], view[2], view[3], view[4],
-                                             view[5], view[6], view[7], view[8])
-    ax = x1 - ex
-    ay = y1 - ey
-    bx = x2 - ex
-    by = y2 - ey
-    d1 = ax * fx + ay * fy
-    d2 = bx * fx + by * fy
-    if d1 < NEAR and d2 < NEAR:
-        return False
-    r1 = ax * rx + ay * ry
-    r2 = bx * rx + by * ry
-    k = r2 * d1 - d2 * r1
-    if k <= 0.0:
-        return False
-    if d1 < NEAR:
-        c1 = np.ceil(x0 + f * (r1 + (NEAR - d1) / (d2 - d1) * (r2 - r1)) / NEAR)
-    else:
-        c1 = np.ceil(x0 + f * r1 / d1)
-    if d2 < NEAR:
-        c2 = np.ceil(x0 + f * (r2 + (NEAR - d2) / (d1 - d2) * (r1 - r2)) / NEAR)
-    else:
-        c2 = np.ceil(x0 + f * r2 / d2)
-    c1 = c1 if c1 > 0 else 0.0
-    c2 = c2 if c2 < width else width
-    if c1 >= c2:
-        return False
-    out[0], out[1], out[2], out[3] = c1, c2, (r2 - r1) / k, (d1 - d2) / k
-    return True
 
 
 @kernel
@@ -215,9 +181,9 @@ def walk_kernel(view, tol, root, lines, kids, boxes, seg_ranges, inside, ends, f
             if back and one_sided[i]:
                 continue
             if back:
-                drawn = _project(view, ends[i, 2], ends[i, 3], ends[i, 0], ends[i, 1], seen)
+                drawn = project_seg(view, ends[i, 2], ends[i, 3], ends[i, 0], ends[i, 1], seen)
             else:
-                drawn = _project(view, ends[i, 0], ends[i, 1], ends[i, 2], ends[i, 3], seen)
+                drawn = project_seg(view, ends[i, 0], ends[i, 1], ends[i, 2], ends[i, 3], seen)
             if not drawn:
                 continue
             c1, c2 = int(seen[0]), int(seen[1])
@@ -277,14 +243,16 @@ class _WalkArrays:
 
 
 _ARRAYS: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+
+
 def walk_compiled(tables, heights, view, boxes=None) -> Walk:
     """``walk.walk_front_to_back`` by the kernel (the Python walk where the eye's side
     needs rationals); ``boxes``: the things' grown node boxes (an array) or None."""
     arrays = _ARRAYS.get(tables)
     if arrays is None:
         arrays = _ARRAYS[tables] = _WalkArrays(tables)
-    numbers = np.array([view.x, view.y, view.fx, view.fy, view.rx, view.ry, view.f, view.x0,
-                        float(view.width)])
+    register_jitables()                  # project_seg, before the kernel first compiles
+    numbers = np.array(view_numbers(view), dtype=np.float64)
     status, pieces, leaves, visited, segs_drawn, early_exit = walk_kernel(
         numbers, eye_tolerance(tables.line_max, view.x, view.y), tables.root, arrays.lines,
         arrays.kids, arrays.boxes if boxes is None else boxes, arrays.seg_ranges,
