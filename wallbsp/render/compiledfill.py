@@ -92,14 +92,15 @@ def _sky_columns(tex, view) -> np.ndarray:
     one made is kept, as a view often turns less often than it moves."""
     width = int(tex.width[tex.sky]) if tex.sky >= 0 else 0
     key = (view.angle, view.width, view.f, width)
-    if _SKY.get("key") != key:
+    last = _SKY.get("last")                 # (key, columns), replaced whole: thread-safe
+    if last is None or last[0] != key:
         if width:
             angle = view.angle - np.degrees(np.arctan(view.u))
             columns = np.floor(SKY_COLUMNS * angle / 360.0).astype(np.int64) % width
         else:
             columns = np.zeros(view.width, dtype=np.int64)
-        _SKY.update(key=key, columns=columns)
-    return _SKY["columns"]
+        last = _SKY["last"] = (key, columns)
+    return last[1]
 
 
 _PLANE_BASES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
