@@ -18,6 +18,7 @@ from __future__ import annotations
 
 import importlib.util
 import os
+import threading
 
 __all__ = ["kernel", "kernels_enabled", "use_kernels", "AVAILABLE", "LazyKernel"]
 
@@ -25,6 +26,7 @@ AVAILABLE = importlib.util.find_spec("numba") is not None
 _STATE = {"on": AVAILABLE and os.environ.get("WALLBSP_KERNELS", "") != "numpy",
           "numba": None}
 _LAZY: list = []
+_LOADING = threading.Lock()             # two threads' first calls load numba once
 
 
 def _jit(function):
@@ -59,18 +61,19 @@ def _load_numba():
     """Import numba, make every lazy kernel's dispatcher and swap the dispatchers in for
     the lazy kernels in the globals of the modules that define kernels (a kernel that
     calls another must see a dispatcher when numba compiles it)."""
-    if _STATE["numba"] is None:
-        import numba
-        _STATE["numba"] = numba
-    for lazy in _LAZY:
-        if lazy.dispatcher is None:
-            lazy.dispatcher = _jit(lazy.py_func)
-    for names in {id(lazy.py_func.__globals__): lazy.py_func.__globals__
-                  for lazy in _LAZY}.values():
-        for name, value in list(names.items()):
-            if isinstance(value, LazyKernel):
-                names[name] = value.dispatcher
-    _LAZY.clear()
+    with _LOADING:
+        if _STATE["numba"] is None:
+            import numba
+            _STATE["numba"] = numba
+        for lazy in _LAZY:
+            if lazy.dispatcher is None:
+                lazy.dispatcher = _jit(lazy.py_func)
+        for names in {id(lazy.py_func.__globals__): lazy.py_func.__globals__
+                      for lazy in _LAZY}.values():
+            for name, value in list(names.items()):
+                if isinstance(value, LazyKernel):
+                    names[name] = value.dispatcher
+        _LAZY.clear()
 
 
 def kernel(function):
