@@ -16,7 +16,7 @@ from .fill import DrawSegs
 from .frame import KIND_CEILING, KIND_FLOOR, KIND_WALL
 from .shading import LIGHT_LEVELS
 from .tables import key_light
-from .texfill import SKY_COLUMNS, SKY_ROW, SKY_ROWS_PER_V, FLAT_OFFSET, key_parts
+from .texfill import FLAT_OFFSET, key_parts, sky_columns, sky_rows
 
 __all__ = ["CompiledEntries", "CompiledLayers", "fill_compiled"]
 
@@ -80,23 +80,21 @@ def _view_numbers(view) -> np.ndarray:
     """The projection's numbers as the kernels index them: ``x, y, z, f, fx, fy, rx, ry,
     y0``, the sky's texture rows ``t0, t1``, and the flats' offset eye ``x, -y``."""
     return np.array([view.x, view.y, view.z, view.f, view.fx, view.fy, view.rx, view.ry,
-                     view.y0, SKY_ROW - SKY_ROWS_PER_V * view.y0 / view.f,
-                     SKY_ROWS_PER_V / view.f, view.x + FLAT_OFFSET, FLAT_OFFSET - view.y])
+                     view.y0, *sky_rows(view), view.x + FLAT_OFFSET, FLAT_OFFSET - view.y])
 
 
 _SKY: dict = {}
 
 
 def _sky_columns(tex, view) -> np.ndarray:
-    """The sky texture's column in every screen column (``texfill``'s ``_sky``); the last
+    """``texfill.sky_columns`` for this view (zeros for a sky of colours); the last
     one made is kept, as a view often turns less often than it moves."""
     width = int(tex.width[tex.sky]) if tex.sky >= 0 else 0
     key = (view.angle, view.width, view.f, width)
     last = _SKY.get("last")                 # (key, columns), replaced whole: thread-safe
     if last is None or last[0] != key:
         if width:
-            angle = view.angle - np.degrees(np.arctan(view.u))
-            columns = np.floor(SKY_COLUMNS * angle / 360.0).astype(np.int64) % width
+            columns = sky_columns(view, width)
         else:
             columns = np.zeros(view.width, dtype=np.int64)
         last = _SKY["last"] = (key, columns)

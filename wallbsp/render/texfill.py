@@ -28,7 +28,7 @@ from .tables import key_light
 from .textures import FLAT_SIDE, UNLIT
 
 __all__ = ["entry_parts", "key_parts", "RunSurfaces", "shade", "fill_textured",
-           "paint_textured"]
+           "paint_textured", "sky_columns", "sky_rows"]
 
 SKY_COLUMNS = 1024            # sky texture columns in a full turn (DOOM's ANGLETOSKYSHIFT)
 SKY_ROW = 100.0               # the sky row at the horizon, and rows per unit of v
@@ -201,12 +201,9 @@ class RunSurfaces:
                                  0, 0.0, 0.0, rows)
         else:
             sky = tex.sky
-            angle = view.angle - np.degrees(np.arctan(view.u[col]))
-            column = np.floor(SKY_COLUMNS * angle / 360.0).astype(np.int64) % tex.width[sky]
+            column = sky_columns(view, tex.width[sky])[col]
             self._column_texture(runs, (tex.base[sky], tex.pitch[sky], tex.stride[sky],
-                                        tex.height[sky]), column,
-                                 SKY_ROW - SKY_ROWS_PER_V * view.y0 / view.f,
-                                 SKY_ROWS_PER_V / view.f, rows)
+                                        tex.height[sky]), column, *sky_rows(view), rows)
         if self.light:
             self.level[runs] = FULL_BRIGHT * tex.n_colours      # the sky is never dimmed
 
@@ -222,6 +219,18 @@ class RunSurfaces:
         self.plane_row0[runs] = (present.cumsum() - 1)[plane] * view.height
         ids = np.flatnonzero(present)
         self.plane_levels = _plane_levels(tex, heights, state, view, ids, self.light).reshape(-1)
+
+
+def sky_columns(view, width) -> np.ndarray:
+    """The column of a sky texture ``width`` wide that each screen column shows: by the
+    angle of the column's ray, ``SKY_COLUMNS`` texture columns a full turn."""
+    angle = view.angle - np.degrees(np.arctan(view.u))
+    return np.floor(SKY_COLUMNS * angle / 360.0).astype(np.int64) % width
+
+
+def sky_rows(view) -> tuple:
+    """``(t0, t1)``: screen row ``r`` shows the sky texture's row ``t0 + t1*r``."""
+    return SKY_ROW - SKY_ROWS_PER_V * view.y0 / view.f, SKY_ROWS_PER_V / view.f
 
 
 def _plane_levels(tex, heights, state, view, planes, light):
