@@ -41,8 +41,9 @@ class CompiledEntries:
 
 class CompiledLayers:
     """``columns(name)`` for ``kind``, ``index`` and ``depth`` (all three made by one
-    kernel pass the first time one is asked for; each call's array is the caller's own:
-    the one made, the first time, then copies) and ``drawsegs()``."""
+    kernel pass the first time one is asked for, painted in rows and given as their
+    ``(width, height)`` transposed views; each call's array is the caller's own: the one
+    made, the first time, then copies) and ``drawsegs()``."""
 
     def __init__(self, view, heights, tables, parts, entries: CompiledEntries):
         self.view, self.heights, self.tables, self.parts = view, heights, tables, parts
@@ -60,7 +61,7 @@ class CompiledLayers:
 
     def _paint(self):
         view, e, heights = self.view, self.entries, self.heights
-        shape = (view.width, view.height)
+        rows = (view.height, view.width)
         n = view.width * view.height
         kind = np.empty(n, dtype=np.uint8)
         index = np.empty(n, dtype=np.int32)
@@ -69,8 +70,9 @@ class CompiledLayers:
         kernels.paint_layers(e.keys, e.cols, e.w, e.bounds, e.open_top, e.open_bottom,
                              _view_numbers(view), kinds, indices, self.tables.sector_sky,
                              heights.floor, heights.ceiling, view.height, kind, index, depth)
-        return {"kind": kind.reshape(shape), "index": index.reshape(shape),
-                "depth": depth.reshape(shape)}
+        # painted in rows; the (width, height) columns are their transposed views
+        return {"kind": kind.reshape(rows).T, "index": index.reshape(rows).T,
+                "depth": depth.reshape(rows).T}
 
     def drawsegs(self):
         return self.entries.drawsegs()
@@ -166,11 +168,11 @@ def _key_surfaces(tables):
 
 def _paint_textured(tables, tex, heights, state, view, e, parts, light, colour):
     kinds, indices = parts
-    offsets = state.wall_x_offset
+    offsets = state.wall_x_offset                 # scrolling walls' (zeros for the rest)
     return kernels.paint_textured(
         e.keys, e.cols, e.w, e.bounds, e.open_top, e.open_bottom, view.u, _view_numbers(view),
         _sky_columns(tex, view), kinds, indices, tex.part_table, tables.key_far,
-        key_light(tables, state), tables.key_wall, offsets, bool(offsets.any()),
+        key_light(tables, state), tables.key_wall, offsets, True,   # + 0.0 changes no bits
         heights.key_heights, tables.sector_sky, heights.floor, heights.ceiling,
         state.light, _plane_bases(tex), tex.sky, tex.sky_colour, tex.base,
         tex.pitch, tex.stride, tex.height, tex.atlas, tex.lut_flat, tex.n_colours, tex.black,

@@ -1,7 +1,7 @@
 """A frame's buffers in row order: new C-ordered ``(H, W, ...)`` arrays.
 
-The renderer draws column-major (the layout pygame's ``blit_array`` takes); programs that
-learn want rows.  numpy copies a transposed view slowly (a byte or a few a step, strided),
+The renderer draws colour column-major (the layout pygame's ``blit_array`` takes; the
+compiled fill paints kind, index and depth in rows); programs that learn want rows.  numpy copies a transposed view slowly (a byte or a few a step, strided),
 so the copies are small kernels when kernels are on, and numpy a channel at a time when not.
 """
 from __future__ import annotations
@@ -10,7 +10,7 @@ import numpy as np
 
 from ..compiled import kernel, kernels_enabled
 
-__all__ = ["rows_of", "rgb_rows", "labels_rows", "packed_pixels"]
+__all__ = ["rows_of", "rgb_rows", "labels_rows", "copy_rows", "packed_pixels"]
 
 
 @kernel
@@ -33,10 +33,10 @@ def _rgb_rows(packed, rows):
 
 @kernel
 def _label_rows(kind, index, rows):
-    for c in range(kind.shape[0]):
-        for r in range(kind.shape[1]):
-            rows[r, c, 0] = kind[c, r]
-            rows[r, c, 1] = index[c, r]
+    for r in range(kind.shape[0]):
+        for c in range(kind.shape[1]):
+            rows[r, c, 0] = kind[r, c]
+            rows[r, c, 1] = index[r, c]
 
 
 def rows_of(columns) -> np.ndarray:
@@ -65,17 +65,22 @@ def rgb_rows(color_columns) -> np.ndarray:
     return rows
 
 
-def labels_rows(kind_columns, index_columns) -> np.ndarray:
-    """``(H, W, 2)`` int32 rows of kind and index, from their ``(W, H)`` columns."""
-    width, height = kind_columns.shape
-    rows = np.empty((height, width, 2), dtype=np.int32)
-    if kernels_enabled() and kind_columns.flags.c_contiguous \
-            and index_columns.flags.c_contiguous:
-        _label_rows(kind_columns, index_columns.astype(np.int32, copy=False), rows)
+def labels_rows(kind, index) -> np.ndarray:
+    """``(H, W, 2)`` int32 rows of ``kind`` and ``index`` ``(H, W)`` (in either layout: the
+    compiled fill paints them in rows, the numpy layers in columns)."""
+    rows = np.empty(kind.shape + (2,), dtype=np.int32)
+    if kernels_enabled():
+        _label_rows(kind, index.astype(np.int32, copy=False), rows)
     else:
-        rows[..., 0] = kind_columns.T
-        rows[..., 1] = index_columns.T
+        rows[..., 0] = kind
+        rows[..., 1] = index
     return rows
+
+
+def copy_rows(rows) -> np.ndarray:
+    """A new C-ordered copy of an ``(H, W)`` picture: memory speed when it is C-ordered
+    already, else from its columns (``rows_of``)."""
+    return rows.copy() if rows.flags.c_contiguous else rows_of(rows.T)
 
 
 def packed_pixels(colour_columns):

@@ -210,7 +210,18 @@ def key_light(tables: TreeTables, state) -> np.ndarray:
     fake contrast), rebuilt only when a sector's light has changed."""
     cached = tables.lights.get(state)
     now = state.light.tobytes()
-    if cached is None or cached[0] != now:
-        per_key = far_level(state.light[tables.key_near]) + tables.key_bias
+    if cached is None or cached[0] != now:           # flickering lights: most tics
+        if kernels_enabled():
+            per_key = np.empty(len(tables.key_near), dtype=np.float64)
+            _key_light(state.light, tables.key_near, tables.key_bias, per_key)
+        else:
+            per_key = far_level(state.light[tables.key_near]) + tables.key_bias
         cached = tables.lights[state] = (now, per_key)
     return cached[1]
+
+
+@kernel
+def _key_light(light, near, bias, out):
+    """``key_light``'s numpy arithmetic, operation for operation, in one pass."""
+    for k in range(len(near)):
+        out[k] = (LIGHT_LEVELS - 1 - 4.0 * (15 - np.floor(light[near[k]] / 16.0))) + bias[k]

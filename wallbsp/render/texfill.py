@@ -224,8 +224,12 @@ class RunSurfaces:
 def sky_columns(view, width) -> np.ndarray:
     """The column of a sky texture ``width`` wide that each screen column shows: by the
     angle of the column's ray, ``SKY_COLUMNS`` texture columns a full turn."""
-    angle = view.angle - np.degrees(np.arctan(view.u))
+    angle = view.angle - size_table(_RAY_ANGLES, (view.width, view.f),
+                                    lambda: np.degrees(np.arctan(view.u)))
     return np.floor(SKY_COLUMNS * angle / 360.0).astype(np.int64) % width
+
+
+_RAY_ANGLES: dict = {}          # per frame size and focal length: each column's ray angle
 
 
 def sky_rows(view) -> tuple:
