@@ -295,7 +295,10 @@ def test_the_throughput_script_reports_every_configuration():
     assert done.returncode == 0, done.stderr
     import json
     report = json.loads(done.stdout)
-    assert set(report["vector_steps_per_s"]) == {"1", "async 2", "sync 2", "speedup_async_2"}
+    assert set(report["vector_steps_per_s"]) == {
+        "1", "async 2", "sync 2", "speedup_async_2", "async 2, do-nothing env",
+        "2 plain processes", "speedup_plain_2"}
+    assert all(v > 0 for v in report["vector_steps_per_s"].values())
     assert len(report["one_env_steps_per_s"]) == 4
     assert all(v > 0 for v in report["one_env_steps_per_s"].values())
     assert report["explore_reset"]["walls_median"] > 300

@@ -191,6 +191,61 @@ def explore_reset(resets: int) -> dict:
             "walls_median": int(statistics.median(walls)), "resets": resets}
 
 
+class NullEnv:
+    """Gymnasium's side of a step alone: an env with ``wallbsp/Exit-v0``'s spaces whose step
+    does nothing but hand over new copies of one observation and an info dict like the real
+    one's.  ``AsyncVectorEnv`` over it measures what the protocol itself allows."""
+
+    def __new__(cls, options):
+        import gymnasium as gym
+
+        class _Null(gym.Env):
+            def __init__(self):
+                real = gym.make("wallbsp/Exit-v0", **options)
+                self.observation_space = real.observation_space
+                self.action_space = real.action_space
+                self.obs = real.reset(seed=0)[0]
+                real.close()
+
+            def reset(self, *, seed=None, options=None):
+                super().reset(seed=seed)
+                return self._observation(), {}
+
+            def step(self, action):
+                return self._observation(), 0.0, False, False, {"tics": 1, "exited": False,
+                                                                "health": 100}
+
+            def _observation(self):
+                return {k: v.copy() for k, v in self.obs.items()}
+
+        return _Null()
+
+
+def _lone_rate(options, steps, rounds, start, results):
+    """A worker of ``plain_processes``: one environment's best rate, started together."""
+    import gymnasium as gym
+    driver = RandomDriver(gym.make("wallbsp/Exit-v0", **options))
+    driver.rate(steps)                       # warm
+    start.wait()
+    results.put(max(driver.rate(steps) for _ in range(rounds)))
+
+
+def plain_processes(options, steps: int, rounds: int) -> float:
+    """Steps/s of two single environments in two plain processes at once (no gymnasium in
+    between): what the two cores give."""
+    import multiprocessing
+    context = multiprocessing.get_context("fork")
+    start, results = context.Barrier(2), context.Queue()
+    workers = [context.Process(target=_lone_rate, args=(options, steps, rounds, start, results))
+               for _ in range(2)]
+    for worker in workers:
+        worker.start()
+    total = results.get() + results.get()
+    for worker in workers:
+        worker.join()
+    return round(total, 1)
+
+
 def vector_envs(level, counts, steps: int, rounds: int) -> dict:
     import gymnasium as gym
     options = exit_options(level)
@@ -201,10 +256,14 @@ def vector_envs(level, counts, steps: int, rounds: int) -> dict:
     drivers.update({f"async {n}": RandomDriver(gym.vector.AsyncVectorEnv(fns(n)))
                     for n in counts})
     drivers["sync 2"] = RandomDriver(gym.vector.SyncVectorEnv(fns(2)))
+    drivers["async 2, do-nothing env"] = RandomDriver(
+        gym.vector.AsyncVectorEnv([lambda: NullEnv(options) for _ in range(2)]))
     out = best_rates(drivers, steps, rounds)
+    out["2 plain processes"] = plain_processes(options, steps, rounds)
     for driver in drivers.values():
         driver.env.close()
     out["speedup_async_2"] = round(out["async 2"] / out["1"], 2)
+    out["speedup_plain_2"] = round(out["2 plain processes"] / out["1"], 2)
     cpu = {name: round(d.best_cpu, 1) for name, d in drivers.items()}
     # on an idle machine with 2 cores: 2 cores' worth of the async run's CPU rate, and
     # never more than two single environments
@@ -280,9 +339,13 @@ def section(report) -> str:
         "Vector environments (all environments' steps together; per CPU second counts this "
         "process and the workers):",
         markdown_table(["environments", "steps/s", "steps per CPU s"],
-                       [[k, v, report["vector_steps_per_cpu_s"][k]] for k, v in vec.items()
-                        if k != "speedup_async_2"]),
+                       [[k, v, report["vector_steps_per_cpu_s"].get(k, "—")]
+                        for k, v in vec.items() if not k.startswith("speedup")]),
         f"Measured speed-up of AsyncVectorEnv with 2 over one environment: "
         f"{vec['speedup_async_2']}; what the CPU time allows on an idle 2-core machine "
         f"(2 × the async run's steps per CPU second, at most 2 × one's, over one's): "
-        f"{report['async_2_speedup_cpu_bound']}."])
+        f"{report['async_2_speedup_cpu_bound']}.  The same two environments in two plain "
+        f"processes, no gymnasium in between: {vec['speedup_plain_2']} × one.  "
+        f"AsyncVectorEnv with 2 of a do-nothing environment with the same spaces (its "
+        f"step only copies one observation) does {vec['async 2, do-nothing env']} steps/s: "
+        "the protocol's own ceiling, whatever the environment."])
