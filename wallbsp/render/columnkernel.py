@@ -11,7 +11,7 @@ bytes (the tests draw frames both ways):
   tops and min of their bottoms, kept per column as DOOM keeps ``ceilingclip`` and
   ``floorclip``), and the same as ``DrawSegs``, by column;
 - ``paint_textured``: every pixel's texel and light (``RunSurfaces`` and its shaders);
-- ``paint_layers``: kind, index and depth (``RunLayers``), only when asked for, in rows.
+- ``paint_layers``: kind, index and depth (``RunLayers``), only when asked for.
 
 Entry ``i``'s numbers are columns of ``bounds`` ``(8, n)`` int64: the unclipped ``p1, u,
 lo, fl`` and the clipped ``top, bottom, open top, open bottom``.
@@ -271,16 +271,15 @@ def paint_textured(keys, cols, ws, bounds, open_top, open_bottom, u, view, sky_c
 @kernel
 def paint_layers(keys, cols, ws, bounds, open_top, open_bottom, view, part_kind, part_index,
                  sector_sky, floor, ceiling, height, kind_out, index_out, depth_out):
-    """Kind, index and depth of every pixel (``layers.RunLayers``), in rows (pixel ``(c,
-    r)`` at ``r * width + c``: what programs that learn take, so they need no transposed
-    copy): a wall's depth is its column's ``1/w``, a plane's ``|f*(h - z)| / |y0 - row|``,
-    sky and nothing are infinitely far."""
-    width = len(open_top)
+    """Kind, index and depth of every pixel (``layers.RunLayers``), column-major: a wall's
+    depth is its column's ``1/w``, a plane's ``|f*(h - z)| / |y0 - row|``, sky and nothing
+    are infinitely far."""
     inverse = np.empty(height, dtype=np.float64)
     for r in range(height):
         inverse[r] = 1.0 / abs(view[8] - r)
     for i in range(len(keys)):
         key, c = keys[i], cols[i]
+        at = c * height
         for part in range(4):
             r0, r1 = _part_rows(bounds, i, part)[:2]
             if r1 <= r0:
@@ -295,16 +294,16 @@ def paint_layers(keys, cols, ws, bounds, open_top, open_bottom, view, part_kind,
                 h = ceiling[index] if kind == KIND_CEILING else floor[index]
                 b = abs(view[3] * (h - view[2]))
             for r in range(r0, r1):
-                kind_out[r * width + c] = kind
-                index_out[r * width + c] = index
+                kind_out[at + r] = kind
+                index_out[at + r] = index
                 scale = b * inverse[r] if b > 0.0 else b
-                depth_out[r * width + c] = np.float32(a + scale)
-    for c in range(width):
+                depth_out[at + r] = np.float32(a + scale)
+    for c in range(len(open_top)):
         top = open_top[c]
         for r in range(top, max(open_bottom[c], top)):
-            kind_out[r * width + c] = KIND_NOTHING
-            index_out[r * width + c] = -1
-            depth_out[r * width + c] = np.float32(math.inf)
+            kind_out[c * height + r] = KIND_NOTHING
+            index_out[c * height + r] = -1
+            depth_out[c * height + r] = np.float32(math.inf)
 
 
 @kernel

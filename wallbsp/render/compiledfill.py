@@ -41,9 +41,8 @@ class CompiledEntries:
 
 class CompiledLayers:
     """``columns(name)`` for ``kind``, ``index`` and ``depth`` (all three made by one
-    kernel pass the first time one is asked for, painted in rows and given as their
-    ``(width, height)`` transposed views; each call's array is the caller's own: the one
-    made, the first time, then copies) and ``drawsegs()``."""
+    kernel pass the first time one is asked for; each call's array is the caller's own:
+    the one made, the first time, then copies) and ``drawsegs()``."""
 
     def __init__(self, view, heights, tables, parts, entries: CompiledEntries):
         self.view, self.heights, self.tables, self.parts = view, heights, tables, parts
@@ -61,7 +60,7 @@ class CompiledLayers:
 
     def _paint(self):
         view, e, heights = self.view, self.entries, self.heights
-        rows = (view.height, view.width)
+        shape = (view.width, view.height)
         n = view.width * view.height
         kind = np.empty(n, dtype=np.uint8)
         index = np.empty(n, dtype=np.int32)
@@ -70,9 +69,8 @@ class CompiledLayers:
         kernels.paint_layers(e.keys, e.cols, e.w, e.bounds, e.open_top, e.open_bottom,
                              _view_numbers(view), kinds, indices, self.tables.sector_sky,
                              heights.floor, heights.ceiling, view.height, kind, index, depth)
-        # painted in rows; the (width, height) columns are their transposed views
-        return {"kind": kind.reshape(rows).T, "index": index.reshape(rows).T,
-                "depth": depth.reshape(rows).T}
+        return {"kind": kind.reshape(shape), "index": index.reshape(shape),
+                "depth": depth.reshape(shape)}
 
     def drawsegs(self):
         return self.entries.drawsegs()

@@ -1,7 +1,7 @@
 """A frame's buffers in row order: new C-ordered ``(H, W, ...)`` arrays.
 
-The renderer draws colour column-major (the layout pygame's ``blit_array`` takes; the
-compiled fill paints kind, index and depth in rows); programs that learn want rows.  numpy copies a transposed view slowly (a byte or a few a step, strided),
+The renderer draws column-major (the layout pygame's ``blit_array`` takes, and runs down a
+column are contiguous stores); programs that learn want rows.  numpy copies a transposed view slowly (a byte or a few a step, strided),
 so the copies are small kernels when kernels are on, and numpy a channel at a time when not.
 """
 from __future__ import annotations
@@ -13,18 +13,20 @@ from ..compiled import kernel, kernels_enabled
 __all__ = ["rows_of", "rgb_rows", "labels_rows", "copy_rows", "packed_pixels"]
 
 
+# Every copy runs along the rows it writes: strided loads cost far less than strided stores.
+
 @kernel
 def _transpose(columns, rows):
-    for c in range(columns.shape[0]):
-        for r in range(columns.shape[1]):
+    for r in range(columns.shape[1]):
+        for c in range(columns.shape[0]):
             rows[r, c] = columns[c, r]
 
 
 @kernel
 def _rgb_rows(packed, rows):
     """Packed little-endian rgb pixels ``(W, H)`` into ``(H, W, 3)`` bytes."""
-    for c in range(packed.shape[0]):
-        for r in range(packed.shape[1]):
+    for r in range(packed.shape[1]):
+        for c in range(packed.shape[0]):
             v = packed[c, r]
             rows[r, c, 0] = v & 255
             rows[r, c, 1] = (v >> 8) & 255
@@ -66,8 +68,8 @@ def rgb_rows(color_columns) -> np.ndarray:
 
 
 def labels_rows(kind, index) -> np.ndarray:
-    """``(H, W, 2)`` int32 rows of ``kind`` and ``index`` ``(H, W)`` (in either layout: the
-    compiled fill paints them in rows, the numpy layers in columns)."""
+    """``(H, W, 2)`` int32 rows of ``kind`` and ``index`` ``(H, W)`` (the transposed views of
+    the layers' columns, or any layout)."""
     rows = np.empty(kind.shape + (2,), dtype=np.int32)
     if kernels_enabled():
         _label_rows(kind, index.astype(np.int32, copy=False), rows)
