@@ -128,6 +128,35 @@ def test_frame_rows_are_the_layers_in_c_order(compiled_levels, kernels):
         frame.rows("colour")
 
 
+def assert_view_rows_are_the_rows(source, cameras, size):
+    """``Frame.view_rows`` (one kernel call over the compiled frame) gives what
+    ``Frame.rows`` gives name by name, for every subset of the names."""
+    subsets = (("rgb", "depth", "labels"), ("depth",), ("labels",), ("rgb",),
+               ("rgb", "labels"))
+    overlaid = 0
+    for camera in cameras:
+        frame = render(source, camera, *size)
+        overlaid += frame.stats["things_drawn"] > 0
+        for names in subsets:
+            fast = frame.view_rows(list(names))
+            assert list(fast) == list(names)
+            for name in names:
+                assert np.array_equal(fast[name], frame.rows(name)), name
+                assert fast[name].flags.c_contiguous
+    return overlaid
+
+
+def test_view_rows_are_the_rows(compiled_levels):
+    tree = compiled_levels["multi"]
+    assert_view_rows_are_the_rows(World(tree), spots(tree, 3), (37, 23))
+
+
+@pytest.mark.skipif(not (FREEDOOM / "freedoom1.wad").exists(), reason="Freedoom not installed")
+def test_view_rows_are_the_rows_with_sprites_over_the_layers(freedoom_cache):
+    tree = freedoom_cache.tree("freedoom1.wad", "E1M1")
+    assert assert_view_rows_are_the_rows(World(tree), spots(tree, 12), (64, 40)) >= 3
+
+
 @pytest.mark.skipif(not (FREEDOOM / "freedoom1.wad").exists(), reason="Freedoom not installed")
 def test_height_tables_are_the_same_both_ways(freedoom_cache):
     from wallbsp.render.tables import HeightTables, tree_tables

@@ -62,7 +62,7 @@ def observation_space(keys, width: int, height: int):
 def view_observation(frame, keys) -> dict:
     """The view buffers of a rendered ``frame`` among ``keys`` (new C-ordered arrays: a
     vector env copies them on, and only a C-ordered array copies at memory speed)."""
-    return {name: frame.rows(name) for name in ("rgb", "depth", "labels") if name in keys}
+    return frame.view_rows([name for name in ("rgb", "depth", "labels") if name in keys])
 
 
 def pose_of(player) -> np.ndarray:

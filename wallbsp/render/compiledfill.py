@@ -12,8 +12,10 @@ import weakref
 import numpy as np
 
 from . import columnkernel as kernels      # by module: the kernels swapped in when compiled
+from . import observekernel
 from .fill import DrawSegs
 from .frame import KIND_CEILING, KIND_FLOOR, KIND_WALL
+from .rowmajor import packed_pixels
 from .shading import LIGHT_LEVELS
 from .tables import key_light
 from .texfill import FLAT_OFFSET, key_parts, sky_columns, sky_rows
@@ -74,6 +76,42 @@ class CompiledLayers:
 
     def drawsegs(self):
         return self.entries.drawsegs()
+
+    def view_rows(self, colour_columns, names, overlay=None):
+        """``Frame.view_rows``: ``{name: rows}`` for ``names`` among rgb, depth and labels
+        in one kernel call, with ``overlay``'s pixels (``overlay.Overlay``) written over
+        the layers; None where the colour buffer is not the fill's own."""
+        packed = packed_pixels(colour_columns)
+        if packed is None:
+            return None
+        view, e, heights = self.view, self.entries, self.heights
+        rows = (view.height, view.width)
+        out = {"rgb": _rows("rgb" in names, rows + (3,), np.uint8),
+               "depth": _rows("depth" in names, rows, np.float32),
+               "labels": _rows("labels" in names, rows + (2,), np.int32)}
+        pixel, which, slices = (_NO_OVERLAY if overlay is None or overlay.slices is None
+                                else (overlay.pixel, overlay.which, overlay.slices))
+        kinds, indices = self.parts
+        observekernel.observe_rows(
+            e.keys, e.cols, e.w, e.bounds, e.open_top, e.open_bottom, _view_numbers(view),
+            kinds, indices, self.tables.sector_sky, heights.floor, heights.ceiling,
+            view.height, pixel, which, slices.kind, slices.index, slices.depth, packed,
+            out["rgb"], out["depth"], out["labels"])
+        return {name: out[name] for name in names}
+
+
+def _rows(wanted, shape, dtype):
+    """A new output of ``shape``, or an empty one of the same rank when not ``wanted``."""
+    return np.empty(shape if wanted else (0,) * len(shape), dtype=dtype)
+
+
+class _NoSlices:
+    kind = np.zeros(0, dtype=np.uint8)
+    index = np.zeros(0, dtype=np.int64)
+    depth = np.zeros(0, dtype=np.float64)
+
+
+_NO_OVERLAY = (np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64), _NoSlices)
 
 
 def _view_numbers(view) -> np.ndarray:

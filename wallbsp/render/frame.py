@@ -80,6 +80,14 @@ class Frame:
             return copy_rows(self._layer(name))
         raise KeyError(name)
 
+    def view_rows(self, names) -> dict:
+        """``{name: self.rows(name)}`` for ``names`` among ``rgb``, ``depth`` and
+        ``labels`` (an environment's observation): by one kernel call when the frame's
+        layers can (the compiled fill's), else name by name."""
+        fast = getattr(self._layers, "view_rows", None)
+        rows = None if fast is None else fast(self.color_columns, names)
+        return rows if rows is not None else {name: self.rows(name) for name in names}
+
     @property
     def drawsegs(self):
         """The front-to-back walk's ``DrawSegs`` (None for the painter)."""

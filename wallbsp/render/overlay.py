@@ -145,6 +145,11 @@ class OverlayLayers:
             values.ravel(order="K")[self.overlay.at(values)] = getattr(self.overlay, name)
         return values
 
+    def view_rows(self, colour_columns, names):
+        """The base layers' ``view_rows`` with the overlay (None when they have none)."""
+        own = getattr(self.base, "view_rows", None)
+        return None if own is None else own(colour_columns, names, self.overlay)
+
     def __getattr__(self, name):
         return getattr(self.base, name)
 

@@ -10,20 +10,21 @@ import numpy as np
 
 from ..compiled import kernel, kernels_enabled
 
-__all__ = ["rows_of", "rgb_rows", "labels_rows", "copy_rows", "packed_pixels"]
+__all__ = ["rows_of", "rgb_rows", "labels_rows", "copy_rows", "packed_pixels",
+           "transpose_kernel", "rgb_rows_kernel", "label_rows_kernel"]
 
 
 # Every copy runs along the rows it writes: strided loads cost far less than strided stores.
 
 @kernel
-def _transpose(columns, rows):
+def transpose_kernel(columns, rows):
     for r in range(columns.shape[1]):
         for c in range(columns.shape[0]):
             rows[r, c] = columns[c, r]
 
 
 @kernel
-def _rgb_rows(packed, rows):
+def rgb_rows_kernel(packed, rows):
     """Packed little-endian rgb pixels ``(W, H)`` into ``(H, W, 3)`` bytes."""
     for r in range(packed.shape[1]):
         for c in range(packed.shape[0]):
@@ -34,7 +35,7 @@ def _rgb_rows(packed, rows):
 
 
 @kernel
-def _label_rows(kind, index, rows):
+def label_rows_kernel(kind, index, rows):
     for r in range(kind.shape[0]):
         for c in range(kind.shape[1]):
             rows[r, c, 0] = kind[r, c]
@@ -46,7 +47,7 @@ def rows_of(columns) -> np.ndarray:
     width, height = columns.shape[:2]
     rows = np.empty((height, width) + columns.shape[2:], dtype=columns.dtype)
     if kernels_enabled() and columns.ndim == 2 and columns.flags.c_contiguous:
-        _transpose(columns, rows)
+        transpose_kernel(columns, rows)
     elif columns.ndim == 2:
         rows[...] = columns.T
     else:
@@ -63,7 +64,7 @@ def rgb_rows(color_columns) -> np.ndarray:
         return rows_of(color_columns)
     width, height = color_columns.shape[:2]
     rows = np.empty((height, width, 3), dtype=np.uint8)
-    _rgb_rows(packed.reshape(width, height), rows)
+    rgb_rows_kernel(packed.reshape(width, height), rows)
     return rows
 
 
@@ -72,7 +73,7 @@ def labels_rows(kind, index) -> np.ndarray:
     the layers' columns, or any layout)."""
     rows = np.empty(kind.shape + (2,), dtype=np.int32)
     if kernels_enabled():
-        _label_rows(kind, index.astype(np.int32, copy=False), rows)
+        label_rows_kernel(kind, index.astype(np.int32, copy=False), rows)
     else:
         rows[..., 0] = kind
         rows[..., 1] = index
