@@ -26,9 +26,11 @@ __all__ = ["CompiledEntries", "CompiledLayers", "fill_compiled"]
 class CompiledEntries:
     """The entries ``column_entries`` made: per entry (piece order) its ``keys``, ``cols``,
     ``w`` and ``bounds`` ``(8, n)``; the windows left open per column; the drawsegs.
-    ``piece_keys``: each piece's side key (the masked pass's)."""
+    ``piece_keys``: each piece's side key (the masked pass's); ``numbers``: the view's
+    (``_view_numbers``), made once a frame for every kernel that reads them."""
 
     def __init__(self, tables, heights, view, pieces):
+        self.numbers = _view_numbers(view)
         table = np.asarray(pieces, dtype=np.float64).reshape(-1, 5)
         self.piece_keys = table[:, 0].astype(np.int64)
         (self.keys, self.cols, self.w, self.bounds, self.open_top, self.open_bottom,
@@ -46,9 +48,11 @@ class CompiledLayers:
     kernel pass the first time one is asked for; each call's array is the caller's own:
     the one made, the first time, then copies) and ``drawsegs()``."""
 
-    def __init__(self, view, heights, tables, parts, entries: CompiledEntries):
+    def __init__(self, view, heights, tables, parts, entries: CompiledEntries, packed=None,
+                 colour_columns=None):
         self.view, self.heights, self.tables, self.parts = view, heights, tables, parts
         self.entries = entries
+        self.packed, self.colour_columns = packed, colour_columns   # the fill's own buffer
         self._made = None
         self._given = set()
 
@@ -69,7 +73,7 @@ class CompiledLayers:
         depth = np.empty(n, dtype=np.float32)
         kinds, indices = self.parts
         kernels.paint_layers(e.keys, e.cols, e.w, e.bounds, e.open_top, e.open_bottom,
-                             _view_numbers(view), kinds, indices, self.tables.sector_sky,
+                             e.numbers, kinds, indices, self.tables.sector_sky,
                              heights.floor, heights.ceiling, view.height, kind, index, depth)
         return {"kind": kind.reshape(shape), "index": index.reshape(shape),
                 "depth": depth.reshape(shape)}
@@ -81,7 +85,8 @@ class CompiledLayers:
         """``Frame.view_rows``: ``{name: rows}`` for ``names`` among rgb, depth and labels
         in one kernel call, with ``overlay``'s pixels (``overlay.Overlay``) written over
         the layers; None where the colour buffer is not the fill's own."""
-        packed = packed_pixels(colour_columns)
+        packed = (self.packed if colour_columns is self.colour_columns
+                  else packed_pixels(colour_columns))
         if packed is None:
             return None
         view, e, heights = self.view, self.entries, self.heights
@@ -93,7 +98,7 @@ class CompiledLayers:
                                 else (overlay.pixel, overlay.which, overlay.slices))
         kinds, indices = self.parts
         observekernel.observe_rows(
-            e.keys, e.cols, e.w, e.bounds, e.open_top, e.open_bottom, _view_numbers(view),
+            e.keys, e.cols, e.w, e.bounds, e.open_top, e.open_bottom, e.numbers,
             kinds, indices, self.tables.sector_sky, heights.floor, heights.ceiling,
             view.height, pixel, which, slices.kind, slices.index, slices.depth, packed,
             out["rgb"], out["depth"], out["labels"])
@@ -178,12 +183,13 @@ def fill_compiled(tables, tex, heights, state, view, pieces, light=True):
         parts = key_parts(tables, tex)
         written = _paint_textured(tables, tex, heights, state, view, e, parts, light, colour)
     columns = colour.view(np.uint8).reshape(view.width, view.height, 4)[:, :, :3]
-    return columns, CompiledLayers(view, heights, tables, parts, e), e, int(written)
+    layers = CompiledLayers(view, heights, tables, parts, e, colour, columns)
+    return columns, layers, e, int(written)
 
 
 def _paint_flat(tables, heights, state, view, e, light, colour):
     return kernels.paint_flat(
-        e.keys, e.cols, e.w, e.bounds, e.open_top, e.open_bottom, _view_numbers(view),
+        e.keys, e.cols, e.w, e.bounds, e.open_top, e.open_bottom, e.numbers,
         tables.key_near, _key_surfaces(tables), tables.key_upper_sky, key_light(tables, state),
         tables.plane_base_surface, tables.sector_sky, heights.floor, heights.ceiling,
         state.light, tables.lit_colours, tables.surface_colour, bool(light),
@@ -206,7 +212,7 @@ def _paint_textured(tables, tex, heights, state, view, e, parts, light, colour):
     kinds, indices = parts
     offsets = state.wall_x_offset                 # scrolling walls' (zeros for the rest)
     return kernels.paint_textured(
-        e.keys, e.cols, e.w, e.bounds, e.open_top, e.open_bottom, view.u, _view_numbers(view),
+        e.keys, e.cols, e.w, e.bounds, e.open_top, e.open_bottom, view.u, e.numbers,
         _sky_columns(tex, view), kinds, indices, tex.part_table, tables.key_far,
         key_light(tables, state), tables.key_wall, offsets, True,   # + 0.0 changes no bits
         heights.key_heights, tables.sector_sky, heights.floor, heights.ceiling,
