@@ -22,7 +22,7 @@ import math
 
 import numpy as np
 
-from ..compiled import kernel
+from ..compiled import kernel, step_kernel
 
 __all__ = ["column_entries", "paint_textured", "paint_layers", "W_MIN"]
 
@@ -36,7 +36,7 @@ KIND_NOTHING, KIND_WALL, KIND_FLOOR, KIND_CEILING = 0, 1, 2, 3
 INT32_MIN = -(1 << 31)
 
 
-@kernel
+@step_kernel
 def _boundary(y0, fz, w, height):
     row = np.ceil(y0 - fz * w)
     return min(max(row, 0.0), float(height))
@@ -103,20 +103,20 @@ def column_entries(pieces, u, key_heights, f, z, y0, width, height):
             ds_windows)
 
 
-@kernel
+@step_kernel
 def _light(far, inverse_depth, n_colours):
     """``shading.light_levels`` of one surface, as a lut row offset."""
     level = np.floor(far + LIGHT_DISTANCE * inverse_depth)
     return int(min(max(level, 0.0), float(LIGHTS))) * n_colours
 
 
-@kernel
+@step_kernel
 def _far_level(light):
     """``shading.far_level``: the level a sector's light leaves a surface at far away."""
     return LIGHTS - 4.0 * (15 - np.floor(light / 16.0))
 
 
-@kernel
+@step_kernel
 def _rint(x):
     """``np.rint``: the nearest whole number, halves to even."""
     r = np.floor(x)
@@ -126,7 +126,7 @@ def _rint(x):
     return r
 
 
-@kernel
+@step_kernel
 def _int32(x):
     """numpy's float64 to int32 cast: truncation, and INT32_MIN where it does not fit."""
     if not (-2147483649.0 < x < 2147483648.0):        # NaN too
@@ -134,7 +134,7 @@ def _int32(x):
     return int(x)
 
 
-@kernel
+@step_kernel
 def _column_run(out, at, r0, r1, first, last, texture, t0, t1, level, atlas, lut):
     """Rows ``[r0, r1)`` of a column run into ``out[at + row]``: ``texture`` is ``(column
     address, padded column length, texture height)``; texture rows ``t0 + t1*row`` for the
@@ -157,7 +157,7 @@ def _column_run(out, at, r0, r1, first, last, texture, t0, t1, level, atlas, lut
             out[at + r] = lut[int(atlas[(fixed + step * r) >> FIX]) + level]
 
 
-@kernel
+@step_kernel
 def _wall(out, at, r0, r1, part, key, w, first, last, ray, view, part_table, key_far,
           key_far_light, key_wall, wall_x_offset, scrolling, key_heights, atlas, lut,
           n_colours, light):
@@ -181,7 +181,7 @@ def _wall(out, at, r0, r1, part, key, w, first, last, ray, view, part_table, key
                 top + t[10] - view[2] - view[8] * step, step, level, atlas, lut)
 
 
-@kernel
+@step_kernel
 def _plane(out, at, r0, r1, h, base, far, ray, view, atlas, lut, n_colours, light):
     """A floor's or ceiling's rows (``texfill.shade_planes``): one depth per row."""
     fz = view[3] * (h - view[2])
@@ -198,7 +198,7 @@ def _plane(out, at, r0, r1, h, base, far, ray, view, atlas, lut, n_colours, ligh
         out[at + r] = lut[int(atlas[((tx << 6) | ty) + base]) + level]
 
 
-@kernel
+@step_kernel
 def _part_rows(bounds, i, part):
     """Entry ``i``'s part (0 ceiling, 1 upper, 2 lower, 3 floor): its rows ``[r0, r1)``
     within the window open when it was drawn, and the part's unclipped first and last rows
