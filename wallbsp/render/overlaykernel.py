@@ -14,7 +14,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..compiled import kernel
+from ..compiled import kernel, step_kernel
 from .frame import KIND_THING, KIND_WALL
 from .shading import FULL_BRIGHT, LIGHT_DISTANCE, LIGHT_LEVELS
 from .sprites import MIN_DEPTH
@@ -67,7 +67,7 @@ def visible_things(leaves, n_leaves, leaf, alive, drawn, x, y, radius, vx, vy, f
     return considered, ids[:kept], out[:, :kept], masked
 
 
-@kernel
+@step_kernel
 def _window(col, lo, fraction, scale, own, ds, keys, key_near, key_far, floor, ceiling, y0, z,
             height):
     """``ClipWindows.windows`` of one column for something of ``own`` sector at depth ``d``
@@ -200,7 +200,7 @@ def _sprite_columns(ids, depth, along, seen, angle, kind, chosen_kind, chosen, p
     return ints[:, :n + walls], floats[:, :n + walls], n, drawn
 
 
-@kernel
+@step_kernel
 def _colour(texel, rgb, level, lit_palette):
     """``overlay._lit`` of one texel: the WAD's lit palette, or rgb scaled (``scaled_rgb``)."""
     if not rgb:
@@ -212,7 +212,7 @@ def _colour(texel, rgb, level, lit_palette):
     return np.uint32(r | (g << 8) | (b << 16))
 
 
-@kernel
+@step_kernel
 def _put(colour_columns, col, row, rgb):
     colour_columns[col, row, 0] = rgb & 255
     colour_columns[col, row, 1] = (rgb >> 8) & 255

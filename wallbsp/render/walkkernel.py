@@ -12,7 +12,7 @@ import weakref
 
 import numpy as np
 
-from ..compiled import kernel
+from ..compiled import kernel, step_kernel
 from ..jitable import register_jitables
 from .project import project_seg, view_numbers
 from .walk import Walk, eye_tolerance, walk_front_to_back
@@ -22,7 +22,7 @@ __all__ = ["walk_compiled"]
 FAR = 1 << 62                          # columns.ClosedColumns' sentinels
 
 
-@kernel
+@step_kernel
 def _bisect_right(values, count, x):
     lo, hi = 0, count
     while lo < hi:
@@ -34,7 +34,7 @@ def _bisect_right(values, count, x):
     return lo
 
 
-@kernel
+@step_kernel
 def _bisect_left(values, count, x):
     lo, hi = 0, count
     while lo < hi:
@@ -46,7 +46,7 @@ def _bisect_left(values, count, x):
     return lo
 
 
-@kernel
+@step_kernel
 def _merge(starts, ends, count, c1, c2):
     """``ClosedColumns._merge``: the closed span ``[c1, c2)`` into the list; the new count."""
     lo = _bisect_left(ends, count, c1)
@@ -64,7 +64,7 @@ def _merge(starts, ends, count, c1, c2):
     return count - gone
 
 
-@kernel
+@step_kernel
 def _box_columns(view, box, span):
     """``project.make_box_check``'s ``box_columns`` into ``span``; False for none."""
     ex, ey, fx, fy, rx, ry, f, x0, width = (view[0], view[1], view[2], view[3], view[4],
@@ -96,7 +96,7 @@ def _box_columns(view, box, span):
     return True
 
 
-@kernel
+@step_kernel
 def _open_spans(starts, ends, count, c1, c2, spans):
     """``ClosedColumns.open_spans`` into ``spans`` (rows of two); the number of spans."""
     i = _bisect_right(starts, count, c1) - 1
@@ -206,7 +206,7 @@ def walk_kernel(view, tol, root, lines, kids, boxes, seg_ranges, inside, ends, f
     return 0, pieces[:n_pieces], leaves[:n_leaves], visited, segs_drawn, early_exit
 
 
-@kernel
+@step_kernel
 def _append(values, n, x):
     """``values[n] = x`` in a buffer doubled when full: ``(buffer, n + 1)``."""
     if n == len(values):
