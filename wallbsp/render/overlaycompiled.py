@@ -45,7 +45,7 @@ def compiled_overlay(view, state, tables, walk, piece_keys, make_drawsegs, atlas
     things = state.things
     keys = masked_keys(tables, state, atlas)
     considered, ids, offsets, masked = overlaykernel.visible_things(
-        np.asarray(walk.leaves, dtype=np.int64), len(things.tree.leaf_sector), things.leaf,
+        _leaf_array(walk), len(things.tree.leaf_sector), things.leaf,
         things.alive, things.drawn, things.x, things.y, things.radius, view.x, view.y,
         view.fx, view.fy, view.rx, view.ry, view.x0, view.f, piece_keys, keys.slot)
     stats = {"things_considered": int(considered), "things_drawn": 0, "masked_columns": 0}
@@ -81,6 +81,13 @@ def compiled_overlay(view, state, tables, walk, piece_keys, make_drawsegs, atlas
         texels, opaque, offset, width, height, left, top, paletted = atlas.arrays()
     stats["things_drawn"] = int(drawn)
     return pixel, which, Reports(kind, index, slice_depth), stats
+
+
+def _leaf_array(walk) -> np.ndarray:
+    """The walk's leaves as an int64 array (the kernel walk's own, else made)."""
+    if walk.leaf_array is not None:
+        return walk.leaf_array
+    return np.asarray(walk.leaves, dtype=np.int64)
 
 
 class _Choices:

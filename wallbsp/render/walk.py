@@ -57,6 +57,7 @@ class Walk:
     pieces: list
     stats: dict
     leaves: list = field(default_factory=list)
+    leaf_array: object = None          # the same as an int64 array, when the kernel walked
 
 
 def walk_front_to_back(tables, solid, view, boxes=None) -> Walk:

@@ -263,4 +263,4 @@ def walk_compiled(tables, heights, view, boxes=None) -> Walk:
     stats = {"nodes_visited": int(visited), "segs_drawn": int(segs_drawn),
              "early_exit": bool(early_exit), "pieces": len(pieces),
              "nodes": tables.node_count}
-    return Walk(pieces, stats, leaves.tolist())
+    return Walk(pieces, stats, leaves.tolist(), leaves)
