@@ -35,7 +35,7 @@ class MaskedKeys:
         level = state.tree.level
         self.texture_version = state.texture_version
         self.slot = np.full(len(tables.key_wall), -1, dtype=np.int64)
-        for key in np.flatnonzero(tables.key_far >= 0).tolist():
+        for key in _middle_keys(tables, state):
             name = state.wall_texture(int(tables.key_wall[key]), key & 1, "middle")
             slot = None if name is None else atlas.wall_slot(name)
             if slot is not None:
@@ -49,6 +49,19 @@ class MaskedKeys:
                 tables, level)
             self.unpegged = np.array([w.lower_unpegged for w in level.walls],
                                      dtype=bool)[tables.key_wall]
+
+
+def _middle_keys(tables, state) -> list:
+    """The two-sided side keys that have, or may have, a middle texture now: those whose
+    side names one, and every side the world has changed a texture of (one pass over the
+    walls, not a look-up per key: most levels have few see-through walls)."""
+    named = {2 * i + side for i, w in enumerate(state.tree.level.walls)
+             for side, textures in enumerate((w.front_side, w.back_side))
+             if textures is not None and textures.middle is not None}
+    named |= {2 * wall + side for wall, side, _ in state.wall_textures}
+    wall_side = 2 * tables.key_wall + (np.arange(len(tables.key_wall)) & 1)
+    two_sided = np.flatnonzero(tables.key_far >= 0)
+    return [k for k, ws in zip(two_sided.tolist(), wall_side[two_sided].tolist()) if ws in named]
 
 
 _KEYS: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
