@@ -139,8 +139,10 @@ class Level:
 
     def segments(self) -> np.ndarray:
         """The walls' ends as an ``(n, 4)`` int64 array of ``x1, y1, x2, y2`` (v1 → v2)."""
-        ends = [self.vertices[w.v1] + self.vertices[w.v2] for w in self.walls]
-        return np.array(ends, dtype=np.int64).reshape(-1, 4)
+        vertices = np.array(self.vertices, dtype=np.int64).reshape(-1, 2)
+        ends = np.fromiter((v for w in self.walls for v in (w.v1, w.v2)), np.int64,
+                           2 * len(self.walls))
+        return vertices[ends].reshape(-1, 4)
 
     def resource_paths(self) -> tuple[Path, ...]:
         """``resources`` as paths: relative ones from the level file's folder (the current

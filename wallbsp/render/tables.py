@@ -107,7 +107,7 @@ class TreeTables:
         self.key_near = np.maximum(near, 0)   # one-sided walls seen from behind: never drawn
         self.key_far = far
         one_sided = far < 0
-        ends = np.array(level.segments(), dtype=np.int64).reshape(-1, 4)
+        ends = self.wall_ends = level.segments()           # (walls, 4): textures read it too
         north_south, east_west = ends[:, 0] == ends[:, 2], ends[:, 1] == ends[:, 3]
         # DOOM's fake contrast: north-south walls a level brighter, east-west ones darker
         self.key_bias = np.where(north_south, 1.0, np.where(east_west, -1.0, 0.0))[wall]

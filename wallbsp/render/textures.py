@@ -65,7 +65,7 @@ def side_geometry(tables, level):
 
 
 def _side_geometry(tables, level):
-    ends = level.segments().astype(np.float64)[tables.key_wall]
+    ends = tables.wall_ends.astype(np.float64)[tables.key_wall]
     back = (np.arange(len(tables.key_wall)) & 1).astype(bool)
     start = np.where(back[:, None], ends[:, 2:], ends[:, :2])
     other = np.where(back[:, None], ends[:, :2], ends[:, 2:])
