@@ -17,7 +17,7 @@ from dataclasses import dataclass
 
 import numpy as np
 
-__all__ = ["Camera", "EYE_HEIGHT", "Projection", "eye_camera", "column_rays"]
+__all__ = ["Camera", "EYE_HEIGHT", "Projection", "eye_camera", "column_rays", "column_angles"]
 
 EYE_HEIGHT = 41.0     # DOOM's VIEWHEIGHT: the eye above the floor the player stands on
 
@@ -57,6 +57,23 @@ def column_rays(width: int, f: float) -> np.ndarray:
         rays = _RAYS[key] = (np.arange(width, dtype=np.float64) + 0.5 - width / 2.0) / f
         rays.flags.writeable = False
     return rays
+
+
+_ANGLES: dict = {}
+
+
+def column_angles(width: int, f: float) -> np.ndarray:
+    """Every column's ray angle from the view's direction in degrees, positive to the right
+    (clockwise): ``degrees(arctan(u))``, read-only, made once per size and focal length
+    like ``column_rays``."""
+    key = (width, f)
+    angles = _ANGLES.get(key)
+    if angles is None:
+        if len(_ANGLES) > 16:
+            _ANGLES.clear()
+        angles = _ANGLES[key] = np.degrees(np.arctan(column_rays(width, f)))
+        angles.flags.writeable = False
+    return angles
 
 
 class Projection:

@@ -20,6 +20,7 @@ from functools import cached_property
 
 import numpy as np
 
+from ..camera import column_angles
 from .fill import front_to_back_runs, row_numbers
 from .frame import KIND_CEILING, KIND_FLOOR, KIND_NOTHING, KIND_WALL, size_table
 from .painter import PainterRuns, paint_runs
@@ -224,12 +225,8 @@ class RunSurfaces:
 def sky_columns(view, width) -> np.ndarray:
     """The column of a sky texture ``width`` wide that each screen column shows: by the
     angle of the column's ray, ``SKY_COLUMNS`` texture columns a full turn."""
-    angle = view.angle - size_table(_RAY_ANGLES, (view.width, view.f),
-                                    lambda: np.degrees(np.arctan(view.u)))
+    angle = view.angle - column_angles(view.width, view.f)
     return np.floor(SKY_COLUMNS * angle / 360.0).astype(np.int64) % width
-
-
-_RAY_ANGLES: dict = {}          # per frame size and focal length: each column's ray angle
 
 
 def sky_rows(view) -> tuple:
