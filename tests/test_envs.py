@@ -296,8 +296,8 @@ def test_the_throughput_script_reports_every_configuration():
     import json
     report = json.loads(done.stdout)
     assert set(report["vector_steps_per_s"]) == {
-        "1", "async 2", "sync 2", "speedup_async_2", "async 2, do-nothing env",
-        "2 plain processes", "speedup_plain_2"}
+        "1", "async 1", "async 2", "sync 2", "speedup_async_2", "async 2, do-nothing env",
+        "2 plain processes", "speedup_plain_2", "speedup_async_2_over_async_1"}
     assert all(v > 0 for v in report["vector_steps_per_s"].values())
     assert len(report["one_env_steps_per_s"]) == 4
     assert all(v > 0 for v in report["one_env_steps_per_s"].values())

@@ -9,8 +9,10 @@ trained: one seeded uniform-random sequence of Discrete actions (a new episode w
 ends) drives every environment, every sub-environment of a vector env getting the same
 action, so every configuration walks the same way and draws the same views.
 
-Throughput is the best of a few rounds, the configurations taking turns round by round (a
-busy machine only ever takes speed away).
+Throughput is the best of 10 rounds of 150 steps, the configurations taking turns round by
+round (a busy machine only ever takes speed away).  Ten, not five: on this virtual machine
+a configuration's rounds within one run vary by up to 2x, and with five the same
+configuration measured twice in one run came out at 2,044 and 3,152 steps/s.
 
 1. One environment: ``wallbsp/Exit-v0`` on freedoom1.wad:E1M1 (levels/large.json when
    Freedoom is absent; --quick: a small generated level), 160x120, frame skip 1,
@@ -21,8 +23,8 @@ busy machine only ever takes speed away).
 2. ``wallbsp/Explore-v0`` reset (generate a ~500-wall level, compile it, a World, the first
    frame): the median over many seeds, and the median of each part.
 3. Vector environments: steps per second (all environments' steps) for 1 environment, and
-   for 2 and N under ``AsyncVectorEnv`` (one process each) and 2 under ``SyncVectorEnv``;
-   the speed-up of 2 over 1.  Beside them, what bounds that speed-up: ``AsyncVectorEnv``
+   for 1, 2 and N under ``AsyncVectorEnv`` (one process each) and 2 under
+   ``SyncVectorEnv``; the speed-up of 2 over 1.  Beside them, what bounds that speed-up: ``AsyncVectorEnv``
    with 2 of a do-nothing environment with the same spaces (the protocol's ceiling), and
    the environment in 2 plain processes at once against 1 (what the cores give).
 """
@@ -72,6 +74,7 @@ class RandomDriver:
 
     def __init__(self, env, seed: int = 0):
         self.env, self.count = env, getattr(env, "num_envs", 1)
+        self.vector = hasattr(env, "num_envs")
         self.best_cpu = 0.0             # steps per CPU second (this process and its workers)
         single = getattr(env, "single_action_space", env.action_space)
         self.actions = np.random.default_rng(seed).integers(single.n, size=1 << 16)
@@ -89,8 +92,8 @@ class RandomDriver:
             action = self.actions[self.next % len(self.actions)]
             self.next += 1
             _, _, terminated, truncated, _ = env.step(
-                action if self.count == 1 else np.full(self.count, action))
-            if self.count == 1 and (terminated or truncated):
+                np.full(self.count, action) if self.vector else action)
+            if not self.vector and (terminated or truncated):
                 env.reset()
         cpu = cpu_seconds(env) - cpu
         if cpu > 0:
@@ -267,6 +270,7 @@ def vector_envs(level, counts, steps: int, rounds: int) -> dict:
     for driver in drivers.values():
         driver.env.close()
     out["speedup_async_2"] = round(out["async 2"] / out["1"], 2)
+    out["speedup_async_2_over_async_1"] = round(out["async 2"] / out["async 1"], 2)
     out["speedup_plain_2"] = round(plain[1] / plain[0], 2)
     cpu = {name: round(d.best_cpu, 1) for name, d in drivers.items()}
     # on an idle machine with 2 cores: 2 cores' worth of the async run's CPU rate, and
@@ -285,9 +289,9 @@ def main(argv=None) -> int:
 def run(args) -> dict:
     import wallbsp.envs  # noqa: F401 - registers the ids
     load = os.getloadavg()[0]
-    steps, rounds = (10, 1) if args.quick else (150, 5)
+    steps, rounds = (10, 1) if args.quick else (150, 10)
     level = exit_level(args.quick)
-    counts = sorted({2, args.envs})
+    counts = sorted({1, 2, args.envs})
     single, single_cpu = one_env(level, steps, rounds)
     reset = explore_reset(1 if args.quick else 40)
     vectors, vectors_cpu, bound = vector_envs(level, counts, steps, rounds)
@@ -348,7 +352,9 @@ def section(report) -> str:
         f"Measured speed-up of AsyncVectorEnv with 2 over one environment: "
         f"{vec['speedup_async_2']}; what the CPU time allows on an idle 2-core machine "
         f"(2 × the async run's steps per CPU second, at most 2 × one's, over one's): "
-        f"{report['async_2_speedup_cpu_bound']}.  The same environment in two plain "
+        f"{report['async_2_speedup_cpu_bound']}.  AsyncVectorEnv with 2 over AsyncVectorEnv "
+        f"with 1 (the same protocol on both sides): {vec['speedup_async_2_over_async_1']}.  "
+        f"The same environment in two plain "
         f"processes at once, no gymnasium in between, against one such process run just "
         f"before: {vec['speedup_plain_2']} ×.  "
         f"AsyncVectorEnv with 2 of a do-nothing environment with the same spaces (its "
