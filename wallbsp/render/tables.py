@@ -34,8 +34,11 @@ class TreeTables:
         walls, sectors = level.walls, level.sectors
         self.root = int(tree.root)
         self.node_count = len(tree.node_line)
-        self.node_lines, self.node_kids, self.node_segs = node_lists(tree)
+        self._tree = _referent(tree)        # (a strong one would keep the cache's key alive)
         lines = np.asarray(tree.node_line, dtype=np.float64).reshape(-1, 3)
+        self.node_line_array = lines
+        self.node_kid_array = np.asarray(tree.node_child, dtype=np.int64).reshape(-1, 2)
+        self.node_seg_array = np.asarray(tree.node_segs, dtype=np.int64).reshape(-1, 2)
         # the largest |a|, |b|, |c|: the side test's tolerance for float eyes
         self.line_max = tuple(np.abs(lines).max(axis=0, initial=0).tolist())
         # the walk's tables as arrays (the kernels'); the Python walks' lists are made from
@@ -77,6 +80,22 @@ class TreeTables:
     @property
     def surface_colour(self):
         return self.flat_colours[1]
+
+    @cached_property
+    def _node_lists(self) -> tuple:
+        return node_lists(self._tree())
+
+    @property
+    def node_lines(self) -> list:
+        return self._node_lists[0]
+
+    @property
+    def node_kids(self) -> list:
+        return self._node_lists[1]
+
+    @property
+    def node_segs(self) -> list:
+        return self._node_lists[2]
 
     @cached_property
     def node_boxes(self) -> list:
@@ -163,6 +182,15 @@ def _key_heights(floor, ceil, near, far, heights, closes):
         heights[0, k], heights[1, k] = ceil[n], floor[n]
         heights[2, k], heights[3, k] = far_c, far_f
         closes[k] = b < 0 or far_f >= far_c or far_c <= floor[n] or far_f >= ceil[n]
+
+
+def _referent(tree):
+    """A function giving ``tree`` back: a weak reference, or a strong one for a stand-in
+    that takes none (it is never a cache's key: ``per_tree``)."""
+    try:
+        return weakref.ref(tree)
+    except TypeError:
+        return lambda: tree
 
 
 def node_lists(tree) -> tuple[list, list, list]:

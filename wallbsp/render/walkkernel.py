@@ -232,10 +232,10 @@ class _WalkArrays:
     """A tree's walk tables as the kernel reads them (contiguous arrays)."""
 
     def __init__(self, tables):
-        self.lines = np.array(tables.node_lines, dtype=np.float64).reshape(-1, 3)
-        self.kids = np.array(tables.node_kids, dtype=np.int64).reshape(-1, 2)
+        self.lines = np.ascontiguousarray(tables.node_line_array)
+        self.kids = np.ascontiguousarray(tables.node_kid_array)
         self.boxes = np.ascontiguousarray(tables.node_box_array)
-        self.seg_ranges = np.array(tables.node_segs, dtype=np.int64).reshape(-1, 2)
+        self.seg_ranges = np.ascontiguousarray(tables.node_seg_array)
         self.inside = np.ascontiguousarray(tables.leaf_inside_array, dtype=np.bool_)
         self.ends = np.ascontiguousarray(tables.seg_xy, dtype=np.float64)
         self.flips = np.ascontiguousarray(tables.seg_flip_array)
