@@ -36,7 +36,7 @@ from .compiledfill import fill_compiled
 from .fill import drawsegs, fill_flat
 from .frame import Frame, save_ids
 from .layers import RunLayers
-from .overlay import draw_overlay, walk_boxes
+from .overlay import draw_overlay, thing_boxes, walk_boxes
 from .painter import fill_back_to_front, walk_back_to_front
 from .rows import Entries
 from .tables import height_tables, tree_tables
@@ -117,12 +117,9 @@ def render(source, camera: Camera, width: int, height: int, order: str = "front_
 
 def _walk(tables, heights, view, state):
     """The front-to-back walk, by the kernel when kernels are on."""
-    boxes = walk_boxes(state)
     if not kernels_enabled():
-        return walk_front_to_back(tables, heights.key_solid, view, boxes)
-    if boxes is not None:
-        boxes = np.ascontiguousarray(state.things.subtree_boxes())
-    return walk_compiled(tables, heights, view, boxes)
+        return walk_front_to_back(tables, heights.key_solid, view, walk_boxes(state))
+    return walk_compiled(tables, heights, view, thing_boxes(state))
 
 
 def _batch_fill(order, tables, tex, heights, state, view, walk, light):

@@ -30,7 +30,8 @@ from .sprites import sprite_slices
 from .textures import level_resources
 from .walk import walk_front_to_back
 
-__all__ = ["Overlay", "OverlayLayers", "draw_masked", "draw_overlay", "composite", "walk_boxes"]
+__all__ = ["Overlay", "OverlayLayers", "draw_masked", "draw_overlay", "composite", "walk_boxes",
+           "thing_boxes"]
 
 
 class Overlay:
@@ -195,17 +196,26 @@ _BOXES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
 
 def walk_boxes(state):
     """Node boxes for the front-to-back walk grown to hold the drawn things
-    (``Things.subtree_boxes``), as the walk's Python lists; None when no thing is drawn."""
+    (``Things.subtree_boxes``), as the Python walk's lists; None when no thing is drawn."""
+    cached = _drawn_things(state.things)
+    if cached[1] is not None and cached[3] is None:
+        cached[3] = cached[1].tolist()
+    return cached[3]
+
+
+def thing_boxes(state):
+    """``walk_boxes`` as the array the walk kernel takes (None when no thing is drawn)."""
     return _drawn_things(state.things)[1]
 
 
 def _drawn_things(things):
-    """``(version, boxes or None, whether any thing is drawn)``, made once per version."""
+    """``[version, boxes array or None, whether any thing is drawn, boxes as lists (made
+    when first asked for)]``, made once per version."""
     cached = _BOXES.get(things)
     if cached is None or cached[0] != things.version:
         drawn = bool((things.alive & things.drawn).any())
-        cached = _BOXES[things] = (things.version,
-                                   things.subtree_boxes().tolist() if drawn else None, drawn)
+        boxes = np.ascontiguousarray(things.subtree_boxes()) if drawn else None
+        cached = _BOXES[things] = [things.version, boxes, drawn, None]
     return cached
 
 
