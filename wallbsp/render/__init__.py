@@ -27,7 +27,6 @@ columns), ``columns`` (the closed-column list), ``walk``, ``painter``, ``rows``,
 """
 from __future__ import annotations
 
-
 from ..camera import Camera, Projection
 from ..compiled import kernels_enabled
 from ..world import state_of
