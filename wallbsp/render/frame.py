@@ -6,7 +6,7 @@ import io
 import numpy as np
 
 from ..files import write_atomically
-from .rowmajor import copy_rows, labels_rows, rgb_rows
+from .rowmajor import labels_rows, rgb_rows, rows_of
 
 __all__ = ["Frame", "save_ids", "size_table", "KIND_NOTHING", "KIND_WALL", "KIND_FLOOR",
            "KIND_CEILING", "KIND_THING"]
@@ -31,8 +31,7 @@ class Frame:
     ``color`` is ``(height, width, 3)`` uint8, a transposed view of the column-major buffer
     ``color_columns`` ``(width, height, 3)`` that ``pygame.surfarray.blit_array`` takes as is.
     ``kind`` (uint8), ``index`` (int32) and ``depth`` (float32) are ``(height, width)`` and
-    computed on first use by ``layers.columns(name)`` (``(width, height)`` arrays: the numpy
-    layers' are column-major, the compiled fill's transposed views of rows), so a frame that
+    computed on first use by ``layers.columns(name)`` (column-major arrays), so a frame that
     is only looked at pays for none of them.  ``leaves`` are the leaves the front-to-back
     walk entered, in order; ``drawsegs`` the drawn pieces' per-column windows and depths.
     """
@@ -77,7 +76,7 @@ class Frame:
         if name == "labels":
             return labels_rows(self._layer("kind"), self._layer("index"))
         if name in ("kind", "index", "depth"):
-            return copy_rows(self._layer(name))
+            return rows_of(self._layer(name).T)
         raise KeyError(name)
 
     def view_rows(self, names) -> dict:

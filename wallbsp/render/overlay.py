@@ -41,18 +41,6 @@ class Overlay:
 
     def __init__(self, pixel, which, slices):
         self.pixel, self.which, self.slices = pixel, which, slices
-        self._in_rows = None
-
-    def at(self, columns) -> np.ndarray:
-        """The pixels' places in the memory of a ``(width, height)`` layer ``columns``:
-        ``pixel`` when it is column-major, ``row * width + col`` when it is the transposed
-        view of rows (``ravel(order="K")`` is a view of either)."""
-        if columns.flags.c_contiguous:
-            return self.pixel
-        if self._in_rows is None:
-            width, height = columns.shape
-            self._in_rows = (self.pixel % height) * width + self.pixel // height
-        return self._in_rows
 
     @property
     def kind(self):
@@ -143,7 +131,7 @@ class OverlayLayers:
     def columns(self, name):
         values = self.base.columns(name)        # a fresh array each call: written in place
         if len(self.overlay.pixel):
-            values.ravel(order="K")[self.overlay.at(values)] = getattr(self.overlay, name)
+            values.reshape(-1)[self.overlay.pixel] = getattr(self.overlay, name)
         return values
 
     def view_rows(self, colour_columns, names):

@@ -1,8 +1,9 @@
 """A frame's buffers in row order: new C-ordered ``(H, W, ...)`` arrays.
 
 The renderer draws column-major (the layout pygame's ``blit_array`` takes, and runs down a
-column are contiguous stores); programs that learn want rows.  numpy copies a transposed view slowly (a byte or a few a step, strided),
-so the copies are small kernels when kernels are on, and numpy a channel at a time when not.
+column are contiguous stores); programs that learn want rows.  numpy copies a transposed
+view slowly (a byte or a few a step, strided), so the copies are small kernels when kernels
+are on, and numpy a channel at a time when not.
 """
 from __future__ import annotations
 
@@ -10,7 +11,7 @@ import numpy as np
 
 from ..compiled import kernel, kernels_enabled
 
-__all__ = ["rows_of", "rgb_rows", "labels_rows", "copy_rows", "packed_pixels",
+__all__ = ["rows_of", "rgb_rows", "labels_rows", "packed_pixels",
            "transpose_kernel", "rgb_rows_kernel", "label_rows_kernel"]
 
 
@@ -70,7 +71,7 @@ def rgb_rows(color_columns) -> np.ndarray:
 
 def labels_rows(kind, index) -> np.ndarray:
     """``(H, W, 2)`` int32 rows of ``kind`` and ``index`` ``(H, W)`` (the transposed views of
-    the layers' columns, or any layout)."""
+    the layers' columns)."""
     rows = np.empty(kind.shape + (2,), dtype=np.int32)
     if kernels_enabled():
         label_rows_kernel(kind, index.astype(np.int32, copy=False), rows)
@@ -78,12 +79,6 @@ def labels_rows(kind, index) -> np.ndarray:
         rows[..., 0] = kind
         rows[..., 1] = index
     return rows
-
-
-def copy_rows(rows) -> np.ndarray:
-    """A new C-ordered copy of an ``(H, W)`` picture: memory speed when it is C-ordered
-    already, else from its columns (``rows_of``)."""
-    return rows.copy() if rows.flags.c_contiguous else rows_of(rows.T)
 
 
 def packed_pixels(colour_columns):
