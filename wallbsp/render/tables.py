@@ -24,6 +24,11 @@ __all__ = ["TreeTables", "HeightTables", "per_tree", "tree_tables", "height_tabl
            "key_light"]
 
 
+def _listed(array: str) -> cached_property:
+    """A property: the array attribute ``array`` as Python lists, made when first read."""
+    return cached_property(lambda tables: getattr(tables, array).tolist())
+
+
 class TreeTables:
     """Per-tree constants: node and seg lists (Python lists, so per-node work never touches
     numpy scalars; made on first use, the kernels read the same as arrays) and per-key
@@ -97,25 +102,11 @@ class TreeTables:
     def node_segs(self) -> list:
         return self._node_lists[2]
 
-    @cached_property
-    def node_boxes(self) -> list:
-        return self.node_box_array.tolist()
-
-    @cached_property
-    def leaf_inside(self) -> list:
-        return self.leaf_inside_array.tolist()
-
-    @cached_property
-    def seg_ends(self) -> list:
-        return self.seg_xy.tolist()
-
-    @cached_property
-    def seg_flip(self) -> list:
-        return self.seg_flip_array.tolist()
-
-    @cached_property
-    def seg_one_sided(self) -> list:
-        return self.seg_one_sided_array.tolist()
+    node_boxes = _listed("node_box_array")
+    leaf_inside = _listed("leaf_inside_array")
+    seg_ends = _listed("seg_xy")
+    seg_flip = _listed("seg_flip_array")
+    seg_one_sided = _listed("seg_one_sided_array")
 
     def _key_tables(self, level, seg_wall):
         wall = np.repeat(seg_wall, 2)
