@@ -140,7 +140,7 @@ def test_lower_keeps_dead_player_weapon_down():
     assert psp.sy == WEAPONBOTTOM
 
 
-def test_chaingun_flash_follows_the_barrel_and_ammo_overflow_reads_maxammo():
+def test_chaingun_flash_follows_the_barrel():
     play = Stub(rng=(0, 0, 0))
     player = make_player(info.wp_chaingun)
     psp = player.psprites[PS_WEAPON]
@@ -175,3 +175,21 @@ def test_bfg_spray_damage_and_angles():
     aims = [e[1] for e in play.log if e[0] == "aim"]
     assert len(aims) == 40 and aims[0] == (-ANG90 // 2) & 0xFFFFFFFF
     assert aims[39] == (-ANG90 // 2 + ANG90 // 40 * 39) & 0xFFFFFFFF
+
+
+def test_saw_turns_slowly_when_the_target_is_near_ahead():
+    target = Mobj()
+    target.x, target.y = 100 << 16, -(1 << 16)   # a little to the right (clockwise)
+    play = Stub(rng=(0, 5, 5), targets=[target])
+    player = make_player(info.wp_chainsaw)
+    player.mo.angle = 0
+    play.a_saw(player, player.psprites[PS_WEAPON])
+    # angle - 0 wraps above ANG180 but is within ANG90/20 of it: turn by ANG90/20 only
+    assert player.mo.angle == (-(ANG90 // 20)) & 0xFFFFFFFF
+
+
+def test_decrease_ammo_past_numammo_hits_maxammo():
+    from wallbsp.game.playsim.weapons import _decrease_ammo
+    player = make_player()
+    _decrease_ammo(player, info.am_noammo, 1)      # am_noammo = NUMAMMO + 1 → maxammo[1]
+    assert player.maxammo == [200, 49, 300, 50] and player.ammo == [50, 0, 0, 0]
