@@ -1,0 +1,463 @@
+"""``p_maputl.c``: the geometry helpers of the movement code (which side of a line a point
+or a box is on, the opening through a two-sided line), the linking of things into sector
+thing lists and blockmap blocks, the blockmap iterators and the path traversal that
+collects and sorts the lines and things a trace crosses -- with Chocolate Doom's
+emulation of vanilla's overrun of its 128 intercepts.
+
+Per-level state (``init_maputil``): ``opentop``, ``openbottom``, ``openrange``,
+``lowfloor`` (P_LineOpening's results), ``trace`` (the path traversal's divline),
+``intercepts`` (the list P_PathTraverse fills), ``earlyout``.
+"""
+from wallbsp.sim.fixed import FRACBITS, FRACUNIT, aprox_distance, c_abs, fixed_div, \
+    fixed_mul, wrap32
+
+MAPBLOCKUNITS = 128
+MAPBLOCKSIZE = MAPBLOCKUNITS * FRACUNIT
+MAPBLOCKSHIFT = FRACBITS + 7
+MAPBMASK = MAPBLOCKSIZE - 1
+MAPBTOFRAC = MAPBLOCKSHIFT - FRACBITS
+MAXRADIUS = 32 * FRACUNIT
+
+PT_ADDLINES, PT_ADDTHINGS, PT_EARLYOUT = 1, 2, 4
+
+BOXTOP, BOXBOTTOM, BOXLEFT, BOXRIGHT = range(4)
+
+# line flags (doomdata.h)
+ML_BLOCKING, ML_BLOCKMONSTERS, ML_TWOSIDED = 1, 2, 4
+
+# slopetype_t (as in structs)
+ST_HORIZONTAL, ST_VERTICAL, ST_POSITIVE, ST_NEGATIVE = range(4)
+
+# mobj flags used here (p_mobj.h)
+MF_NOSECTOR, MF_NOBLOCKMAP = 8, 16
+
+INT_MAX = 0x7FFFFFFF
+MAXINTERCEPTS_ORIGINAL = 128
+
+_I32_MIN, _I32_MAX = -0x80000000, 0x7FFFFFFF
+
+
+class Divline:
+    """``divline_t``: a point and a direction.  A ``Node`` has the same fields, so a BSP
+    node serves as a divline as it does in C."""
+    __slots__ = ("x", "y", "dx", "dy")
+
+    def __init__(self, x=0, y=0, dx=0, dy=0):
+        self.x, self.y, self.dx, self.dy = x, y, dx, dy
+
+
+class Intercept:
+    """``intercept_t``: a line or thing the trace crosses at ``frac`` (16.16, along the
+    trace).  C's union ``d`` is read as ``in_.d.line`` / ``in_.d.thing`` or directly as
+    ``in_.line`` / ``in_.thing`` (the one that is not the intercepted kind is None)."""
+    __slots__ = ("frac", "isaline", "line", "thing")
+
+    def __init__(self, frac, isaline, line, thing):
+        self.frac, self.isaline, self.line, self.thing = frac, isaline, line, thing
+
+    @property
+    def d(self):
+        return self
+
+
+# Where vanilla's intercepts[] overrun lands: (length in bytes, attribute of Play or None
+# for memory nobody reads back, whether it is an array of 16-bit values).  From Chocolate
+# Doom's intercepts_overrun table (after PrBoom-plus).
+_OVERRUN = (
+    (4, None, False), (4, None, False), (4, None, False),       # ?, earlyout, intercept_p
+    (4, "lowfloor", False), (4, "openbottom", False), (4, "opentop", False),
+    (4, "openrange", False), (4, None, False),
+    (120, None, False),                                         # activeplats
+    (8, None, False), (4, "bulletslope", False),
+    (4, None, False), (4, None, False), (4, None, False),       # swingx, swingy, ?
+    (40, "playerstarts", True),
+    (4, None, False),                                           # blocklinks
+    (4, "bmapwidth", False), (4, None, False),                  # bmapwidth, blockmap
+    (4, "bmaporgx", False), (4, "bmaporgy", False),
+    (4, None, False),                                           # blockmaplump
+    (4, "bmapheight", False),
+)
+_MAPTHING_FIELDS = ("x", "y", "angle", "type", "options")
+
+
+def _short(v):
+    v &= 0xFFFF
+    return v - 0x10000 if v & 0x8000 else v
+
+
+def _w(v):
+    """C's 32-bit wrap of a sum or difference (a comparison first: it rarely wraps)."""
+    return v if _I32_MIN <= v <= _I32_MAX else wrap32(v)
+
+
+class MapUtil:
+    """Mixin: p_maputl.c."""
+
+    def init_maputil(self):
+        self.opentop = self.openbottom = self.openrange = self.lowfloor = 0
+        self.trace = Divline()
+        self.intercepts = []
+        self.earlyout = False
+
+    # ---- geometry -------------------------------------------------------------------
+
+    def p_aprox_distance(self, dx, dy):
+        return aprox_distance(dx, dy)
+
+    def p_point_on_line_side(self, x, y, line):
+        """0 (front) or 1 (back)."""
+        ldx, ldy = line.dx, line.dy
+        v1 = line.v1
+        if not ldx:
+            if x <= v1.x:
+                return int(ldy > 0)
+            return int(ldy < 0)
+        if not ldy:
+            if y <= v1.y:
+                return int(ldx < 0)
+            return int(ldx > 0)
+        dx = _w(x - v1.x)
+        dy = _w(y - v1.y)
+        left = fixed_mul(ldy >> FRACBITS, dx)
+        right = fixed_mul(dy, ldx >> FRACBITS)
+        return 0 if right < left else 1
+
+    def p_box_on_line_side(self, tmbox, ld):
+        """0 or 1 when the whole box is on one side of the (infinite) line, else -1."""
+        st = ld.slopetype
+        if st == ST_HORIZONTAL:
+            y = ld.v1.y
+            p1 = int(tmbox[BOXTOP] > y)
+            p2 = int(tmbox[BOXBOTTOM] > y)
+            if ld.dx < 0:
+                p1 ^= 1
+                p2 ^= 1
+        elif st == ST_VERTICAL:
+            x = ld.v1.x
+            p1 = int(tmbox[BOXRIGHT] < x)
+            p2 = int(tmbox[BOXLEFT] < x)
+            if ld.dy < 0:
+                p1 ^= 1
+                p2 ^= 1
+        elif st == ST_POSITIVE:
+            p1 = self.p_point_on_line_side(tmbox[BOXLEFT], tmbox[BOXTOP], ld)
+            p2 = self.p_point_on_line_side(tmbox[BOXRIGHT], tmbox[BOXBOTTOM], ld)
+        else:
+            p1 = self.p_point_on_line_side(tmbox[BOXRIGHT], tmbox[BOXTOP], ld)
+            p2 = self.p_point_on_line_side(tmbox[BOXLEFT], tmbox[BOXBOTTOM], ld)
+        return p1 if p1 == p2 else -1
+
+    def p_point_on_divline_side(self, x, y, line):
+        """0 or 1."""
+        ldx, ldy = line.dx, line.dy
+        if not ldx:
+            if x <= line.x:
+                return int(ldy > 0)
+            return int(ldy < 0)
+        if not ldy:
+            if y <= line.y:
+                return int(ldx < 0)
+            return int(ldx > 0)
+        dx = _w(x - line.x)
+        dy = _w(y - line.y)
+        # decide quickly by the sign bits (all four are 32-bit values: the xor of them is
+        # negative exactly when C's sign bit test is set)
+        if (ldy ^ ldx ^ dx ^ dy) < 0:
+            return 1 if (ldy ^ dx) < 0 else 0       # (left is negative)
+        left = fixed_mul(ldy >> 8, dx >> 8)
+        right = fixed_mul(dy >> 8, ldx >> 8)
+        return 0 if right < left else 1
+
+    def p_make_divline(self, li, dl):
+        dl.x = li.v1.x
+        dl.y = li.v1.y
+        dl.dx = li.dx
+        dl.dy = li.dy
+
+    def p_intercept_vector(self, v2, v1):
+        """The fraction along v2 where v1 crosses it (0 when parallel)."""
+        den = _w(fixed_mul(v1.dy >> 8, v2.dx) - fixed_mul(v1.dx >> 8, v2.dy))
+        if den == 0:
+            return 0
+        num = _w(fixed_mul(_w(v1.x - v2.x) >> 8, v1.dy)
+                 + fixed_mul(_w(v2.y - v1.y) >> 8, v1.dx))
+        return fixed_div(num, den)
+
+    def p_line_opening(self, linedef):
+        """Sets opentop, openbottom, openrange and lowfloor to the window through a line."""
+        if linedef.sidenum[1] == -1:
+            self.openrange = 0          # single sided line
+            return
+        front = linedef.frontsector
+        back = linedef.backsector
+        if front.ceilingheight < back.ceilingheight:
+            self.opentop = front.ceilingheight
+        else:
+            self.opentop = back.ceilingheight
+        if front.floorheight > back.floorheight:
+            self.openbottom = front.floorheight
+            self.lowfloor = back.floorheight
+        else:
+            self.openbottom = back.floorheight
+            self.lowfloor = front.floorheight
+        self.openrange = self.opentop - self.openbottom
+
+    # ---- thing position ---------------------------------------------------------------
+
+    def p_unset_thing_position(self, thing):
+        """Unlinks a thing from its sector's thing list and its blockmap block."""
+        if not thing.flags & MF_NOSECTOR:
+            if thing.snext:
+                thing.snext.sprev = thing.sprev
+            if thing.sprev:
+                thing.sprev.snext = thing.snext
+            else:
+                thing.subsector.sector.thinglist = thing.snext
+        if not thing.flags & MF_NOBLOCKMAP:
+            if thing.bnext:
+                thing.bnext.bprev = thing.bprev
+            if thing.bprev:
+                thing.bprev.bnext = thing.bnext
+            else:
+                blockx = (thing.x - self.bmaporgx) >> MAPBLOCKSHIFT
+                blocky = (thing.y - self.bmaporgy) >> MAPBLOCKSHIFT
+                if 0 <= blockx < self.bmapwidth and 0 <= blocky < self.bmapheight:
+                    self.blocklinks[blocky * self.bmapwidth + blockx] = thing.bnext
+
+    def p_set_thing_position(self, thing):
+        """Links a thing into the subsector (and sector list) and block of its x, y."""
+        ss = self.r_point_in_subsector(thing.x, thing.y)
+        thing.subsector = ss
+        if not thing.flags & MF_NOSECTOR:
+            sec = ss.sector
+            thing.sprev = None
+            thing.snext = sec.thinglist
+            if sec.thinglist:
+                sec.thinglist.sprev = thing
+            sec.thinglist = thing
+        if not thing.flags & MF_NOBLOCKMAP:
+            blockx = (thing.x - self.bmaporgx) >> MAPBLOCKSHIFT
+            blocky = (thing.y - self.bmaporgy) >> MAPBLOCKSHIFT
+            if 0 <= blockx < self.bmapwidth and 0 <= blocky < self.bmapheight:
+                index = blocky * self.bmapwidth + blockx
+                head = self.blocklinks[index]
+                thing.bprev = None
+                thing.bnext = head
+                if head:
+                    head.bprev = thing
+                self.blocklinks[index] = thing
+            else:
+                thing.bnext = thing.bprev = None       # off the map
+
+    # ---- blockmap iterators -------------------------------------------------------------
+
+    def p_block_lines_iterator(self, x, y, func):
+        """Calls func(line) for each line of block x, y not yet seen this validcount;
+        False as soon as func returns false."""
+        if x < 0 or y < 0 or x >= self.bmapwidth or y >= self.bmapheight:
+            return True
+        lump = self.blockmaplump
+        i = lump[self.blockmap + y * self.bmapwidth + x]
+        lines = self.lines
+        while True:
+            num = lump[i]
+            if num == -1:
+                return True
+            i += 1
+            ld = lines[num]
+            if ld.validcount == self.validcount:
+                continue                # already checked
+            ld.validcount = self.validcount
+            if not func(ld):
+                return False
+
+    def p_block_things_iterator(self, x, y, func):
+        """Calls func(mobj) for each thing linked in block x, y (the next link is read
+        after the call, as C does)."""
+        if x < 0 or y < 0 or x >= self.bmapwidth or y >= self.bmapheight:
+            return True
+        mobj = self.blocklinks[y * self.bmapwidth + x]
+        while mobj:
+            if not func(mobj):
+                return False
+            mobj = mobj.bnext
+        return True
+
+    # ---- intercepts -------------------------------------------------------------------
+
+    def pit_add_line_intercepts(self, ld):
+        """Adds the line if the trace crosses it; False (stop) on an early-out solid
+        line closer than the trace's end."""
+        trace = self.trace
+        if (trace.dx > FRACUNIT * 16 or trace.dy > FRACUNIT * 16
+                or trace.dx < -FRACUNIT * 16 or trace.dy < -FRACUNIT * 16):
+            # avoid precision problems with two routines
+            s1 = self.p_point_on_divline_side(ld.v1.x, ld.v1.y, trace)
+            s2 = self.p_point_on_divline_side(ld.v2.x, ld.v2.y, trace)
+        else:
+            s1 = self.p_point_on_line_side(trace.x, trace.y, ld)
+            s2 = self.p_point_on_line_side(_w(trace.x + trace.dx), _w(trace.y + trace.dy),
+                                           ld)
+        if s1 == s2:
+            return True                 # line isn't crossed
+        dl = Divline(ld.v1.x, ld.v1.y, ld.dx, ld.dy)
+        frac = self.p_intercept_vector(trace, dl)
+        if frac < 0:
+            return True                 # behind source
+        if self.earlyout and frac < FRACUNIT and not ld.backsector:
+            return False                # stop checking
+        self._add_intercept(Intercept(frac, True, ld, None))
+        return True
+
+    def pit_add_thing_intercepts(self, thing):
+        """Adds the thing if the trace crosses its corner-to-corner diagonal."""
+        trace = self.trace
+        tracepositive = (trace.dx ^ trace.dy) > 0
+        r = thing.radius
+        x1 = thing.x - r
+        x2 = thing.x + r
+        if tracepositive:
+            y1 = thing.y + r
+            y2 = thing.y - r
+        else:
+            y1 = thing.y - r
+            y2 = thing.y + r
+        s1 = self.p_point_on_divline_side(x1, y1, trace)
+        s2 = self.p_point_on_divline_side(x2, y2, trace)
+        if s1 == s2:
+            return True                 # line isn't crossed
+        dl = Divline(x1, y1, x2 - x1, y2 - y1)
+        frac = self.p_intercept_vector(trace, dl)
+        if frac < 0:
+            return True                 # behind source
+        self._add_intercept(Intercept(frac, False, None, thing))
+        return True
+
+    def _add_intercept(self, intercept):
+        n = len(self.intercepts)
+        if n > MAXINTERCEPTS_ORIGINAL:
+            self._intercepts_overrun(n, intercept)
+        self.intercepts.append(intercept)
+
+    def _intercepts_overrun(self, num_intercepts, intercept):
+        """Vanilla's intercepts[] had 128 entries; the ones after them overwrote the
+        globals that followed it in memory.  The pointer word of each entry is written as
+        0: it only lands where Chocolate Doom writes nowhere or where the value is read
+        back before use (opentop, playerstarts, swingx)."""
+        location = (num_intercepts - MAXINTERCEPTS_ORIGINAL - 1) * 12
+        self._intercepts_memory_overrun(location, intercept.frac)
+        self._intercepts_memory_overrun(location + 4, int(bool(intercept.isaline)))
+        self._intercepts_memory_overrun(location + 8, 0)
+
+    def _intercepts_memory_overrun(self, location, value):
+        offset = 0
+        for length, name, int16 in _OVERRUN:
+            if offset + length > location:
+                if name is None:
+                    return
+                if int16:
+                    starts = getattr(self, name, None)
+                    index = (location - offset) // 2
+                    for k, v in ((index, value & 0xFFFF), (index + 1, (value >> 16) & 0xFFFF)):
+                        if starts is not None and k < 20 and k // 5 < len(starts):
+                            setattr(starts[k // 5], _MAPTHING_FIELDS[k % 5], _short(v))
+                else:
+                    setattr(self, name, value)
+                return
+            offset += length
+
+    def p_traverse_intercepts(self, func, maxfrac):
+        """Calls func on the intercepts nearest first while within maxfrac; False as
+        soon as func returns false."""
+        intercepts = self.intercepts
+        count = len(intercepts)
+        found = None
+        while count:
+            count -= 1
+            dist = INT_MAX
+            for scan in intercepts:
+                if scan.frac < dist:
+                    dist = scan.frac
+                    found = scan
+            if dist > maxfrac:
+                return True             # checked everything in range
+            if not func(found):
+                return False            # don't bother going farther
+            found.frac = INT_MAX
+        return True
+
+    def p_path_traverse(self, x1, y1, x2, y2, flags, trav):
+        """Traces from x1, y1 to x2, y2 through the blockmap, collecting the lines
+        and/or things crossed, then calls trav on them nearest first."""
+        self.earlyout = (flags & PT_EARLYOUT) != 0
+        self.validcount += 1
+        self.intercepts = []
+        if ((x1 - self.bmaporgx) & (MAPBLOCKSIZE - 1)) == 0:
+            x1 += FRACUNIT              # don't side exactly on a line
+        if ((y1 - self.bmaporgy) & (MAPBLOCKSIZE - 1)) == 0:
+            y1 += FRACUNIT
+        trace = self.trace
+        trace.x = x1
+        trace.y = y1
+        trace.dx = _w(x2 - x1)
+        trace.dy = _w(y2 - y1)
+
+        x1 = _w(x1 - self.bmaporgx)
+        y1 = _w(y1 - self.bmaporgy)
+        xt1 = x1 >> MAPBLOCKSHIFT
+        yt1 = y1 >> MAPBLOCKSHIFT
+        x2 = _w(x2 - self.bmaporgx)
+        y2 = _w(y2 - self.bmaporgy)
+        xt2 = x2 >> MAPBLOCKSHIFT
+        yt2 = y2 >> MAPBLOCKSHIFT
+
+        if xt2 > xt1:
+            mapxstep = 1
+            partial = FRACUNIT - ((x1 >> MAPBTOFRAC) & (FRACUNIT - 1))
+            ystep = fixed_div(_w(y2 - y1), c_abs(x2 - x1))
+        elif xt2 < xt1:
+            mapxstep = -1
+            partial = (x1 >> MAPBTOFRAC) & (FRACUNIT - 1)
+            ystep = fixed_div(_w(y2 - y1), c_abs(x2 - x1))
+        else:
+            mapxstep = 0
+            partial = FRACUNIT
+            ystep = 256 * FRACUNIT
+        yintercept = _w((y1 >> MAPBTOFRAC) + fixed_mul(partial, ystep))
+
+        if yt2 > yt1:
+            mapystep = 1
+            partial = FRACUNIT - ((y1 >> MAPBTOFRAC) & (FRACUNIT - 1))
+            xstep = fixed_div(_w(x2 - x1), c_abs(y2 - y1))
+        elif yt2 < yt1:
+            mapystep = -1
+            partial = (y1 >> MAPBTOFRAC) & (FRACUNIT - 1)
+            xstep = fixed_div(_w(x2 - x1), c_abs(y2 - y1))
+        else:
+            mapystep = 0
+            partial = FRACUNIT
+            xstep = 256 * FRACUNIT
+        xintercept = _w((x1 >> MAPBTOFRAC) + fixed_mul(partial, xstep))
+
+        # Step through map blocks; the count guards against a round-off error skipping
+        # the break.
+        mapx, mapy = xt1, yt1
+        for _ in range(64):
+            if flags & PT_ADDLINES:
+                if not self.p_block_lines_iterator(mapx, mapy,
+                                                   self.pit_add_line_intercepts):
+                    return False        # early out
+            if flags & PT_ADDTHINGS:
+                if not self.p_block_things_iterator(mapx, mapy,
+                                                    self.pit_add_thing_intercepts):
+                    return False
+            if mapx == xt2 and mapy == yt2:
+                break
+            if (yintercept >> FRACBITS) == mapy:
+                yintercept = _w(yintercept + ystep)
+                mapx += mapxstep
+            elif (xintercept >> FRACBITS) == mapx:
+                xintercept = _w(xintercept + xstep)
+                mapy += mapystep
+        # go through the sorted list
+        return self.p_traverse_intercepts(trav, FRACUNIT)
