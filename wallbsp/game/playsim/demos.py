@@ -1,0 +1,196 @@
+"""Vanilla DOOM demos (``.lmp``, version 1.9): the game settings and every tic's commands.
+
+A demo is a 13-byte header — version (109), skill (0-4), episode, map, deathmatch, respawn,
+fast, nomonsters, console player, then one byte per player slot telling whether that player
+is in the game — followed by 4 bytes a tic for each player in the game (forwardmove and
+sidemove as signed bytes, the high byte of angleturn, buttons), and 0x80 where the next tic
+would start (``G_ReadDemoTiccmd`` stops there).
+
+``read_demo(path)`` reads a ``.lmp`` file, ``wad_demo(wad_path, "DEMO1")`` a lump of a WAD,
+``parse_demo(data, source)`` bytes.  Anything else — truncated, not a demo, another version —
+raises ``DemoError`` (a ``ValueError``) naming the source and the byte offset.
+"""
+import os
+import struct
+from dataclasses import dataclass, field
+
+from .structs import MAXPLAYERS, TicCmd
+
+DEMO_VERSION = 109                  # v1.9: the only format the port plays
+DEMOMARKER = 0x80
+HEADER_SIZE = 13
+TIC_SIZE = 4
+MAX_DEMO_BYTES = 64 << 20
+
+
+class DemoError(ValueError):
+    """A demo that cannot be played: the message names the file and the byte offset."""
+
+
+@dataclass
+class DemoTic:
+    """One player's command of one tic, as the demo stores it."""
+    forwardmove: int                # -128..127
+    sidemove: int                   # -128..127
+    angleturn: int                  # the stored byte << 8, as a signed 16-bit value
+    buttons: int                    # 0..255
+
+    def ticcmd(self) -> TicCmd:
+        return TicCmd(self.forwardmove, self.sidemove, self.angleturn, self.buttons)
+
+    def copy_to(self, cmd: TicCmd) -> None:
+        """What ``G_ReadDemoTiccmd`` writes into a player's ``cmd`` (the rest keeps its
+        value: consistancy and chatchar come from the net command, zero here)."""
+        cmd.forwardmove, cmd.sidemove = self.forwardmove, self.sidemove
+        cmd.angleturn, cmd.buttons = self.angleturn, self.buttons
+
+
+@dataclass
+class Demo:
+    skill: int
+    episode: int
+    map: int
+    deathmatch: int = 0
+    respawnparm: bool = False
+    fastparm: bool = False
+    nomonsters: bool = False
+    consoleplayer: int = 0
+    playeringame: list = field(default_factory=lambda: [True, False, False, False])
+    tics: list = field(default_factory=list)     # tics[n][player]: DemoTic (players in game)
+    source: str = "<demo>"
+    version: int = DEMO_VERSION
+
+    @property
+    def players(self) -> list:
+        """The indices of the players in the game, in the order their bytes come."""
+        return [i for i in range(MAXPLAYERS) if self.playeringame[i]]
+
+
+def _signed8(b: int) -> int:
+    return b - 256 if b >= 128 else b
+
+
+def _signed16(v: int) -> int:
+    v &= 0xFFFF
+    return v - 0x10000 if v >= 0x8000 else v
+
+
+def parse_demo(data: bytes, source: str = "<demo>") -> Demo:
+    """The demo in ``data``; ``source`` names it in messages."""
+    data = bytes(data)
+    if len(data) < HEADER_SIZE:
+        raise DemoError(f"{source}: byte {len(data)}: truncated header ({len(data)} bytes, a "
+                        f"v1.9 demo's header is {HEADER_SIZE})")
+    version = data[0]
+    if version != DEMO_VERSION:
+        if version <= 4:
+            what = "a v1.0-v1.2 demo"
+        elif 104 <= version <= 111:
+            what = f"a v{version // 100}.{version % 100} demo"
+        else:
+            what = "not a DOOM demo"
+        raise DemoError(f"{source}: byte 0: version {version} ({what}); only v1.9 demos "
+                        f"(version {DEMO_VERSION}) are played")
+    skill, episode, gamemap, deathmatch, respawn, fast, nomonsters, console = data[1:9]
+    if skill > 4:
+        raise DemoError(f"{source}: byte 1: skill {skill} is not 0-4; not a DOOM demo")
+    ingame = [bool(b) for b in data[9:13]]
+    for i, b in enumerate(data[9:13]):
+        if b > 1:
+            raise DemoError(f"{source}: byte {9 + i}: player-present flag {b} is not 0 or 1; "
+                            f"not a DOOM demo")
+    if not any(ingame):
+        raise DemoError(f"{source}: bytes 9-12: no player in the game; not a DOOM demo")
+    if console >= MAXPLAYERS or not ingame[console]:
+        raise DemoError(f"{source}: byte 8: console player {console} is not in the game")
+    demo = Demo(skill, episode, gamemap, deathmatch, bool(respawn), bool(fast),
+                bool(nomonsters), console, ingame, [], source)
+    count = sum(ingame)
+    pos = HEADER_SIZE
+    while True:
+        if pos >= len(data):
+            raise DemoError(f"{source}: byte {pos}: truncated: the demo ends without its end "
+                            f"marker (0x80) after {len(demo.tics)} tics")
+        if data[pos] == DEMOMARKER:
+            break
+        if pos + TIC_SIZE * count > len(data):
+            raise DemoError(f"{source}: byte {pos}: truncated tic {len(demo.tics)} "
+                            f"({len(data) - pos} bytes left, a tic is {TIC_SIZE * count})")
+        row = []
+        for _ in range(count):
+            fwd, side, turn, buttons = data[pos:pos + TIC_SIZE]
+            row.append(DemoTic(_signed8(fwd), _signed8(side), _signed16(turn << 8), buttons))
+            pos += TIC_SIZE
+        demo.tics.append(row)
+    return demo
+
+
+def read_demo(path) -> Demo:
+    """The demo in the ``.lmp`` file at ``path``."""
+    label = os.fspath(path)
+    try:
+        with open(path, "rb") as f:
+            data = f.read(MAX_DEMO_BYTES + 1)
+    except OSError as e:
+        raise DemoError(f"{label}: byte 0: cannot read: {e.strerror or e}") from None
+    if len(data) > MAX_DEMO_BYTES:
+        raise DemoError(f"{label}: byte {MAX_DEMO_BYTES}: larger than {MAX_DEMO_BYTES} bytes; "
+                        f"not a DOOM demo")
+    return parse_demo(data, label)
+
+
+# -- WAD lumps -------------------------------------------------------------------------------
+
+def wad_entries(wad_path) -> list:
+    """The WAD's directory in order: ``(name, offset, size)`` with names upper case."""
+    label = os.fspath(wad_path)
+    with open(wad_path, "rb") as f:
+        head = f.read(12)
+        if len(head) < 12 or head[:4] not in (b"IWAD", b"PWAD"):
+            raise DemoError(f"{label}: byte 0: not a WAD file")
+        count, offset = struct.unpack("<ii", head[4:])
+        f.seek(max(offset, 0))
+        raw = f.read(16 * max(count, 0))
+        if count < 0 or len(raw) != 16 * count:
+            raise DemoError(f"{label}: byte {offset}: truncated WAD directory")
+    entries = []
+    for i in range(count):
+        pos, size, name = struct.unpack_from("<ii8s", raw, 16 * i)
+        entries.append((name.split(b"\0", 1)[0].decode("latin-1").upper(), pos, size))
+    return entries
+
+
+def wad_directory(wad_path) -> dict:
+    """Name (upper case) -> (offset, size) of the LAST lump of each name, as
+    ``W_GetNumForName`` finds it."""
+    return {name: (pos, size) for name, pos, size in wad_entries(wad_path)}
+
+
+def wad_lump(wad_path, name: str):
+    """The bytes of the last lump called ``name`` in the WAD, or None."""
+    entry = wad_directory(wad_path).get(name.upper())
+    if entry is None:
+        return None
+    with open(wad_path, "rb") as f:
+        f.seek(entry[0])
+        data = f.read(entry[1])
+    if len(data) != entry[1]:
+        raise DemoError(f"{os.fspath(wad_path)}: byte {entry[0]}: lump {name} is truncated")
+    return data
+
+
+def wad_demo(wad_path, lump: str = "DEMO1") -> Demo:
+    """The demo in lump ``lump`` (DEMO1..DEMO4) of the WAD at ``wad_path``."""
+    data = wad_lump(wad_path, lump)
+    label = f"{os.fspath(wad_path)}:{lump.upper()}"
+    if data is None:
+        raise DemoError(f"{label}: byte 0: the WAD has no lump {lump.upper()}")
+    return parse_demo(data, label)
+
+
+def load_demo(wad_path, demo) -> Demo:
+    """``demo`` as a lump name of the WAD (``DEMO1``, ``demo2``) or a ``.lmp`` path."""
+    text = os.fspath(demo)
+    if not os.path.exists(text) and text.upper().startswith("DEMO") and len(text) <= 8:
+        return wad_demo(wad_path, text)
+    return read_demo(text)

@@ -1,0 +1,432 @@
+"""``g_game.c``, the part that moves the simulation: starting a game (``G_InitNew``), loading
+a level (``G_DoLoadLevel`` and ``P_SetupLevel``'s order of work), one game tic
+(``G_Ticker``: reborns, game actions, the tic commands, then the play, intermission or
+finale ticker), the players between levels (``G_PlayerReborn``, ``G_PlayerFinishLevel``) and
+the exits (``G_ExitLevel``, ``G_SecretExitLevel``, ``G_DoCompleted``, ``G_WorldDone``).
+
+Game-wide state (not per level) is set by ``g_init(wad_path)``, which ``Play.__init__``
+calls: the WAD, its game mode and executable version, the players, the random numbers.
+The intermission's and the finale's timing (how many tics of a demo they consume, and the
+buttons they latch into ``attackdown``/``usedown``) are in ``intermission.py``.
+
+Sounds are not played: ``s_start_sound``/``s_stop_sound`` only count calls.
+"""
+import struct
+
+from wallbsp.sim import info
+from wallbsp.sim.fixed import FRACBITS, FRACUNIT
+from wallbsp.sim.rng import Random
+
+from .demos import DemoError, wad_entries
+from .structs import (COMMERCIAL, EXE_DOOM_1_9, EXE_ULTIMATE, MAXPLAYERS, NUMAMMO, PST_DEAD,
+                      PST_LIVE, PST_REBORN, REGISTERED, RETAIL, SHAREWARE, BT_SPECIAL,
+                      MapThing, Player)
+
+# gamestate_t and gameaction_t (d_event.h / doomdef.h)
+GS_LEVEL, GS_INTERMISSION, GS_FINALE, GS_DEMOSCREEN = range(4)
+(GA_NOTHING, GA_LOADLEVEL, GA_NEWGAME, GA_LOADGAME, GA_SAVEGAME, GA_PLAYDEMO, GA_COMPLETED,
+ GA_VICTORY, GA_WORLDDONE, GA_SCREENSHOT) = range(10)
+SK_BABY, SK_EASY, SK_MEDIUM, SK_HARD, SK_NIGHTMARE = range(5)
+BTS_PAUSE, BTS_SAVEGAME, BTS_SPECIALMASK = 1, 2, 3
+
+MAXAMMO = (200, 50, 300, 50)            # p_inter.c's maxammo[]
+INITIAL_HEALTH, INITIAL_BULLETS = 100, 50
+MAPTHING = struct.Struct("<5h")           # x, y, angle, type, options
+# Doom II's monsters: a Doom 1 executable stops loading THINGS at the first of them
+DOOM2_ONLY = frozenset((68, 64, 88, 89, 69, 67, 71, 65, 66, 84))
+
+_fast_monsters = False                    # whether info's tables hold the fast values now
+
+
+def set_fast_monsters(fast: bool) -> None:
+    """G_InitNew's fast monsters (skill 5 or -fast): demon states twice as quick and faster
+    fireballs.  DOOM changes its global tables, and so does this: info.STATES and
+    info.MOBJINFO are rebound for every Play of the process (the records themselves are
+    tuples).  Unlike vanilla, a second fast game does not halve the tics again."""
+    global _fast_monsters
+    if fast == _fast_monsters:
+        return
+    states = list(info.STATES)
+    for i in range(info.S_SARG_RUN1, info.S_SARG_PAIN2 + 1):
+        tics = states[i].tics
+        states[i] = states[i]._replace(tics=tics >> 1 if fast else tics << 1)
+    mobjinfo = list(info.MOBJINFO)
+    speeds = ((info.MT_BRUISERSHOT, 20, 15), (info.MT_HEADSHOT, 20, 10),
+              (info.MT_TROOPSHOT, 20, 10))
+    for mt, quick, normal in speeds:
+        mobjinfo[mt] = mobjinfo[mt]._replace(speed=(quick if fast else normal) * FRACUNIT)
+    info.STATES, info.MOBJINFO = tuple(states), tuple(mobjinfo)
+    _fast_monsters = fast
+
+
+def game_mode(names) -> tuple:
+    """(gamemode, gameversion) as Chocolate Doom picks them for an IWAD with these lumps:
+    Doom II's maps → commercial, v1.9; E4 → retail, Ultimate Doom; E2/E3 → registered."""
+    if "MAP01" in names:
+        return COMMERCIAL, EXE_DOOM_1_9
+    if "E4M1" in names:
+        return RETAIL, EXE_ULTIMATE
+    if "E3M1" in names or "E2M1" in names:
+        return REGISTERED, EXE_DOOM_1_9
+    return SHAREWARE, EXE_DOOM_1_9
+
+
+def map_lump_name(gamemode, episode, gamemap) -> str:
+    if gamemode == COMMERCIAL:
+        return "MAP%02d" % gamemap
+    return "E%dM%d" % (episode, gamemap)
+
+
+class Game:
+    # -- the game, once -----------------------------------------------------------------------
+    def g_init(self, wad_path):
+        """Game-wide state: the WAD, the mode, the players, the random numbers."""
+        self.wad_path = wad_path
+        self.wad_entries = wad_entries(wad_path)
+        self.wad_dir = {name: (pos, size) for name, pos, size in self.wad_entries}
+        self.gamemode, self.gameversion = game_mode(self.wad_dir)
+        self.rng = Random()
+        self.players = [Player() for _ in range(MAXPLAYERS)]
+        self.playeringame = [False] * MAXPLAYERS
+        self.consoleplayer = 0
+        self.gameskill = SK_BABY            # C's zeroed global until G_InitNew
+        self.gameepisode = self.gamemap = 1
+        self.deathmatch = 0
+        self.netgame = self.netdemo = False
+        self.nomonsters = self.respawnparm = self.fastparm = False
+        self.respawnmonsters = False
+        self.demoplayback = False
+        self.paused = False
+        self.gametic = 0
+        self.gamestate = GS_DEMOSCREEN
+        self.oldgamestate = -1
+        self.gameaction = GA_NOTHING
+        self.secretexit = False
+        self.leveltime = 0
+        self.totalkills = self.totalitems = self.totalsecret = 0
+        self.bodyqueslot = 0
+        self.bodyque = [None] * 32
+        self.playerstarts = [MapThing() for _ in range(MAXPLAYERS)]
+        self.playerstartsingame = [False] * MAXPLAYERS
+        self.wminfo = None
+        self.sounds_started = self.sounds_stopped = 0
+        self._texture_heights = None
+        self.init_intermission()
+        self.init_level_modules()
+
+    def init_level_modules(self):
+        """Every mixin's ``init_<module>()``: per-level state, reset before a level loads."""
+        for name in sorted(dir(type(self))):
+            if name.startswith("init_") and name not in ("init_level_modules",
+                                                         "init_intermission"):
+                getattr(self, name)()
+
+    def w_lump(self, name):
+        """The bytes of the last lump called ``name`` (W_CacheLumpName), or None."""
+        entry = self.wad_dir.get(name.upper())
+        if entry is None:
+            return None
+        with open(self.wad_path, "rb") as f:
+            f.seek(entry[0])
+            return f.read(entry[1])
+
+    # -- sound: not played ----------------------------------------------------------------
+    def s_start_sound(self, origin, sfx_id):
+        self.sounds_started += 1
+
+    def s_stop_sound(self, origin):
+        self.sounds_stopped += 1
+
+    # -- textures ------------------------------------------------------------------------
+    def texture_height(self, name):
+        """``textureheight[R_TextureNumForName(name)]``: the wall texture's height in fixed
+        point; "-" is texture 0, as in DOOM."""
+        if self._texture_heights is None:
+            self._texture_heights = self._read_texture_heights()
+        heights, first = self._texture_heights
+        if name[:1] == "-":
+            return first
+        try:
+            return heights[name.upper()]
+        except KeyError:
+            raise KeyError(f"R_TextureNumForName: {name} not found") from None
+
+    def _read_texture_heights(self):
+        heights, first = {}, None
+        for lump in ("TEXTURE1", "TEXTURE2"):
+            raw = self.w_lump(lump)
+            if raw is None:
+                continue
+            count = struct.unpack_from("<i", raw, 0)[0]
+            for i in range(count):
+                offset = struct.unpack_from("<i", raw, 4 + 4 * i)[0]
+                name = raw[offset:offset + 8].split(b"\0", 1)[0].decode("latin-1").upper()
+                height = struct.unpack_from("<h", raw, offset + 14)[0] << FRACBITS
+                if first is None:
+                    first = height
+                heights.setdefault(name, height)   # the first of a name is found
+        return heights, first
+
+    # -- starting ----------------------------------------------------------------------------
+    def g_do_play_demo(self, demo):
+        """G_DoPlayDemo: the demo's settings, then a new game."""
+        self.gameaction = GA_NOTHING
+        self.deathmatch = demo.deathmatch
+        self.respawnparm = demo.respawnparm
+        self.fastparm = demo.fastparm
+        self.nomonsters = demo.nomonsters
+        self.consoleplayer = demo.consoleplayer
+        self.playeringame = list(demo.playeringame)
+        if self.playeringame[1]:
+            self.netgame = self.netdemo = True
+        self.g_init_new(demo.skill, demo.episode, demo.map)
+        self.demoplayback = True
+
+    def g_init_new(self, skill, episode, gamemap):
+        self.paused = False
+        skill = min(skill, SK_NIGHTMARE)
+        if self.gameversion >= EXE_ULTIMATE:
+            if episode == 0:
+                episode = 4
+        else:
+            episode = min(max(episode, 1), 3)
+        if episode > 1 and self.gamemode == SHAREWARE:
+            episode = 1
+        gamemap = max(gamemap, 1)
+        if gamemap > 9 and self.gamemode != COMMERCIAL:
+            gamemap = 9
+        self.rng.clear()
+        self.respawnmonsters = skill == SK_NIGHTMARE or self.respawnparm
+        set_fast_monsters(self.fastparm or skill == SK_NIGHTMARE)
+        for p in self.players:
+            p.playerstate = PST_REBORN
+        self.demoplayback = False
+        self.gameepisode, self.gamemap, self.gameskill = episode, gamemap, skill
+        self.g_do_load_level()
+
+    def g_do_load_level(self):
+        self.gamestate = GS_LEVEL
+        for i, p in enumerate(self.players):
+            if self.playeringame[i] and p.playerstate == PST_DEAD:
+                p.playerstate = PST_REBORN
+            p.frags = [0] * MAXPLAYERS
+        self.p_setup_level(self.gameepisode, self.gamemap, 0, self.gameskill)
+        self.gameaction = GA_NOTHING
+
+    def p_setup_level(self, episode, gamemap, playermask, skill):
+        """P_SetupLevel's order of work; the map lumps themselves are mapload's."""
+        self.totalkills = self.totalitems = self.totalsecret = 0
+        for p in self.players:
+            p.killcount = p.secretcount = p.itemcount = 0
+        self.players[self.consoleplayer].viewz = 1
+        self.init_level_modules()
+        self.p_init_thinkers()
+        self.leveltime = 0
+        self.mapname = map_lump_name(self.gamemode, episode, gamemap)
+        if self.mapname not in self.wad_dir:
+            raise DemoError(f"{self.wad_path}: byte 0: the WAD has no map {self.mapname}")
+        self.p_setup_level_geometry(self.mapname)
+        self.bodyqueslot = 0
+        self.deathmatchstarts = []
+        self.p_load_things()
+        if self.deathmatch:
+            for i, p in enumerate(self.players):
+                if self.playeringame[i]:
+                    p.mo = None
+                    self.g_death_match_spawn_player(i)
+        self.iquehead = self.iquetail = 0
+        self.p_spawn_specials()
+
+    def map_things(self):
+        """The map's THINGS as ``MapThing`` records, in the lump's order: the lump after
+        the map's marker (the last marker of that name, as W_GetNumForName finds)."""
+        names = [e[0] for e in self.wad_entries]
+        marker = len(names) - 1 - names[::-1].index(self.mapname)
+        name, pos, size = self.wad_entries[marker + 1] if marker + 1 < len(names) else \
+            ("", 0, 0)
+        if name != "THINGS":
+            raise DemoError(f"{self.wad_path}: byte 0: map {self.mapname} has no THINGS "
+                            f"lump after its marker")
+        with open(self.wad_path, "rb") as f:
+            f.seek(pos)
+            things = f.read(size)
+        return [MapThing(*MAPTHING.unpack_from(things, k))
+                for k in range(0, len(things) - MAPTHING.size + 1, MAPTHING.size)]
+
+    def p_load_things(self):
+        for mt in self.map_things():
+            if self.gamemode != COMMERCIAL and mt.type in DOOM2_ONLY:
+                break               # vanilla's "break", not "continue": the rest are lost
+            self.p_spawn_map_thing(mt)
+        if not self.deathmatch:
+            for i in range(MAXPLAYERS):
+                if self.playeringame[i] and not self.playerstartsingame[i]:
+                    raise DemoError(f"{self.wad_path}: byte 0: P_LoadThings: player {i + 1} "
+                                    f"start missing in {self.mapname}")
+                self.playerstartsingame[i] = False
+
+    # -- players -----------------------------------------------------------------------------
+    def g_player_reborn(self, player):
+        """Almost everything of player ``player`` cleared, as after a death; the frags and
+        the level's counts survive.  The Player object stays (mobjs hold it)."""
+        p = self.players[player]
+        frags, kills, items, secrets = p.frags, p.killcount, p.itemcount, p.secretcount
+        fresh = Player()
+        for slot in Player.__slots__:
+            setattr(p, slot, getattr(fresh, slot))
+        p.frags, p.killcount, p.itemcount, p.secretcount = frags, kills, items, secrets
+        p.usedown = p.attackdown = True     # don't do anything immediately
+        p.playerstate = PST_LIVE
+        p.health = INITIAL_HEALTH
+        p.readyweapon = p.pendingweapon = info.wp_pistol
+        p.weaponowned[info.wp_fist] = True
+        p.weaponowned[info.wp_pistol] = True
+        p.ammo[info.am_clip] = INITIAL_BULLETS
+        p.maxammo = list(MAXAMMO[:NUMAMMO])
+
+    def g_player_finish_level(self, player):
+        p = self.players[player]
+        p.powers = [0] * len(p.powers)
+        p.cards = [False] * len(p.cards)
+        p.mo.flags &= ~info.MF_SHADOW       # cancel invisibility
+        p.extralight = 0                    # cancel gun flashes
+        p.fixedcolormap = 0                 # cancel ir goggles
+        p.damagecount = 0
+        p.bonuscount = 0
+
+    def g_do_reborn(self, playernum):
+        if not self.netgame:
+            self.gameaction = GA_LOADLEVEL  # reload the level from scratch
+            return
+        raise NotImplementedError("G_DoReborn: net games are not played")
+
+    def g_death_match_spawn_player(self, playernum):
+        raise NotImplementedError("G_DeathMatchSpawnPlayer: deathmatch is not played")
+
+    # -- exits -------------------------------------------------------------------------------
+    def g_exit_level(self):
+        self.secretexit = False
+        self.gameaction = GA_COMPLETED
+
+    def g_secret_exit_level(self):
+        # no secret exit without the Wolfenstein levels
+        self.secretexit = not (self.gamemode == COMMERCIAL and "MAP31" not in self.wad_dir)
+        self.gameaction = GA_COMPLETED
+
+    # -- one tic -----------------------------------------------------------------------------
+    def g_ticker(self, commands):
+        """One game tic.  ``commands``: the tic's command of each player in the game, in
+        player order (objects with ``copy_to(cmd)``, e.g. a demo's ``DemoTic``).  True when
+        the play ticker ran the whole tic (a trace line is due)."""
+        for i, p in enumerate(self.players):
+            if self.playeringame[i] and p.playerstate == PST_REBORN:
+                self.g_do_reborn(i)
+        while self.gameaction != GA_NOTHING:
+            self._do_game_action()
+        given = iter(commands)
+        for i, p in enumerate(self.players):
+            if self.playeringame[i]:
+                next(given).copy_to(p.cmd)
+        self._special_buttons()
+        if self.oldgamestate == GS_INTERMISSION and self.gamestate != GS_INTERMISSION:
+            self.wi_end()
+        self.oldgamestate = self.gamestate
+        ran = False
+        if self.gamestate == GS_LEVEL:
+            ran = self.p_ticker()
+        elif self.gamestate == GS_INTERMISSION:
+            self.wi_ticker()
+        elif self.gamestate == GS_FINALE:
+            self.f_ticker()
+        self.gametic += 1
+        return bool(ran)
+
+    def _do_game_action(self):
+        action = self.gameaction
+        if action == GA_LOADLEVEL:
+            self.g_do_load_level()
+        elif action == GA_COMPLETED:
+            self.g_do_completed()
+        elif action == GA_VICTORY:
+            self.f_start_finale()
+        elif action == GA_WORLDDONE:
+            self.g_do_world_done()
+        else:                               # saving, screenshots: nothing to simulate
+            self.gameaction = GA_NOTHING
+
+    def _special_buttons(self):
+        for i, p in enumerate(self.players):
+            if self.playeringame[i] and p.cmd.buttons & BT_SPECIAL:
+                kind = p.cmd.buttons & BTS_SPECIALMASK
+                if kind == BTS_PAUSE:
+                    self.paused = not self.paused
+                elif kind == BTS_SAVEGAME:
+                    self.gameaction = GA_SAVEGAME
+
+    # -- between levels ------------------------------------------------------------------------
+    def g_do_completed(self):
+        self.gameaction = GA_NOTHING
+        for i in range(MAXPLAYERS):
+            if self.playeringame[i]:
+                self.g_player_finish_level(i)
+        if self.gamemode != COMMERCIAL:
+            if self.gamemap == 8:
+                self.gameaction = GA_VICTORY
+                return
+            if self.gamemap == 9:
+                for p in self.players:
+                    p.didsecret = True
+        self.wminfo = self._wminfo()
+        self.gamestate = GS_INTERMISSION
+        self.wi_start(self.wminfo)
+
+    def _wminfo(self):
+        """wbstartstruct_t's fields that the intermission's timing reads."""
+        gamemap, episode = self.gamemap, self.gameepisode
+        if self.gamemode == COMMERCIAL:
+            if self.secretexit:
+                nxt = {15: 30, 31: 31}.get(gamemap, gamemap)   # C leaves it unset otherwise
+            else:
+                nxt = 15 if gamemap in (31, 32) else gamemap
+            partime = 35 * CPARS[gamemap - 1] if 1 <= gamemap <= 32 else 0
+        else:
+            if self.secretexit:
+                nxt = 8
+            elif gamemap == 9:
+                nxt = {1: 3, 2: 5, 3: 6, 4: 2}[episode]
+            else:
+                nxt = gamemap
+            if episode < 4:
+                partime = 35 * PARS[episode][gamemap]
+            else:
+                partime = 35 * CPARS[gamemap]   # E4 has no par times: cpars[] is read
+        p = self.players[self.consoleplayer]
+        return {"next": nxt, "didsecret": p.didsecret, "maxkills": self.totalkills,
+                "maxitems": self.totalitems, "maxsecret": self.totalsecret,
+                "partime": partime, "skills": p.killcount, "sitems": p.itemcount,
+                "ssecret": p.secretcount, "stime": self.leveltime}
+
+    def g_world_done(self):
+        self.gameaction = GA_WORLDDONE
+        if self.secretexit:
+            self.players[self.consoleplayer].didsecret = True
+        if self.gamemode == COMMERCIAL:
+            gamemap = self.gamemap
+            if gamemap in (6, 11, 20, 30) or (gamemap in (15, 31) and self.secretexit):
+                self.f_start_finale()
+
+    def g_do_world_done(self):
+        self.gamestate = GS_LEVEL
+        self.gamemap = self.wminfo["next"] + 1
+        self.g_do_load_level()
+        self.gameaction = GA_NOTHING
+
+
+PARS = ((0,) * 10,
+        (0, 30, 75, 120, 90, 165, 180, 180, 30, 165),
+        (0, 90, 90, 90, 120, 90, 360, 240, 30, 170),
+        (0, 90, 45, 90, 150, 90, 90, 165, 30, 135))
+CPARS = (30, 90, 120, 120, 90, 150, 120, 120, 270, 90,
+         210, 150, 150, 150, 210, 150, 420, 150, 210, 150,
+         240, 150, 180, 150, 150, 300, 330, 420, 300, 180,
+         120, 30)

@@ -1,0 +1,79 @@
+"""``p_tick.c``: the thinker list and one tic of the play simulation (``P_Ticker``).
+
+The thinker list is a doubly linked ring through a sentinel, ``self.thinkercap``, in the order
+thinkers were added: that order is the order everything moves in each tic, so it is kept as
+a linked list exactly as DOOM keeps it.
+
+Contract for the other modules: a thinker's ``func`` is an unbound ``Play`` method that the
+walk calls as ``th.func(self, th)``.  ``p_remove_thinker`` sets ``func = None`` (C's -1) and the
+walk unlinks the thinker when it reaches it, as ``P_RunThinkers`` frees it; a thinker whose
+``func`` is another false value (``False``, C's NULL: a platform or ceiling in stasis) stays in
+the list and does nothing.
+
+Per-level state: ``init_ticker()`` (the empty list; ``p_init_thinkers`` empties it again).
+"""
+from .structs import Thinker
+
+
+class Ticker:
+    def init_ticker(self):
+        self.thinkercap = Thinker()
+        self.p_init_thinkers()
+
+    # -- the list ---------------------------------------------------------------------------
+    def p_init_thinkers(self):
+        cap = self.thinkercap
+        cap.prev = cap.next = cap
+
+    def p_add_thinker(self, thinker):
+        """Appends ``thinker`` at the end of the list (it runs after every thinker there)."""
+        cap = self.thinkercap
+        cap.prev.next = thinker
+        thinker.next = cap
+        thinker.prev = cap.prev
+        cap.prev = thinker
+
+    def p_remove_thinker(self, thinker):
+        """Marks ``thinker`` removed; it leaves the list when the walk next reaches it."""
+        thinker.func = None
+
+    def thinkers(self):
+        """The thinkers in list order (removed ones not yet unlinked included)."""
+        cap = self.thinkercap
+        th = cap.next
+        while th is not cap:
+            nxt = th.next
+            yield th
+            th = nxt
+
+    def p_run_thinkers(self):
+        cap = self.thinkercap
+        current = cap.next
+        while current is not cap:
+            func = current.func
+            if func is None:
+                # time to remove it: its own links still point into the list
+                following = current.next
+                current.next.prev = current.prev
+                current.prev.next = current.next
+            else:
+                if func:
+                    func(self, current)
+                # read after the call: the thinker may have added others behind itself
+                following = current.next
+            current = following
+
+    # -- the tic ----------------------------------------------------------------------------
+    def p_ticker(self):
+        """One tic of play: the players, every thinker, the specials, then ``leveltime``.
+        False when paused (nothing ran)."""
+        if self.paused:
+            return False
+        for i, player in enumerate(self.players):
+            if self.playeringame[i]:
+                self.p_player_think(player)
+        self.p_run_thinkers()
+        self.p_update_specials()
+        self.p_respawn_specials()
+        self.leveltime += 1
+        return True
