@@ -29,7 +29,7 @@ class FreedoomCache:
 
     def level(self, wad: str, map_name: str):
         from test_wad import freedoom
-        from wallbsp.wad import load_wad_level
+        from wallbsp.level.wadmap import load_wad_level
         key = (wad, map_name)
         if key not in self.levels:
             self.levels[key] = load_wad_level(freedoom(wad), map_name)

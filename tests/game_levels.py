@@ -3,8 +3,8 @@ from __future__ import annotations
 
 from wallbsp import compile_level
 from wallbsp.game.rules import Rules
-from wallbsp.level import Level, Sector, Side, Start, Thing, Wall
-from wallbsp.world import WorldState
+from wallbsp.level.model import Level, Sector, Side, Start, Thing, Wall
+from wallbsp.sim.state import WorldState
 
 WIDTH = 128      # the corridor's width (y from 0 to WIDTH)
 LENGTH = 128     # each sector's length along x

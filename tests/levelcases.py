@@ -3,8 +3,8 @@ from __future__ import annotations
 
 import pytest
 
-from wallbsp.level import LevelError
-from wallbsp.levelio import level_from_dict
+from wallbsp.level.model import LevelError
+from wallbsp.level.io import level_from_dict
 
 LIMIT = 2 ** 20
 SOURCE = "t.json"

@@ -1,4 +1,4 @@
-"""The pygame walkthrough (wallbsp.app), driven by posted events and a fixed frame time
+"""The pygame walkthrough (wallbsp.app.walkthrough), driven by posted events and a fixed frame time
 under SDL's dummy video driver.  The player's rules themselves are test_player's."""
 import math
 import os
@@ -12,11 +12,12 @@ import numpy as np   # noqa: E402
 import pygame        # noqa: E402
 import pytest        # noqa: E402
 
-from wallbsp import app, compile_level, hud       # noqa: E402
-from wallbsp.game.player import TICRATE, WALK_THRUST, spawn_player, player_tic   # noqa: E402
+from wallbsp.app import walkthrough as app, hud
+from wallbsp import compile_level
+from wallbsp.game.player import TICRATE, WALK_THRUST, spawn_player, player_tic
 from pngread import load_png                      # noqa: E402
-from wallbsp.level import Level, Sector, Start, Wall   # noqa: E402
-from wallbsp import render                         # noqa: E402
+from wallbsp.level.model import Level, Sector, Start, Wall
+from wallbsp import render
 
 DT = 1 / TICRATE          # one tic a frame: frames and tics line up
 
@@ -132,7 +133,7 @@ def test_the_mouse_turns_only_while_grabbed(walk):
 
 
 def test_importing_the_app_loads_no_pygame():
-    code = ("import sys, wallbsp.app, wallbsp.cli; "
+    code = ("import sys, wallbsp.app.walkthrough, wallbsp.app.cli; "
             "sys.exit(1 if any(m.startswith('pygame') for m in sys.modules) else 0)")
     assert subprocess.run([sys.executable, "-c", code]).returncode == 0
 

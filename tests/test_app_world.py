@@ -9,11 +9,12 @@ import numpy as np   # noqa: E402
 import pygame        # noqa: E402
 import pytest        # noqa: E402
 
-from wallbsp import app, compile_level, hud, render   # noqa: E402
-from wallbsp.game.demo import demo_for            # noqa: E402
-from wallbsp.game.maporder import following_maps, next_map   # noqa: E402
-from wallbsp.game.player import TICRATE           # noqa: E402
-from wallbsp.level import Side                    # noqa: E402
+from wallbsp.app import walkthrough as app, hud
+from wallbsp import compile_level, render
+from wallbsp.game.demo import demo_for
+from wallbsp.game.maporder import following_maps, next_map
+from wallbsp.game.player import TICRATE
+from wallbsp.level.model import Side
 
 from game_levels import corridor, north_wall, room   # noqa: E402
 
@@ -163,7 +164,7 @@ MONSTER, MEDIKIT, BLUE_CARD, BARREL = 3004, 2012, 5, 2035
 
 
 def things_tree():
-    from wallbsp.level import Thing
+    from wallbsp.level.model import Thing
     return compile_level(corridor([room(), room()], things=[
         Thing(200, 24, 90, MONSTER, 7), Thing(160, 100, 0, MEDIKIT, 7),
         Thing(230, 100, 0, BLUE_CARD, 7), Thing(24, 104, 0, BARREL, 7)]))
@@ -171,7 +172,7 @@ def things_tree():
 
 def colour_near(walk, x, y, colour):
     """Whether ``colour`` is on the window within 3 pixels of the map point (x, y)."""
-    from wallbsp.mapview import MapView, level_bounds
+    from wallbsp.app.mapview import MapView, level_bounds
     view = MapView.centred(level_bounds(walk.tree), walk.display.get_size())
     px, py = (round(v) for v in view(x, y))
     patch = pygame.surfarray.array3d(walk.display)[px - 3:px + 4, py - 3:py + 4]
@@ -179,7 +180,7 @@ def colour_near(walk, x, y, colour):
 
 
 def test_the_automap_shows_things_by_kind_and_t_toggles_them(opened):
-    from wallbsp.mapview import THING_KINDS
+    from wallbsp.app.mapview import THING_KINDS
     walk = opened(things_tree())
     walk.display = pygame.display.set_mode((640, 400))
     shown = {(200, 24): "monsters", (160, 100): "pickups", (230, 100): "keys",
@@ -198,7 +199,7 @@ def test_the_automap_shows_things_by_kind_and_t_toggles_them(opened):
 
 
 def test_a_thing_picked_up_leaves_the_automap(opened):
-    from wallbsp.mapview import THING_KINDS
+    from wallbsp.app.mapview import THING_KINDS
     walk = opened(things_tree())
     walk.display = pygame.display.set_mode((640, 400))
     walk.show_map = True

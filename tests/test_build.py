@@ -5,7 +5,7 @@ import pytest
 from hypothesis import HealthCheck, given, settings, strategies as st
 
 from wallbsp import compile_level, load_level, load_tree
-from wallbsp.build import DEFAULT_CANDIDATES
+from wallbsp.bsp.build import DEFAULT_CANDIDATES
 from conftest import ROOT
 from treeoracles import level_of_walls, ray_order_violations
 

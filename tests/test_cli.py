@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 from conftest import DELETE, edited
-from wallbsp.cli import main
+from wallbsp.app.cli import main
 
 GOOD = {
     "format": "wallbsp-level", "version": 1, "name": "box",
@@ -172,7 +172,7 @@ def test_each_command_has_help(capsys, command):
 
 
 def test_builds_longer_than_a_second_show_progress_on_stderr(capsys):
-    from wallbsp.cli import BuildProgress
+    from wallbsp.app.cli import BuildProgress
     quick = BuildProgress()
     quick(1, 10, 500)
     assert capsys.readouterr().err == ""                  # under a second: silent
@@ -269,9 +269,9 @@ def test_walk_with_a_driver_that_shows_nothing_is_no_display(tmp_path, capsys, m
 
 
 def test_walk_with_no_level_walks_the_bundled_level_textured(capsys, monkeypatch):
-    import wallbsp.app
+    import wallbsp.app.walkthrough
     walked = []
-    monkeypatch.setattr(wallbsp.app, "run_walkthrough",
+    monkeypatch.setattr(wallbsp.app.walkthrough, "run_walkthrough",
                         lambda tree, **options: walked.append(tree) or "summary")
     assert main(["walk", "--frames", "1"]) == 0
     assert walked[0].level.resources and "textured" in walked[0].level.name
@@ -301,7 +301,7 @@ def test_render_saves_the_depth_buffer_and_draws_fullbright(tmp_path, capsys):
                                   ["draw", "l.json", "-o", "x.png"],
                                   ["import-wad", "x.wad", "E1M1", "-o", "l.json"]])
 def test_each_command_parses_to_its_function(argv):
-    from wallbsp.cli import COMMANDS
-    from wallbsp.cliargs import build_parser
+    from wallbsp.app.cli import COMMANDS
+    from wallbsp.app.cliargs import build_parser
     args = build_parser(COMMANDS).parse_args(argv)
     assert args.command == argv[0] and args.func is COMMANDS[argv[0]]

@@ -8,7 +8,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from wallbsp import Camera, World, compile_level, compiled, load_level, render
+from wallbsp import Camera, World, compile_level, jit as compiled, load_level, render
 
 ROOT = Path(__file__).resolve().parent.parent
 FREEDOOM = Path("/usr/share/games/doom")

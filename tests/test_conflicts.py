@@ -8,7 +8,7 @@ from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
 from levelcases import LIMIT
-from wallbsp.conflicts import find_wall_conflicts
+from wallbsp.level.conflicts import find_wall_conflicts
 
 
 # ---------------------------------------------------------------------------------------

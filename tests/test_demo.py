@@ -8,11 +8,11 @@ from pathlib import Path
 import pytest
 
 from wallbsp import compile_level
-from wallbsp.cli import main
+from wallbsp.app.cli import main
 from wallbsp.game.demo import Demo, demo_for, dumps_demo, load_demo, play, save_demo
 from wallbsp.game.world import World
-from wallbsp.level import LevelError
-from wallbsp.levelio import save_level
+from wallbsp.level.model import LevelError
+from wallbsp.level.io import save_level
 
 from game_levels import corridor, room
 

@@ -15,11 +15,11 @@ gym = pytest.importorskip("gymnasium")
 
 import wallbsp.envs  # noqa: E402  (registers the ids)
 from gymnasium.utils.env_checker import check_env  # noqa: E402
-from wallbsp.envs import DISCRETE_ACTIONS, TURN_DEGREES, Buttons  # noqa: E402
-from wallbsp.envs.actions import buttons_of  # noqa: E402
-from wallbsp.generate import generate_level  # noqa: E402
-from wallbsp.generate.themes import TEXTURE_DIR  # noqa: E402
-from wallbsp.levelio import save_level  # noqa: E402
+from wallbsp.envs import DISCRETE_ACTIONS, TURN_DEGREES, Buttons
+from wallbsp.envs.actions import buttons_of
+from wallbsp.generate import generate_level
+from wallbsp.assets.catalogue import TEXTURE_DIR
+from wallbsp.level.io import save_level
 
 SMALL = {"size": (32, 24), "walls": 60}
 ACTIONS = list(DISCRETE_ACTIONS)
@@ -221,7 +221,7 @@ def test_bad_options_are_errors(options):
 
 
 def test_candidates_reach_the_compiler():
-    from wallbsp.build import DEFAULT_CANDIDATES
+    from wallbsp.bsp.build import DEFAULT_CANDIDATES
     for option, k in (({}, DEFAULT_CANDIDATES), ({"candidates": 1}, 1)):
         env = make("wallbsp/Explore-v0", **SMALL, observations=("pose",), **option)
         env.reset(seed=1)
@@ -307,7 +307,7 @@ def test_the_throughput_script_reports_every_configuration():
 
 def test_a_forked_worker_starts_without_the_parents_trees_or_textures(tmp_path, exit_level):
     from wallbsp.envs import levels
-    from wallbsp.resources import shared_resources
+    from wallbsp.assets.resources import shared_resources
     path = tmp_path / "level.json"
     save_level(replace(exit_level.level, resources=(str(TEXTURE_DIR),)), path)
     parent = levels.given_tree(path)

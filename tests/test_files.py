@@ -12,10 +12,10 @@ import sys
 import pytest
 
 from conftest import ROOT
-from wallbsp.cli import main
+from wallbsp.app.cli import main
 from wallbsp.files import InputError, open_regular, read_input
-from wallbsp.level import LevelError
-from wallbsp.levelio import content_hash, load_level
+from wallbsp.level.model import LevelError
+from wallbsp.level.io import content_hash, load_level
 
 SMALL = ROOT / "levels" / "small.json"
 

@@ -13,8 +13,8 @@ import pytest
 from test_wad import FREEDOOM_MAPS, FREEDOOM_SAMPLE, freedoom
 
 from wallbsp import Camera, render
-from wallbsp.queries import floor_z
-from wallbsp.wad import list_maps
+from wallbsp.sim.queries import floor_z
+from wallbsp.level.wadmap import list_maps
 
 EYE = 41              # DOOM's view height above the floor
 SIZE = (64, 40)

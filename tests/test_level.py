@@ -9,8 +9,8 @@ import pytest
 
 from conftest import DELETE, edited
 from levelcases import LIMIT, SOURCE, assert_error_at, error_of, square_room
-from wallbsp.level import LevelError, Sector, Start, Wall
-from wallbsp.levelio import level_from_dict, loads_level
+from wallbsp.level.model import LevelError, Sector, Start, Wall
+from wallbsp.level.io import level_from_dict, loads_level
 
 
 # ---------------------------------------------------------------------------------------

@@ -11,10 +11,10 @@ import pytest
 
 from conftest import DELETE, LEVELS, ROOT
 from levelcases import square_room
-from wallbsp.jsoncheck import Checker
-from wallbsp.level import LevelError, Side, Wall
-from wallbsp.levelio import level_from_dict
-from wallbsp.levelread import read_level
+from wallbsp.level.jsoncheck import Checker
+from wallbsp.level.model import LevelError, Side, Wall
+from wallbsp.level.io import level_from_dict
+from wallbsp.level.read import read_level
 
 SIDE = {"upper": "STARTAN3", "middle": "-", "x_offset": 16}
 

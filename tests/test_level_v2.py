@@ -12,8 +12,8 @@ from hypothesis import strategies as st
 
 from conftest import DELETE, ROOT, edited
 from levelcases import SOURCE, assert_error_at, error_of, square_room
-from wallbsp.level import Level, Sector, Side, Start, Thing, ThingType, Wall
-from wallbsp.levelio import content_hash, dumps_level, level_from_dict, load_level
+from wallbsp.level.model import Level, Sector, Side, Start, Thing, ThingType, Wall
+from wallbsp.level.io import content_hash, dumps_level, level_from_dict, load_level
 
 
 def room_v2(**changes):

@@ -12,9 +12,9 @@ from hypothesis import strategies as st
 
 from conftest import DELETE, edited
 from levelcases import LIMIT, SOURCE, level_with_walls, only_warnings, square_room
-from wallbsp.level import Level, LevelError, Sector, Start, Wall
-from wallbsp.levelio import (MAX_REPORTED, content_hash, dumps_level, level_from_dict, load_level,
-                             save_level)
+from wallbsp.level.model import Level, LevelError, Sector, Start, Wall
+from wallbsp.level.io import (MAX_REPORTED, content_hash, dumps_level, level_from_dict,
+    load_level, save_level)
 
 
 # ---------------------------------------------------------------------------------------

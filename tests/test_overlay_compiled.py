@@ -10,9 +10,9 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from wallbsp import compile_level, compiled, load_level, render
+from wallbsp import compile_level, jit as compiled, load_level, render
 from wallbsp.camera import eye_camera
-from wallbsp.world import WorldState
+from wallbsp.sim.state import WorldState
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "tools"))

@@ -5,9 +5,9 @@ from game_levels import corridor, room, rules_for, wall_between
 
 from wallbsp.game.inventory import Inventory
 from wallbsp.game.pickups import blocked_at, pick_up, touch_pickups
-from wallbsp.level import Thing
-from wallbsp.segments import slide
-from wallbsp.thingtypes import DOOM_THING_TYPES
+from wallbsp.level.model import Thing
+from wallbsp.sim.collision import slide
+from wallbsp.sim.thingtypes import DOOM_THING_TYPES
 
 STIMPACK, MEDIKIT, BONUS, SOUL, MEGA = 2011, 2012, 2014, 2013, 83
 GREEN_ARMOUR, BLUE_ARMOUR, ARMOUR_BONUS = 2018, 2019, 2015

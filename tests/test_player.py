@@ -7,10 +7,10 @@ import pytest
 from wallbsp import compile_level
 from wallbsp.camera import EYE_HEIGHT
 from wallbsp.game.player import (FRICTION, STRAFE_THRUST, WALK_THRUST, player_tic,
-                                 spawn_player, walk_by)
-from wallbsp.level import Level, Sector, Start, Wall
-from wallbsp.queries import PLAYER_RADIUS
-from wallbsp.world import WorldState
+    spawn_player, walk_by)
+from wallbsp.level.model import Level, Sector, Start, Wall
+from wallbsp.sim.queries import PLAYER_RADIUS
+from wallbsp.sim.state import WorldState
 
 
 def two_rooms(floor_b=0, ceiling_b=160, ceiling_a=160):

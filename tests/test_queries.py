@@ -1,4 +1,4 @@
-"""Movement and sight over the current world (wallbsp.queries): DOOM's player rules, checked
+"""Movement and sight over the current world (wallbsp.sim.queries): DOOM's player rules, checked
 against brute force over every wall; heights that change; input that is not a number."""
 import math
 from pathlib import Path
@@ -7,9 +7,10 @@ import numpy as np
 import pytest
 from hypothesis import given, settings, strategies as st
 
-from wallbsp import compile_level, queries
-from wallbsp.world import WorldState
-from wallbsp.level import Level, Sector, Start, Wall
+from wallbsp import compile_level
+from wallbsp.sim import queries
+from wallbsp.sim.state import WorldState
+from wallbsp.level.model import Level, Sector, Start, Wall
 
 RADIUS, STEP, HEADROOM = queries.PLAYER_RADIUS, queries.MAX_STEP, queries.PLAYER_HEIGHT
 LEVELS = sorted(p.stem for p in (Path(__file__).resolve().parent.parent / "levels").glob("*.json"))
@@ -397,7 +398,7 @@ BARREL, HEALTH_BONUS = 2035, 2014           # radius 10, solid; radius 20, an it
 
 def with_things(*things):
     """Room A of ``two_rooms`` (closed) holding ``things`` (type, x, y)."""
-    from wallbsp.level import Thing
+    from wallbsp.level.model import Thing
     tree = two_rooms(east_open=False)
     level = tree.level
     return compile_level(Level(level.name, level.vertices, level.sectors, level.walls,

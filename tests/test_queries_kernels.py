@@ -1,16 +1,17 @@
 """Movement and collision both ways: the compiled kernels (``segments.*_KERNEL``) and the
 same functions run by the interpreter must give the same floats, query by query and tic by
-tic of a walk (``wallbsp.compiled.use_kernels``)."""
+tic of a walk (``wallbsp.jit.use_kernels``)."""
 import contextlib
 
 import numpy as np
 import pytest
 
-from wallbsp import compiled, queries, segments
+from wallbsp import jit as compiled
+from wallbsp.sim import queries, collision as segments
 from wallbsp.game.world import World
-from wallbsp.queries import PLAYER_RADIUS
-from wallbsp.querytables import Tables
-from wallbsp.world import WorldState
+from wallbsp.sim.queries import PLAYER_RADIUS
+from wallbsp.sim.querytables import Tables
+from wallbsp.sim.state import WorldState
 
 pytestmark = pytest.mark.skipif(not compiled.AVAILABLE, reason="numba is not installed")
 
@@ -128,7 +129,7 @@ def test_the_compiled_length_is_math_hypot():
     import math
 
     import numba
-    from wallbsp.jitable import register_jitables
+    from wallbsp.jit import register_jitables
     from wallbsp.lengths import length
 
     register_jitables()                      # what a kernel's first use does

@@ -15,7 +15,7 @@ from texref import wall_hits
 
 from pngread import load_png
 from wallbsp.image import png_bytes, save_png
-from wallbsp.level import Level, Sector, Start, Wall
+from wallbsp.level.model import Level, Sector, Start, Wall
 from wallbsp.camera import Camera
 from wallbsp.render import render
 from wallbsp.render.columns import ClosedColumns

@@ -16,7 +16,7 @@ from texref import reference_frame
 from wallbsp import compile_level, load_level
 from wallbsp.camera import Camera
 from wallbsp.image import save_png
-from wallbsp.level import Level, Sector, Side, Start, Wall
+from wallbsp.level.model import Level, Sector, Side, Start, Wall
 from wallbsp.render import render
 from wallbsp.render.textures import level_resources
 
@@ -198,7 +198,7 @@ def test_a_pressed_switch_and_a_changed_floor_keep_the_atlas(tmp_path):
     from wallbsp.game.switches import Buttons
     from wallbsp.render.tables import tree_tables
     from wallbsp.render.textures import level_textures
-    from wallbsp.world import WorldState
+    from wallbsp.sim.state import WorldState
     folder = coded_textures(tmp_path)
     for name, rgb in (("SW1GRID", (200, 0, 0)), ("SW2GRID", (0, 200, 0))):
         save_png(folder / f"{name}.png", np.broadcast_to(np.uint8(rgb), (8, 8, 3)).copy())
@@ -228,7 +228,7 @@ def test_levels_of_one_texture_folder_share_the_packed_pictures(folder):
     packed from it (a generated level's first frame packs no picture again), and draw
     what a fresh set draws."""
     from wallbsp.render.packing import picture_cache
-    from wallbsp.resources import forget_shared_resources
+    from wallbsp.assets.resources import forget_shared_resources
     a = compile_level(step_level(folder, y_offset=3))
     b = compile_level(step_level(folder, front_side=Side("NOPE", "GRID", "GRID")))
     assert level_resources(a) is level_resources(b)

@@ -14,11 +14,12 @@ import pytest
 
 from test_wad import Map, freedoom
 from wadkit import BLUE, GREEN, RED, colormap, flat, patch, playpal, pnames, texture_lump
-from wallbsp.level import LevelError
-from wallbsp.resources import (ResourceError, ResourceSet, forget_shared_resources,
-                               shared_resources, sky_name)
-from wallbsp.wad import load_wad_level, write_wad
-from wallbsp.wad.graphics import MAX_TEXELS, decode_picture
+from wallbsp.level.model import LevelError
+from wallbsp.assets.resources import (ResourceError, ResourceSet, forget_shared_resources,
+    shared_resources, sky_name)
+from wallbsp.level.wadmap import load_wad_level
+from wallbsp.assets.wad import write_wad
+from wallbsp.assets.pictures import MAX_TEXELS, decode_picture
 
 SOLID = patch(4, 4, [[(0, [RED] * 4)]] * 4)
 BAR = patch(2, 3, [[(1, [BLUE, BLUE])], [(0, [BLUE])]], left=1, top=3)
@@ -279,7 +280,7 @@ def test_missing_resource_path_is_an_error():
 @pytest.mark.parametrize("case", ["truncated patch", "bad PNAMES index",
                                   "texture past the lump"])
 def test_damaged_texture_through_the_command_line_is_exit_2_and_one_line(capsys, case):
-    from wallbsp.cli import main
+    from wallbsp.app.cli import main
     replace, _, message = DAMAGED[case]
     write_wad("map.wad", Map().lumps() + lumps(**replace))
     assert main(["import-wad", "--strict", "map.wad", "MAP01", "-o", "out.json"]) == 2
@@ -380,7 +381,7 @@ def reference_patch(raw: bytes):
 
 
 def test_freedoom_composite_matches_its_patches():
-    from wallbsp.wad import open_wad
+    from wallbsp.assets.wad import open_wad
     path = freedoom("freedoom2.wad")
     res = ResourceSet([path])
     textures = res.sources[0].textures

@@ -7,8 +7,8 @@ import numpy as np
 from hypothesis import HealthCheck, given, settings, strategies as st
 
 from wallbsp import Camera, compile_level, render
-from wallbsp.level import LevelError
-from wallbsp.levelio import level_from_dict
+from wallbsp.level.model import LevelError
+from wallbsp.level.io import level_from_dict
 
 from conftest import ROOT
 
@@ -103,7 +103,7 @@ def test_walls_moved_anywhere_still_compile_and_render(moves, sectors):
 @given(st.data())
 def test_a_damaged_tree_file_is_one_tree_error(tmp_path_factory, data):
     from wallbsp import load_tree
-    from wallbsp.tree import TreeError
+    from wallbsp.bsp.tree import TreeError
     path = tmp_path_factory.mktemp("trees") / "t.wbsp"
     if not _TREE_BYTES:
         compile_level(level_from_dict(SMALL, source="small.json")).save(path)
@@ -134,7 +134,7 @@ def test_a_crafted_array_header_cannot_allocate_gigabytes(tmp_path):
     import zipfile
 
     from wallbsp import load_tree
-    from wallbsp.tree import TreeError
+    from wallbsp.bsp.tree import TreeError
     good, bad = tmp_path / "good.wbsp", tmp_path / "bad.wbsp"
     compile_level(level_from_dict(SMALL, source="small.json")).save(good)
     header = io.BytesIO()
@@ -160,7 +160,7 @@ def test_a_tree_file_with_a_cycle_is_refused(tmp_path):
     import zipfile
 
     from wallbsp import load_tree
-    from wallbsp.tree import TreeError
+    from wallbsp.bsp.tree import TreeError
     good, bad = tmp_path / "good.wbsp", tmp_path / "bad.wbsp"
     tree = compile_level(level_from_dict(SMALL, source="small.json"))
     tree.save(good)

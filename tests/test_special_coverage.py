@@ -7,7 +7,7 @@ from pathlib import Path
 
 import pytest
 
-from wallbsp.wad import write_wad
+from wallbsp.assets.wad import write_wad
 
 ROOT = Path(__file__).resolve().parent.parent
 

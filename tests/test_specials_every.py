@@ -9,8 +9,8 @@ import pytest
 from wallbsp import compile_level
 from wallbsp.game.rules import Rules
 from wallbsp.game.specials import LINE_SPECIALS
-from wallbsp.level import Side, Thing
-from wallbsp.world import WorldState
+from wallbsp.level.model import Side, Thing
+from wallbsp.sim.state import WorldState
 
 from game_levels import corridor, north_wall, room, wall_between
 

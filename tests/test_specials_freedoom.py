@@ -6,7 +6,7 @@ import pytest
 
 from wallbsp.game.rules import Rules
 from wallbsp.game.specials import LINE_SPECIALS
-from wallbsp.world import WorldState
+from wallbsp.sim.state import WorldState
 
 FREEDOOM1 = Path("/usr/share/games/doom/freedoom1.wad")
 PLAYER_HEIGHT = 56

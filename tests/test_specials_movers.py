@@ -1,5 +1,5 @@
 """Lifts, floors, ceilings, crushers, stairs and donuts, tic by tic (see game_levels)."""
-from wallbsp.level import Level, Sector, Side, Start, Wall
+from wallbsp.level.model import Level, Sector, Side, Start, Wall
 
 from game_levels import corridor, north_wall, room, rules_for, wall_between
 

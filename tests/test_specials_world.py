@@ -4,7 +4,7 @@ import pytest
 from wallbsp.game.rules import Rules
 from wallbsp.game.specials import LINE_SPECIALS, describe
 from wallbsp.game.switches import BUTTON_TIME, switched_name
-from wallbsp.level import Side, Thing
+from wallbsp.level.model import Side, Thing
 
 from game_levels import corridor, north_wall, room, rules_for, wall_between
 

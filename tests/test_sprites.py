@@ -10,11 +10,11 @@ from spriteref import reference_overlay
 
 from wallbsp import compile_level
 from wallbsp.camera import Camera, eye_camera
-from wallbsp.level import Level, Sector, Side, Start, Thing, Wall
+from wallbsp.level.model import Level, Sector, Side, Start, Thing, Wall
 from wallbsp.render import render
 from wallbsp.render.textures import level_resources
 from wallbsp.render.sprites import rotations
-from wallbsp.world import WorldState, static_state
+from wallbsp.sim.state import WorldState, static_state
 
 IMP, BARREL, STIMPACK, CANDELABRA = 3001, 2035, 2011, 35
 KIND_WALL, KIND_THING = 1, 4

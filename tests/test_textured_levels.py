@@ -9,9 +9,9 @@ from pathlib import Path
 import pytest
 
 from wallbsp import compile_level
-from wallbsp.levelio import dumps_level, level_from_dict, load_level
-from wallbsp.resources import ResourceSet
-from wallbsp.thingtypes import thing_info
+from wallbsp.level.io import dumps_level, level_from_dict, load_level
+from wallbsp.assets.resources import ResourceSet
+from wallbsp.sim.thingtypes import thing_info
 
 ROOT = Path(__file__).resolve().parent.parent
 PAIRS = {"wallbsp/data/textured.json": "wallbsp/data/default.json",

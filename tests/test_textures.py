@@ -7,8 +7,9 @@ import numpy as np
 import pygame
 import pytest
 
-from wallbsp.generate.themes import FLATS, MASKED_TEXTURES, SPRITES, TEXTURE_DIR, WALL_TEXTURES
-from wallbsp.resources import ResourceSet
+from wallbsp.assets.catalogue import (FLATS, MASKED_TEXTURES, SPRITES, TEXTURE_DIR,
+    WALL_TEXTURES)
+from wallbsp.assets.resources import ResourceSet
 
 ROOT = Path(__file__).resolve().parent.parent
 

@@ -1,13 +1,13 @@
-"""Things at run time: the skill's things, kept in the leaf that holds them (wallbsp.things)."""
+"""Things at run time: the skill's things, kept in the leaf that holds them (wallbsp.sim.things)."""
 import numpy as np
 import pytest
 from game_levels import LENGTH, WIDTH, corridor, room
 
 from wallbsp import compile_level
-from wallbsp.level import Thing, ThingType
-from wallbsp.things import Things, level_things, locate_leaves, spawned_at
-from wallbsp.thingtypes import SOLID, SPECIAL
-from wallbsp.world import WorldState
+from wallbsp.level.model import Thing, ThingType
+from wallbsp.sim.things import Things, level_things, locate_leaves, spawned_at
+from wallbsp.sim.thingtypes import SOLID, SPECIAL
+from wallbsp.sim.state import WorldState
 
 HANGING = 63          # twitching hanging victim (not solid): hangs from the ceiling, height 68
 STIMPACK, CLIP, BARREL = 2011, 2007, 2035

@@ -5,9 +5,10 @@ from pathlib import Path
 
 import pytest
 
-from wallbsp.thingtypes import (DOOM_THING_TYPES, NOSECTOR, SOLID, SPAWNCEILING,
-                                own_thing_info, thing_info)
-from wallbsp.wad import list_maps, map_lump_indices, open_wad
+from wallbsp.sim.thingtypes import (DOOM_THING_TYPES, NOSECTOR, SOLID, SPAWNCEILING,
+    own_thing_info, thing_info)
+from wallbsp.level.wadmap import list_maps, map_lump_indices
+from wallbsp.assets.wad import open_wad
 
 FREEDOOM = Path(os.environ.get("FREEDOOM_DIR", "/usr/share/games/doom"))
 SKILL_BITS = 0x7

@@ -11,9 +11,9 @@ import numpy as np
 import pytest
 
 from wallbsp import compile_level, load_tree
-from wallbsp.level import Level
-from wallbsp.tree import BSPTree, TreeError
-from wallbsp.treefile import ARRAY_LAYOUT, write_tree_file
+from wallbsp.level.model import Level
+from wallbsp.bsp.tree import BSPTree, TreeError
+from wallbsp.bsp.treefile import ARRAY_LAYOUT, write_tree_file
 
 
 def arrays_of(tree) -> dict:

@@ -1,6 +1,6 @@
 """DOOM-format maps imported as levels: the mapping, the colours, the errors, and Freedoom.
 
-The small WADs are written here (lumps built by hand, packed by ``wallbsp.wad.wad_bytes``), so
+The small WADs are written here (lumps built by hand, packed by ``wallbsp.assets.wad.wad_bytes``), so
 every path of the importer is exercised with bytes whose meaning the test states."""
 from __future__ import annotations
 
@@ -14,9 +14,11 @@ import pytest
 from hypothesis import HealthCheck, given, settings
 from hypothesis import strategies as st
 
-from wallbsp.level import Level, LevelError
+from wallbsp.level.model import Level, LevelError
 from wadkit import BLUE, DARK, GREEN, RED, flat, patch, playpal, pnames, texture_lump
-from wallbsp.wad import GREY, SKY_BLUE, import_wad, load_wad_level, parse_wad_spec, wad_bytes
+from wallbsp.assets.colours import GREY, SKY_BLUE
+from wallbsp.level.wadmap import import_wad, load_wad_level, parse_wad_spec
+from wallbsp.assets.wad import wad_bytes
 
 NONE = 0xFFFF
 
@@ -596,7 +598,7 @@ def test_freedoom_map_loads_as_a_level(freedoom_cache, wad, map_name):
 
 def test_import_wad_writes_a_level_that_compiles(capsys):
     from wallbsp import load_level
-    from wallbsp.cli import main
+    from wallbsp.app.cli import main
     wad = write_wad(Map())
     assert main(["import-wad", str(wad), "MAP01", "-o", "map01.json"]) == 0
     level = load_level("map01.json")
@@ -608,7 +610,7 @@ def test_import_wad_writes_a_level_that_compiles(capsys):
 @pytest.mark.parametrize("command", [["compile"], ["stats"], ["render", "-o", "f.png"],
                                      ["draw", "-o", "d.png"]])
 def test_wad_colon_map_stands_for_a_level(capsys, command):
-    from wallbsp.cli import main
+    from wallbsp.app.cli import main
     wad = write_wad(Map())
     assert main([command[0], f"{wad}:map01", *command[1:]]) == 0
     if command == ["compile"]:
@@ -619,7 +621,7 @@ def test_wad_colon_map_stands_for_a_level(capsys, command):
                                   ["render", "test.wad:MAP07", "-o", "x.png"],
                                   ["import-wad", "missing.wad", "MAP01", "-o", "x.json"]])
 def test_bad_wad_input_is_one_line_and_exit_2(capsys, argv):
-    from wallbsp.cli import main
+    from wallbsp.app.cli import main
     write_wad(Map())
     assert main(argv) == 2
     err = capsys.readouterr().err.strip()

@@ -10,7 +10,7 @@ from hypothesis import given, settings, strategies as st
 from treeoracles import level_of_walls
 from wallbsp import compile_level
 from wallbsp.geometry import COORD_LIMIT, exact_side, side_of, side_tolerance
-from wallbsp.level import Level, Sector, Start, Wall
+from wallbsp.level.model import Level, Sector, Start, Wall
 
 coord = st.integers(-COORD_LIMIT, COORD_LIMIT)
 small_coord = st.integers(-20, 20)

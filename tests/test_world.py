@@ -9,7 +9,7 @@ import pytest
 import wallbsp
 from wallbsp import compile_level, render
 from wallbsp.game.world import World
-from wallbsp.level import Side, Thing
+from wallbsp.level.model import Side, Thing
 
 from game_levels import WIDTH, corridor, north_wall, room
 

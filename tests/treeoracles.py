@@ -1,7 +1,7 @@
 """Helpers shared by the tree tests: levels made of bare walls, and brute-force oracles."""
 import numpy as np
 
-from wallbsp.level import Level, Sector, Start, Wall
+from wallbsp.level.model import Level, Sector, Start, Wall
 
 
 def level_of_walls(walls, two_sided=False):

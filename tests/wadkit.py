@@ -1,6 +1,6 @@
 """Building blocks of small WADs for tests: palettes, flats, patches (pictures), PNAMES and
 TEXTURE1 lumps, each written from the numbers a test states (the WAD itself is packed by
-``wallbsp.wad.wad_bytes``)."""
+``wallbsp.assets.wad.wad_bytes``)."""
 from __future__ import annotations
 
 import struct

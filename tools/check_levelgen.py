@@ -16,7 +16,7 @@ import time
 
 from wallbsp import compile_level
 from wallbsp.generate import generate_level, reachable_sectors
-from wallbsp.levelio import level_from_dict, level_to_dict
+from wallbsp.level.io import level_from_dict, level_to_dict
 
 
 def check_seed(seed: int, goal: str) -> tuple[float, float, float, int]:

@@ -17,8 +17,8 @@ import sys
 from pathlib import Path
 
 from wallbsp.generate import DEFAULT_WALLS, GOALS, generate_level
-from wallbsp.generate.themes import TEXTURE_DIR
-from wallbsp.levelio import save_level
+from wallbsp.assets.catalogue import TEXTURE_DIR
+from wallbsp.level.io import save_level
 
 
 def main(argv=None) -> int:

@@ -16,8 +16,8 @@ from dataclasses import asdict
 from pathlib import Path
 
 from wallbsp.generate.generator import THING_TYPES
-from wallbsp.generate.themes import PLANT_TYPE, SKY_FLAT, SKY_TEXTURE
-from wallbsp.levelio import level_from_dict, save_level
+from wallbsp.assets.catalogue import PLANT_TYPE, SKY_FLAT, SKY_TEXTURE
+from wallbsp.level.io import level_from_dict, save_level
 
 ROOT = Path(__file__).resolve().parent.parent
 LAMP, BARREL, MEDIKIT, STIMPACK, RED_CARD, DOOR_SPECIAL = 2028, 2035, 2012, 2011, 13, 1

@@ -8,7 +8,7 @@ numbers come from its name, so a rerun writes the same pixels.
     python tools/make_textures.py --check         # only prints each picture's mean colour
                                                   # next to its fallback colour
 
-The names, sizes and fallback colours are the package's (``wallbsp.generate.themes``).
+The names, sizes and fallback colours are the package's (``wallbsp.assets.catalogue``).
 """
 from __future__ import annotations
 
@@ -22,7 +22,7 @@ from pathlib import Path
 import numpy as np
 
 from wallbsp.files import write_atomically
-from wallbsp.generate.themes import FLATS, SPRITES, TEXTURE_DIR, WALL_TEXTURES
+from wallbsp.assets.catalogue import FLATS, SPRITES, TEXTURE_DIR, WALL_TEXTURES
 
 import texturekit as kit
 

@@ -24,11 +24,12 @@ from pathlib import Path
 
 import numpy as np
 
-from wallbsp import wad
+from wallbsp.assets import wad
+from wallbsp.level import wadmap
 from wallbsp.files import write_atomically
 from wallbsp.game.rules import describe_sector_special
 from wallbsp.game.specials import LINE_SPECIALS, describe
-from wallbsp.level import LevelError
+from wallbsp.level.model import LevelError
 
 ROOT = Path(__file__).resolve().parents[1]
 FREEDOOM = (Path("/usr/share/games/doom/freedoom1.wad"),
@@ -55,8 +56,8 @@ def map_specials(wad_path) -> dict[str, tuple[np.ndarray, np.ndarray]]:
     """Map name -> (the special of each linedef, of each sector), 0 for none."""
     out = {}
     with wad.open_wad(wad_path) as archive:
-        for name in wad.list_maps(wad_path):
-            lumps = wad.map_lump_indices(archive, name)
+        for name in wadmap.list_maps(wad_path):
+            lumps = wadmap.map_lump_indices(archive, name)
             out[name] = (_records(archive, wad_path, name, lumps, "LINEDEFS", LINEDEF),
                          _records(archive, wad_path, name, lumps, "SECTORS", SECTOR))
     return out

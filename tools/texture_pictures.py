@@ -15,7 +15,7 @@ import numpy as np
 from wallbsp import World, compile_level, load_level
 from wallbsp.image import save_png
 from wallbsp.render import render
-from wallbsp.wad import load_wad_level
+from wallbsp.level.wadmap import load_wad_level
 
 ROOT = Path(__file__).resolve().parent.parent
 FREEDOOM = Path("/usr/share/games/doom")

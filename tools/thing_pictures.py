@@ -14,8 +14,8 @@ from wallbsp import compile_level, load_level
 from wallbsp.camera import eye_camera
 from wallbsp.image import save_png
 from wallbsp.render import render
-from wallbsp.wad import load_wad_level
-from wallbsp.world import WorldState
+from wallbsp.level.wadmap import load_wad_level
+from wallbsp.sim.state import WorldState
 
 ROOT = Path(__file__).resolve().parent.parent
 FREEDOOM = "/usr/share/games/doom/"

@@ -15,6 +15,11 @@ from pathlib import Path
 STDIN = "-"
 
 
+class LevelError(ValueError):
+    """Bad input, as one line: ``file: json.path: what is wrong`` (a level, a WAD, a
+    picture, a tree); ``wallbsp.LevelError``."""
+
+
 class InputError(ValueError):
     """A file that cannot be read as input; ``reason`` says why without naming the file
     (each loader names it in its own format), ``str()`` names it too."""

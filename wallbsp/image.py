@@ -11,7 +11,7 @@ import zlib
 
 import numpy as np
 
-from .files import write_atomically
+from wallbsp.files import write_atomically
 
 _SIGNATURE = b"\x89PNG\r\n\x1a\n"
 

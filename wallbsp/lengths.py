@@ -16,7 +16,7 @@ import math
 
 import numpy as np
 
-from .jitable import compiled_as, jitable
+from wallbsp.jit import compiled_as, jitable
 
 __all__ = ["length", "rounded_hypot"]
 

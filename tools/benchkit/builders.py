@@ -20,7 +20,7 @@ from pathlib import Path
 import numpy as np
 
 from wallbsp import compile_level
-from wallbsp.wad import write_wad
+from wallbsp.assets.wad import write_wad
 
 from . import ROOT
 from .freedoom import freedoom_maps, import_and_compile, linedef_count, map_lumps, smallest_maps

@@ -1,6 +1,6 @@
 """The measuring half of bench_compare, run in a fresh Python: reads a JSON job on standard
 input, prints JSON timings. It uses only names that every wallbsp version has
-(``compile_level``, ``render``, ``Camera`` and ``wad.load_wad_level``), so the same code
+(``compile_level``, ``render``, ``Camera`` and ``load_wad_level``), so the same code
 measures the baseline and the current checkout.
 
 Like for like: where the level has things, they are left out, and where ``render`` can draw
@@ -36,7 +36,7 @@ class Checkout:
 
     def __init__(self, name: str):
         self.package = importlib.import_module(name)
-        self.wad = importlib.import_module(name + ".wad")
+        self.wad = _wad_importer(name)
         render = self.package.render
         self.flat = {"textures": False} if "textures" in inspect.signature(render).parameters \
             else {}
@@ -59,6 +59,15 @@ class Checkout:
         started = time.perf_counter()
         tree = self.package.compile_level(level)
         return time.perf_counter() - started, tree
+
+
+def _wad_importer(name: str):
+    """The module with ``load_wad_level``: ``level.wadmap`` since the package's folders show
+    the pipeline, ``wad`` before."""
+    try:
+        return importlib.import_module(name + ".level.wadmap")
+    except ModuleNotFoundError:
+        return importlib.import_module(name + ".wad")
 
 
 def walk_frames(checkouts: list, trees: list, job: dict, shipped=False) -> list[dict]:

@@ -7,7 +7,8 @@ import time
 from pathlib import Path
 
 from wallbsp import compile_level
-from wallbsp import wad
+from wallbsp.assets import wad
+from wallbsp.level import wadmap
 
 FREEDOOM = (Path("/usr/share/games/doom/freedoom1.wad"),
             Path("/usr/share/games/doom/freedoom2.wad"))
@@ -16,7 +17,7 @@ LINEDEF_BYTES = 14
 
 def freedoom_maps() -> list[tuple[Path, str]]:
     """(wad, map) for every map of the installed Freedoom WADs; none when they are absent."""
-    return [(path, name) for path in FREEDOOM if path.exists() for name in wad.list_maps(path)]
+    return [(path, name) for path in FREEDOOM if path.exists() for name in wadmap.list_maps(path)]
 
 
 def absent_wads() -> list[str]:
@@ -26,7 +27,7 @@ def absent_wads() -> list[str]:
 def map_lumps(wad_path: Path, map_name: str) -> dict[str, bytes]:
     """The raw lumps of one map (THINGS ... BLOCKMAP), by name, in directory order."""
     with wad.open_wad(wad_path) as archive:
-        indices = wad.map_lump_indices(archive, map_name)
+        indices = wadmap.map_lump_indices(archive, map_name)
         return {name: archive.read(i) for name, i in indices.items()}
 
 
@@ -41,7 +42,7 @@ def smallest_maps(count: int) -> list[tuple[Path, str]]:
 
 def load_map(wad_path: Path, map_name: str):
     """The map as a Level (the importer at its defaults)."""
-    return wad.load_wad_level(wad_path, map_name)
+    return wadmap.load_wad_level(wad_path, map_name)
 
 
 def import_and_compile(maps, repeat: int):

@@ -7,7 +7,7 @@ import math
 import numpy as np
 
 from wallbsp import load_level
-from wallbsp.level import Level, Sector, Start, Wall
+from wallbsp.level.model import Level, Sector, Start, Wall
 
 from . import ROOT
 from .largelevel import make_large

@@ -68,8 +68,9 @@ def best_of(name: str, repeat: int, *arguments) -> dict:
 # The measurements, each in its own process
 
 def measure_e1m1() -> float:
-    from wallbsp.resources import ResourceSet
-    from wallbsp.wad import forget_wads, load_wad_level
+    from wallbsp.assets.resources import ResourceSet
+    from wallbsp.assets.wad import forget_wads
+    from wallbsp.level.wadmap import load_wad_level
     level = load_wad_level(FREEDOOM[0], "E1M1")
     forget_wads()           # the import read the WAD; the load starts from nothing
     began = time.perf_counter()
@@ -88,7 +89,7 @@ def measure_e1m1() -> float:
 
 
 def measure_all(wad_path: str) -> float:
-    from wallbsp.resources import ResourceSet
+    from wallbsp.assets.resources import ResourceSet
     began = time.perf_counter()
     res = ResourceSet([Path(wad_path)])
     source = res.sources[0]
@@ -100,7 +101,7 @@ def measure_all(wad_path: str) -> float:
 
 
 def measure_map12() -> float:
-    from wallbsp.wad import import_wad
+    from wallbsp.level.wadmap import import_wad
     began = time.perf_counter()
     import_wad(FREEDOOM[1], "MAP12")
     return time.perf_counter() - began
@@ -108,7 +109,8 @@ def measure_map12() -> float:
 
 def bomb_wad(path: Path) -> None:
     """A map from Freedoom's MAP01 whose every texture is a bomb."""
-    from wallbsp.wad import map_lump_indices, open_wad, write_wad
+    from wallbsp.level.wadmap import map_lump_indices
+    from wallbsp.assets.wad import open_wad, write_wad
     width, height, patches = 1000, 255, 8
     column = b"".join(bytes([min(k, 254), 255, 0]) + b"\x70" * 255 + b"\0"
                       for k in range(100)) + b"\xff"
@@ -138,8 +140,9 @@ def bomb_wad(path: Path) -> None:
 def measure_bombs(path: str) -> float:
     """Import the bomb map and ask for every texture: each is drawn within its budget or
     refused with a ResourceError (one line); either way the memory stays bounded."""
-    from wallbsp.resources import ResourceSet
-    from wallbsp.wad import ResourceError, load_wad_level
+    from wallbsp.assets.resources import ResourceSet
+    from wallbsp.assets.pictures import ResourceError
+    from wallbsp.level.wadmap import load_wad_level
     began = time.perf_counter()
     level = load_wad_level(path, "MAP01")
     res = ResourceSet.from_level(level)

@@ -21,10 +21,10 @@ here and below only: ``import wallbsp`` does not need it.
 """
 from gymnasium.envs.registration import register, registry
 
-from .actions import DISCRETE_ACTIONS, TURN_DEGREES, Buttons
-from .base import DEFAULT_OBSERVATIONS, WallbspEnv
-from .observations import OBSERVATIONS
-from .tasks import ExitEnv, ExploreEnv, FindEnv
+from wallbsp.envs.actions import DISCRETE_ACTIONS, TURN_DEGREES, Buttons
+from wallbsp.envs.base import DEFAULT_OBSERVATIONS, WallbspEnv
+from wallbsp.envs.observations import OBSERVATIONS
+from wallbsp.envs.tasks import ExitEnv, ExploreEnv, FindEnv
 
 __all__ = ["DEFAULT_OBSERVATIONS", "DISCRETE_ACTIONS", "ENV_IDS", "OBSERVATIONS",
            "TURN_DEGREES", "Buttons", "ExitEnv", "ExploreEnv", "FindEnv", "WallbspEnv"]

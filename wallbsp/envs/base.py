@@ -26,13 +26,13 @@ from __future__ import annotations
 import gymnasium as gym
 import numpy as np
 
-from ..game.player import TICRATE
-from ..game.world import World
-from ..queries import PLAYER_RADIUS
-from ..render import render
-from . import actions
-from .observations import (VIEW_KEYS, Automap, check_observations, observation_space,
-                           pose_of, view_observation)
+from wallbsp.game.player import TICRATE
+from wallbsp.game.world import World
+from wallbsp.sim.queries import PLAYER_RADIUS
+from wallbsp.render import render
+from wallbsp.envs import actions
+from wallbsp.envs.observations import (VIEW_KEYS, Automap, check_observations,
+    observation_space, pose_of, view_observation)
 
 __all__ = ["WallbspEnv", "DEFAULT_OBSERVATIONS", "TICRATE"]
 
@@ -118,7 +118,7 @@ class WallbspEnv(gym.Env):
         if self.render_mode == "rgb_array":
             return rgb
         if self._window is None:
-            from .window import Window
+            from wallbsp.envs.window import Window
             self._window = Window(self.width, self.height)
         self._window.show(rgb, self.metadata["render_fps"])
         return None

@@ -11,10 +11,10 @@ from __future__ import annotations
 import os
 from pathlib import Path
 
-from ..build import compile_level
-from ..level import Level
-from ..tree import BSPTree
-from ..wad import forget_wads
+from wallbsp.bsp.build import compile_level
+from wallbsp.level.model import Level
+from wallbsp.bsp.tree import BSPTree
+from wallbsp.assets.wad import forget_wads
 
 __all__ = ["given_tree", "generated_tree", "forget_given_trees"]
 
@@ -48,7 +48,7 @@ def given_tree(level) -> BSPTree:
 def _stamp(spec: str):
     """What tells a changed file from the one compiled: its size and modification time
     (the WAD's, for ``WAD:MAP``)."""
-    from ..wad import parse_wad_spec
+    from wallbsp.level.wadmap import parse_wad_spec
     wad_spec = parse_wad_spec(spec)
     path = wad_spec[0] if wad_spec else spec
     try:
@@ -59,9 +59,9 @@ def _stamp(spec: str):
 
 
 def _load(spec: str) -> BSPTree:
-    from ..levelio import load_level
-    from ..tree import load_tree
-    from ..wad import load_wad_level, parse_wad_spec
+    from wallbsp.level.io import load_level
+    from wallbsp.bsp.tree import load_tree
+    from wallbsp.level.wadmap import load_wad_level, parse_wad_spec
     wad_spec = parse_wad_spec(spec)
     if wad_spec:
         return compile_level(load_wad_level(*wad_spec))
@@ -73,6 +73,6 @@ def _load(spec: str) -> BSPTree:
 def generated_tree(seed: int, walls: int, goal: str, candidates=None):
     """``(GeneratedLevel, BSPTree)`` of a fresh level from ``seed`` (``wallbsp.generate``),
     compiled with ``candidates`` splitter candidates per node (``compile_level``)."""
-    from ..generate import generate_level
+    from wallbsp.generate import generate_level
     generated = generate_level(seed, walls=walls, goal=goal)
     return generated, compile_level(generated.level, candidates=candidates)

@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..render.rowmajor import rows_of
+from wallbsp.render.rowmajor import rows_of
 
 __all__ = ["OBSERVATIONS", "VIEW_KEYS", "observation_space", "check_observations", "Automap",
            "pose_of", "view_observation"]
@@ -73,19 +73,19 @@ def pose_of(player) -> np.ndarray:
 
 class Automap:
     """The level from above, fitted into ``width × height``: walls drawn once, the
-    player's marker and view cone drawn on a copy each step (``wallbsp.mapview``; pygame
+    player's marker and view cone drawn on a copy each step (``wallbsp.app.mapview``; pygame
     surfaces only, no display)."""
 
     def __init__(self, tree, width: int, height: int):
         import pygame
-        from ..mapview import MapView, automap_layer, level_bounds
+        from wallbsp.app.mapview import MapView, automap_layer, level_bounds
         self.view = MapView.centred(level_bounds(tree), (width, height), margin=2)
         self.layer = automap_layer(tree, self.view, (width, height),
                                    pygame.Surface((1, 1), 0, 24))
 
     def draw(self, player, radius: float, fov: float) -> np.ndarray:
         import pygame
-        from ..mapview import draw_marker
+        from wallbsp.app.mapview import draw_marker
         surface = self.layer.copy()
         draw_marker(surface, self.view, (player.x, player.y), radius, player.angle, fov)
         return rows_of(pygame.surfarray.array3d(surface))

@@ -26,9 +26,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..queries import PLAYER_RADIUS
-from .base import TICRATE, WallbspEnv
-from .levels import generated_tree, given_tree
+from wallbsp.sim.queries import PLAYER_RADIUS
+from wallbsp.envs.base import TICRATE, WallbspEnv
+from wallbsp.envs.levels import generated_tree, given_tree
 
 __all__ = ["ExitEnv", "ExploreEnv", "FindEnv"]
 

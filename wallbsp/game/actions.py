@@ -13,8 +13,8 @@ from __future__ import annotations
 
 import enum
 
-from .movers import (CEILING_SPEED, DOOR_SPEED, DOOR_WAIT, FLOOR_SPEED, PLAT_SPEED, PLAT_WAIT,
-                     Ceiling, CeilingKind, Door, DoorKind, Floor, Plat, PlatKind, PlatStatus)
+from wallbsp.game.movers import (CEILING_SPEED, DOOR_SPEED, DOOR_WAIT, FLOOR_SPEED, PLAT_SPEED,
+    PLAT_WAIT, Ceiling, CeilingKind, Door, DoorKind, Floor, Plat, PlatKind, PlatStatus)
 
 __all__ = ["FloorKind", "StairKind", "do_door", "start_manual_door", "do_plat", "stop_plats",
            "do_floor", "do_ceiling", "stop_crushers", "build_stairs", "do_donut"]

@@ -16,11 +16,11 @@ from __future__ import annotations
 import json
 from dataclasses import dataclass, field
 
-from ..files import InputError, read_input, write_atomically
-from ..jsoncheck import ROOT, Checker
-from ..level import LevelError
-from ..levelio import content_hash, input_name, parse_json
-from .world import MAX_TURN, SKILLS
+from wallbsp.files import InputError, read_input, write_atomically
+from wallbsp.level.jsoncheck import ROOT, Checker
+from wallbsp.level.model import LevelError
+from wallbsp.level.io import content_hash, input_name, parse_json
+from wallbsp.game.world import MAX_TURN, SKILLS
 
 __all__ = ["Demo", "DEMO_FORMAT", "DEMO_VERSION", "MAX_DEMO_BYTES", "load_demo",
            "loads_demo", "save_demo", "dumps_demo", "demo_for", "play", "check_level"]

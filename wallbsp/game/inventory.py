@@ -9,7 +9,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass, field
 
-from ..thingtypes import CLIP_AMMO, MAX_AMMO
+from wallbsp.sim.thingtypes import CLIP_AMMO, MAX_AMMO
 
 __all__ = ["Inventory", "MAX_HEALTH", "KEY_COLOURS"]
 

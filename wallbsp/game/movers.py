@@ -20,7 +20,7 @@ from __future__ import annotations
 import enum
 from dataclasses import dataclass
 
-from ..thingtypes import TIC_RATE
+from wallbsp.sim.thingtypes import TIC_RATE
 
 __all__ = ["Move", "move_plane", "DoorKind", "Door", "PlatKind", "PlatStatus", "Plat",
            "Floor", "CeilingKind", "Ceiling",

@@ -13,9 +13,9 @@
 """
 from __future__ import annotations
 
-from ..queries import PLAYER_HEIGHT, PLAYER_RADIUS
-from ..thingtypes import COUNTITEM, SOLID, SPECIAL
-from .inventory import BLUE, GREEN, Inventory
+from wallbsp.sim.queries import PLAYER_HEIGHT, PLAYER_RADIUS
+from wallbsp.sim.thingtypes import COUNTITEM, SOLID, SPECIAL
+from wallbsp.game.inventory import BLUE, GREEN, Inventory
 
 __all__ = ["PLAYER_RADIUS", "PLAYER_HEIGHT", "BELOW_REACH", "pick_up", "touch_pickups",
            "blocked_at"]

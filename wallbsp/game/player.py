@@ -33,10 +33,10 @@ from __future__ import annotations
 import math
 from dataclasses import dataclass
 
-from ..camera import EYE_HEIGHT, Camera
-from ..geometry import direction
-from ..queries import PLAYER_HEIGHT, move, standing_heights
-from ..thingtypes import TIC_RATE as TICRATE   # tics a second
+from wallbsp.camera import EYE_HEIGHT, Camera
+from wallbsp.geometry import direction
+from wallbsp.sim.queries import PLAYER_HEIGHT, move, standing_heights
+from wallbsp.sim.thingtypes import TIC_RATE as TICRATE
 
 __all__ = ["Player", "TICRATE", "spawn_player", "player_tic", "walk_by", "place_eye"]
 

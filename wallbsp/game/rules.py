@@ -27,13 +27,14 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from ..things import spawned_at
-from . import actions, lights
-from .actions import FloorKind
-from .movers import CLOSE30_WAIT, RAISE_IN_5_MINS_WAIT, Ceiling, CeilingKind, Door, DoorKind, Plat
-from .neighbours import Neighbours
-from .specials import LINE_SPECIALS, LineSpecial
-from .switches import Buttons
+from wallbsp.sim.things import spawned_at
+from wallbsp.game import actions, lights
+from wallbsp.game.actions import FloorKind
+from wallbsp.game.movers import (CLOSE30_WAIT, RAISE_IN_5_MINS_WAIT, Ceiling, CeilingKind,
+    Door, DoorKind, Plat)
+from wallbsp.game.neighbours import Neighbours
+from wallbsp.game.specials import LINE_SPECIALS, LineSpecial
+from wallbsp.game.switches import Buttons
 
 __all__ = ["Rules", "Teleport", "SectorEvent", "describe_sector_special",
            "TELEPORT_DESTINATION", "TELEPORT_FREEZE", "SECRET"]

@@ -16,8 +16,8 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from .actions import FloorKind, StairKind
-from .movers import CeilingKind, DoorKind, PlatKind
+from wallbsp.game.actions import FloorKind, StairKind
+from wallbsp.game.movers import CeilingKind, DoorKind, PlatKind
 
 __all__ = ["LineSpecial", "LINE_SPECIALS", "describe", "GENERALISED_FIRST"]
 

@@ -11,7 +11,7 @@ from __future__ import annotations
 
 from dataclasses import dataclass
 
-from ..render.textures import switched_name
+from wallbsp.assets.naming import switched_name
 
 __all__ = ["BUTTON_TIME", "PARTS", "switched_name", "Button", "Buttons"]
 

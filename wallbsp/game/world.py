@@ -32,15 +32,15 @@ from collections import deque
 
 import numpy as np
 
-from ..queries import (MAX_COORDINATE, PLAYER_HEIGHT, PLAYER_RADIUS, standing_heights,
-                       surroundings, use_target, walls_crossed)
-from ..resources import shared_resources
-from ..thingtypes import SHOOTABLE
-from ..world import WorldState
-from .inventory import Inventory
-from .pickups import touch_pickups
-from .player import place_eye, player_tic, spawn_player
-from .rules import Rules
+from wallbsp.sim.queries import (MAX_COORDINATE, PLAYER_HEIGHT, PLAYER_RADIUS,
+    standing_heights, surroundings, use_target, walls_crossed)
+from wallbsp.assets.resources import shared_resources
+from wallbsp.sim.thingtypes import SHOOTABLE
+from wallbsp.sim.state import WorldState
+from wallbsp.game.inventory import Inventory
+from wallbsp.game.pickups import touch_pickups
+from wallbsp.game.player import place_eye, player_tic, spawn_player
+from wallbsp.game.rules import Rules
 
 __all__ = ["World", "MAX_TURN", "MESSAGE_LOG", "SKILLS"]
 
@@ -80,7 +80,7 @@ class World:
     # -- what the world is now ----------------------------------------------------------------
     @property
     def things(self):
-        """The level's things at this skill (``wallbsp.things.Things``: position, type,
+        """The level's things at this skill (``wallbsp.sim.things.Things``: position, type,
         ``alive`` = still there)."""
         return self.state.things
 

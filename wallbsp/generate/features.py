@@ -10,9 +10,9 @@ from __future__ import annotations
 import math
 from typing import NamedTuple
 
-from .layout import (SOLID, TILE, Plan, Room, SectorPlan, add_sector, clear, solid,
-                     tile_centre)
-from .themes import PLANT_TYPE, TARGET_TYPE, Theme
+from wallbsp.generate.layout import (SOLID, TILE, Plan, Room, SectorPlan, add_sector, clear,
+    solid, tile_centre)
+from wallbsp.assets.catalogue import PLANT_TYPE, TARGET_TYPE, Theme
 
 PLATFORM_FLOORS = ("FLOOR1", "FLOOR2")
 POOL_FLATS = ("WATER1", "LAVA1")

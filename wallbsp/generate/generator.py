@@ -15,12 +15,13 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ..level import Level, Sector, Side, Start, Thing, ThingType, Wall
-from . import features
-from .layout import (SOLID, TILE, Plan, assign_heights, farthest_room, new_plan,
-                     paint_corridors, paint_rooms, tile_centre)
-from .themes import (PLANT_TYPE, SKY_FLAT, SKY_TEXTURE, TARGET_TYPE, TEXTURE_DIR, colour_of)
-from .tiles import bevel_corners, grid_walls, texture_offsets, vertex_table
+from wallbsp.level.model import Level, Sector, Side, Start, Thing, ThingType, Wall
+from wallbsp.generate import features
+from wallbsp.generate.layout import (SOLID, TILE, Plan, assign_heights, farthest_room,
+    new_plan, paint_corridors, paint_rooms, tile_centre)
+from wallbsp.assets.catalogue import (PLANT_TYPE, SKY_FLAT, SKY_TEXTURE, TARGET_TYPE,
+    TEXTURE_DIR, colour_of)
+from wallbsp.generate.tiles import bevel_corners, grid_walls, texture_offsets, vertex_table
 
 DEFAULT_WALLS = 500
 WALLS_PER_ROOM = 21          # the mean over many seeds: rooms = walls / this

@@ -13,7 +13,7 @@ from dataclasses import dataclass, field
 
 import numpy as np
 
-from .themes import COURTYARD, CORRIDOR, DOOR, ROOM_THEMES, Theme
+from wallbsp.assets.catalogue import COURTYARD, CORRIDOR, DOOR, ROOM_THEMES, Theme
 
 TILE = 32             # map units per tile
 SLOT = 18             # tiles per slot side

@@ -7,7 +7,7 @@ ceiling (SPEC §8), a wall at least as long as the player is wide, not ``blocks`
 """
 from __future__ import annotations
 
-from ..level import Level
+from wallbsp.level.model import Level
 
 MAX_STEP = 24
 MIN_GAP = 56

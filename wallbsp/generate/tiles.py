@@ -10,7 +10,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .layout import SOLID, TILE
+from wallbsp.generate.layout import SOLID, TILE
 
 
 class GridWalls(NamedTuple):

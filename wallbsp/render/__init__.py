@@ -27,21 +27,21 @@ columns), ``columns`` (the closed-column list), ``walk``, ``painter``, ``rows``,
 """
 from __future__ import annotations
 
-from ..camera import Camera, Projection
-from ..compiled import kernels_enabled
-from ..world import state_of
-from .compiledfill import fill_compiled
-from .fill import drawsegs, fill_flat
-from .frame import Frame, save_ids
-from .layers import RunLayers
-from .overlay import draw_overlay, thing_boxes, walk_boxes
-from .painter import fill_back_to_front, walk_back_to_front
-from .rows import Entries
-from .tables import height_tables, tree_tables
-from .texfill import fill_textured, paint_textured
-from .textures import level_textures
-from .walk import walk_front_to_back
-from .walkkernel import walk_compiled
+from wallbsp.camera import Camera, Projection
+from wallbsp.jit import kernels_enabled
+from wallbsp.sim.state import state_of
+from wallbsp.render.compiledfill import fill_compiled
+from wallbsp.render.fill import drawsegs, fill_flat
+from wallbsp.render.frame import Frame, save_ids
+from wallbsp.render.layers import RunLayers
+from wallbsp.render.overlay import draw_overlay, thing_boxes, walk_boxes
+from wallbsp.render.painter import fill_back_to_front, walk_back_to_front
+from wallbsp.render.rows import Entries
+from wallbsp.render.tables import height_tables, tree_tables
+from wallbsp.render.texfill import fill_textured, paint_textured
+from wallbsp.render.textures import level_textures
+from wallbsp.render.walk import walk_front_to_back
+from wallbsp.render.walkkernel import walk_compiled
 
 __all__ = ["render", "Frame", "save_ids"]
 

@@ -14,7 +14,7 @@ import weakref
 
 import numpy as np
 
-from .shading import lit_palette, pack_rgb, scaled_rgb
+from wallbsp.render.shading import lit_palette, pack_rgb, scaled_rgb
 
 __all__ = ["Atlas", "atlas_for"]
 

@@ -22,7 +22,7 @@ import math
 
 import numpy as np
 
-from ..compiled import kernel, step_kernel
+from wallbsp.jit import kernel, step_kernel
 
 __all__ = ["column_entries", "paint_textured", "paint_layers", "W_MIN"]
 

@@ -11,14 +11,14 @@ import weakref
 
 import numpy as np
 
-from . import columnkernel as kernels      # by module: the kernels swapped in when compiled
-from . import observekernel
-from .fill import DrawSegs
-from .frame import KIND_CEILING, KIND_FLOOR, KIND_WALL
-from .rowmajor import packed_pixels
-from .shading import LIGHT_LEVELS
-from .tables import key_light
-from .texfill import FLAT_OFFSET, key_parts, sky_columns, sky_rows
+from wallbsp.render import columnkernel as kernels
+from wallbsp.render import observekernel
+from wallbsp.render.fill import DrawSegs
+from wallbsp.render.frame import KIND_CEILING, KIND_FLOOR, KIND_WALL
+from wallbsp.render.rowmajor import packed_pixels
+from wallbsp.render.shading import LIGHT_LEVELS
+from wallbsp.render.tables import key_light
+from wallbsp.render.texfill import FLAT_OFFSET, key_parts, sky_columns, sky_rows
 
 __all__ = ["CompiledEntries", "CompiledLayers", "fill_compiled"]
 

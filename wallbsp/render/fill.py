@@ -13,9 +13,9 @@ from dataclasses import dataclass
 
 import numpy as np
 
-from .frame import KIND_CEILING, KIND_FLOOR, KIND_NOTHING, KIND_WALL, size_table
-from .shading import plane_stripes, wall_codes
-from .tables import key_light
+from wallbsp.render.frame import KIND_CEILING, KIND_FLOOR, KIND_NOTHING, KIND_WALL, size_table
+from wallbsp.render.shading import plane_stripes, wall_codes
+from wallbsp.render.tables import key_light
 
 __all__ = ["DrawSegs", "Runs", "front_to_back_runs", "drawsegs", "column_windows",
            "row_numbers", "colour_columns", "fill_flat"]

@@ -12,7 +12,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .frame import KIND_CEILING, KIND_FLOOR, KIND_WALL, size_table
+from wallbsp.render.frame import KIND_CEILING, KIND_FLOOR, KIND_WALL, size_table
 
 __all__ = ["RunLayers"]
 

@@ -18,11 +18,11 @@ import weakref
 
 import numpy as np
 
-from .clipping import Slices, clipped, texture_rows
-from .frame import KIND_WALL
-from .shading import FULL_BRIGHT, light_levels
-from .tables import key_light
-from .textures import side_geometry, switched_name
+from wallbsp.render.clipping import Slices, clipped, texture_rows
+from wallbsp.render.frame import KIND_WALL
+from wallbsp.render.shading import FULL_BRIGHT, light_levels
+from wallbsp.render.tables import key_light
+from wallbsp.render.textures import side_geometry, switched_name
 
 __all__ = ["masked_slices", "has_masked_walls", "masked_keys", "MaskedKeys"]
 

@@ -6,8 +6,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..compiled import kernel
-from .shading import FULL_BRIGHT, LIGHT_DISTANCE
+from wallbsp.jit import kernel
+from wallbsp.render.shading import FULL_BRIGHT, LIGHT_DISTANCE
 
 __all__ = ["masked_columns"]
 

@@ -12,9 +12,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..compiled import kernel
-from .columnkernel import paint_layers
-from .rowmajor import label_rows_kernel, rgb_rows_kernel, transpose_kernel
+from wallbsp.jit import kernel
+from wallbsp.render.columnkernel import paint_layers
+from wallbsp.render.rowmajor import label_rows_kernel, rgb_rows_kernel, transpose_kernel
 
 __all__ = ["observe_rows"]
 

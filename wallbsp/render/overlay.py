@@ -18,17 +18,17 @@ import weakref
 
 import numpy as np
 
-from ..compiled import kernels_enabled
-from .atlas import atlas_for
-from .clipping import ClipWindows, Slices
-from .fill import drawsegs, front_to_back_runs
-from .masked import has_masked_walls, masked_slices
-from .overlaycompiled import compiled_overlay
-from .rowmajor import packed_pixels
-from .rows import Entries
-from .sprites import sprite_slices
-from .textures import level_resources
-from .walk import walk_front_to_back
+from wallbsp.jit import kernels_enabled
+from wallbsp.render.atlas import atlas_for
+from wallbsp.render.clipping import ClipWindows, Slices
+from wallbsp.render.fill import drawsegs, front_to_back_runs
+from wallbsp.render.masked import has_masked_walls, masked_slices
+from wallbsp.render.overlaycompiled import compiled_overlay
+from wallbsp.render.rowmajor import packed_pixels
+from wallbsp.render.rows import Entries
+from wallbsp.render.sprites import sprite_slices
+from wallbsp.render.textures import level_resources
+from wallbsp.render.walk import walk_front_to_back
 
 __all__ = ["Overlay", "OverlayLayers", "draw_masked", "draw_overlay", "composite", "walk_boxes",
            "thing_boxes"]

@@ -18,11 +18,11 @@ from typing import NamedTuple
 
 import numpy as np
 
-from ..thingtypes import SPAWNCEILING
-from . import maskedkernel, overlaykernel    # by module: compiled.py swaps numba's
-from .masked import masked_keys              # dispatchers in for the lazy kernels there
-from .sprites import pictures, rotations
-from .tables import key_light
+from wallbsp.sim.thingtypes import SPAWNCEILING
+from wallbsp.render import maskedkernel, overlaykernel
+from wallbsp.render.masked import masked_keys
+from wallbsp.render.sprites import pictures, rotations
+from wallbsp.render.tables import key_light
 
 __all__ = ["compiled_overlay", "Reports"]
 

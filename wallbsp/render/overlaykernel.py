@@ -14,10 +14,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..compiled import kernel, step_kernel
-from .frame import KIND_THING, KIND_WALL
-from .shading import FULL_BRIGHT, LIGHT_DISTANCE, LIGHT_LEVELS
-from .sprites import MIN_DEPTH
+from wallbsp.jit import kernel, step_kernel
+from wallbsp.render.frame import KIND_THING, KIND_WALL
+from wallbsp.render.shading import FULL_BRIGHT, LIGHT_DISTANCE, LIGHT_LEVELS
+from wallbsp.render.sprites import MIN_DEPTH
 
 __all__ = ["visible_things", "draw_things"]
 

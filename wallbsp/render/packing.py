@@ -14,7 +14,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from .shading import LIGHT_LEVELS, hex_rgb, lit_palette, pack_rgb, scaled_rgb
+from wallbsp.render.shading import LIGHT_LEVELS, hex_rgb, lit_palette, pack_rgb, scaled_rgb
 
 __all__ = ["Packer", "PackedPicture", "UNLIT", "PAD", "lit_columns", "packed_picture",
            "picture_cache"]

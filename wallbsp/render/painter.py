@@ -10,12 +10,12 @@ from __future__ import annotations
 
 import numpy as np
 
-from .fill import colour_columns, row_numbers
-from .frame import KIND_CEILING, KIND_FLOOR, KIND_WALL
-from .project import make_box_check, make_projector
-from .shading import plane_stripes, wall_codes
-from .tables import key_light
-from .walk import Walk, eye_side, eye_tolerance
+from wallbsp.render.fill import colour_columns, row_numbers
+from wallbsp.render.frame import KIND_CEILING, KIND_FLOOR, KIND_WALL
+from wallbsp.render.project import make_box_check, make_projector
+from wallbsp.render.shading import plane_stripes, wall_codes
+from wallbsp.render.tables import key_light
+from wallbsp.render.walk import Walk, eye_side, eye_tolerance
 
 __all__ = ["PAINTER_CHUNK", "walk_back_to_front", "fill_back_to_front", "paint_runs",
            "PainterRuns"]

@@ -9,8 +9,8 @@ from __future__ import annotations
 
 import math
 
-from ..camera import Projection
-from ..jitable import jitable
+from wallbsp.camera import Projection
+from wallbsp.jit import jitable
 
 __all__ = ["NEAR", "make_projector", "make_box_check", "project_seg", "view_numbers"]
 

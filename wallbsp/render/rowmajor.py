@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..compiled import kernel, kernels_enabled
+from wallbsp.jit import kernel, kernels_enabled
 
 __all__ = ["rows_of", "rgb_rows", "labels_rows", "packed_pixels",
            "transpose_kernel", "rgb_rows_kernel", "label_rows_kernel"]

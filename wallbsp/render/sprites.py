@@ -19,10 +19,10 @@ from __future__ import annotations
 
 import numpy as np
 
-from ..thingtypes import COUNTKILL, SPECIAL
-from .clipping import Slices, clipped, texture_rows
-from .frame import KIND_THING
-from .shading import FULL_BRIGHT, far_level, light_levels
+from wallbsp.sim.thingtypes import COUNTKILL, SPECIAL
+from wallbsp.render.clipping import Slices, clipped, texture_rows
+from wallbsp.render.frame import KIND_THING
+from wallbsp.render.shading import FULL_BRIGHT, far_level, light_levels
 
 __all__ = ["MIN_DEPTH", "rotations", "pictures", "sprite_slices"]
 

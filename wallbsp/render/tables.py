@@ -17,8 +17,8 @@ from functools import cached_property
 
 import numpy as np
 
-from ..compiled import kernel, kernels_enabled
-from .shading import LIGHT_LEVELS, colour_table, far_level
+from wallbsp.jit import kernel, kernels_enabled
+from wallbsp.render.shading import LIGHT_LEVELS, colour_table, far_level
 
 __all__ = ["TreeTables", "HeightTables", "per_tree", "tree_tables", "height_tables",
            "key_light"]

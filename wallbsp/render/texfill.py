@@ -20,13 +20,13 @@ from functools import cached_property
 
 import numpy as np
 
-from ..camera import column_angles
-from .fill import front_to_back_runs, row_numbers
-from .frame import KIND_CEILING, KIND_FLOOR, KIND_NOTHING, KIND_WALL, size_table
-from .painter import PainterRuns, paint_runs
-from .shading import FULL_BRIGHT, light_levels, plane_levels
-from .tables import key_light
-from .textures import FLAT_SIDE, UNLIT
+from wallbsp.camera import column_angles
+from wallbsp.render.fill import front_to_back_runs, row_numbers
+from wallbsp.render.frame import KIND_CEILING, KIND_FLOOR, KIND_NOTHING, KIND_WALL, size_table
+from wallbsp.render.painter import PainterRuns, paint_runs
+from wallbsp.render.shading import FULL_BRIGHT, light_levels, plane_levels
+from wallbsp.render.tables import key_light
+from wallbsp.render.textures import FLAT_SIDE, UNLIT
 
 __all__ = ["entry_parts", "key_parts", "RunSurfaces", "shade", "fill_textured",
            "paint_textured", "sky_columns", "sky_rows"]

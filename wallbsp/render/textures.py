@@ -28,9 +28,10 @@ import weakref
 
 import numpy as np
 
-from ..resources import shared_resources, sky_name
-from .packing import UNLIT, Packer
-from .tables import per_tree
+from wallbsp.assets.naming import switched_name
+from wallbsp.assets.resources import shared_resources, sky_name
+from wallbsp.render.packing import UNLIT, Packer
+from wallbsp.render.tables import per_tree
 
 __all__ = ["TexturePack", "LevelTextures", "UNLIT", "FLAT_SIDE", "side_geometry",
            "switched_name", "level_textures", "level_resources"]
@@ -40,19 +41,6 @@ PARTS = ("upper", "middle", "lower")
 NO_NAME = -2                  # a part with no texture named (-1: named, no picture)
 PART_FIELDS = ("base", "pitch", "stride", "height", "width", "start_x", "start_y",
                "direction_x", "direction_y", "x_offset", "y_offset", "which", "plus")
-
-
-def switched_name(name: str | None) -> str | None:
-    """The other texture of a switch pair (``SW1BRCOM`` ↔ ``SW2BRCOM``), or None: DOOM's
-    switch list pairs only names of this form, so the rule is the naming convention."""
-    if not name:
-        return None
-    upper = name.upper()
-    if upper.startswith("SW1") and len(upper) > 3:
-        return "SW2" + name[3:]
-    if upper.startswith("SW2") and len(upper) > 3:
-        return "SW1" + name[3:]
-    return None
 
 
 def side_geometry(tables, level):

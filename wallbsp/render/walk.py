@@ -21,9 +21,9 @@ from __future__ import annotations
 from bisect import bisect_right
 from dataclasses import dataclass, field
 
-from ..geometry import exact_side, side_tolerance
-from .columns import ClosedColumns
-from .project import make_box_check, make_projector
+from wallbsp.geometry import exact_side, side_tolerance
+from wallbsp.render.columns import ClosedColumns
+from wallbsp.render.project import make_box_check, make_projector
 
 __all__ = ["Walk", "walk_front_to_back", "eye_side", "eye_tolerance"]
 

@@ -12,10 +12,10 @@ import weakref
 
 import numpy as np
 
-from ..compiled import kernel, step_kernel
-from ..jitable import register_jitables
-from .project import project_seg, view_numbers
-from .walk import Walk, eye_tolerance, walk_front_to_back
+from wallbsp.jit import kernel, step_kernel
+from wallbsp.jit import register_jitables
+from wallbsp.render.project import project_seg, view_numbers
+from wallbsp.render.walk import Walk, eye_tolerance, walk_front_to_back
 
 __all__ = ["walk_compiled"]
 

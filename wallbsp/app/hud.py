@@ -1,0 +1,120 @@
+"""The walkthrough's heads-up display, drawn over the view: the automap (``mapview``'s
+transform and layers), the readout, the help line and the last message.
+
+Functions of the walkthrough's state (``app.Walkthrough``) and its open window; the app
+calls ``draw_overlays`` once a frame.  No physics, no events.
+"""
+from __future__ import annotations
+
+import time
+
+from wallbsp.app.mapview import (THING_KINDS, MapView, automap_layer, draw_marker, draw_things,
+    level_bounds, partition_pieces)
+from wallbsp.sim.queries import PLAYER_RADIUS
+
+__all__ = ["HELP", "MESSAGE_SECONDS", "draw_overlays", "readout_lines", "inventory_lines",
+           "texture_mode", "draw_automap", "say"]
+
+HELP = ("WASD/arrows move   Left/Right or mouse (M grab) turn   Shift run   E/Space use   "
+        "Esc quit",
+        "Tab map  O overlay  L lines  T things  X textures  R stats  P painter  "
+        "[ ] resolution  F fullscreen  K shot  H help")
+TEXT, SHADOW = (235, 235, 235), (0, 0, 0)
+MESSAGE_SECONDS = 2.0
+
+
+def say(walk, text, seconds=MESSAGE_SECONDS):
+    """Show ``text`` as the walkthrough's message for ``seconds``."""
+    walk.message, walk.message_until = text, time.perf_counter() + seconds
+
+
+def draw_overlays(walk):
+    """Whatever the walkthrough's toggles ask for, over the view in the window."""
+    if walk.show_map:
+        draw_automap(walk)
+    if walk.show_readout:
+        _draw_text_block(walk, readout_lines(walk), (8, 8))
+    if walk.show_help:
+        height = walk.display.get_height()
+        _draw_text_block(walk, HELP, (8, height - 8 - len(HELP) * walk.font.get_linesize()))
+    if walk.message and time.perf_counter() < walk.message_until:
+        _draw_text_block(walk, [walk.message], (walk.display.get_width() // 2 - 100, 8))
+
+
+def readout_lines(walk):
+    """The readout: frame time and how the view is drawn, the walk's statistics, where the
+    player is, the world (its tic, the movers moving, secrets found of all) and what the
+    player holds (``inventory_lines``)."""
+    stats, player, world = walk.frame.stats, walk.player, walk.world
+    ms = walk.frame_ms
+    found, total = world.secrets
+    return [f"{ms:.2f} ms  {1000.0 / ms if ms else 0.0:.0f} fps  "
+            f"{walk.size[0]}x{walk.size[1]}  {walk.order}  {texture_mode(walk)}",
+            f"nodes visited {stats['nodes_visited']}  segs drawn {stats['segs_drawn']}  "
+            f"early exit {'yes' if stats['early_exit'] else 'no'}",
+            f"x {player.x:.0f}  y {player.y:.0f}  eye {player.eye:.0f}  "
+            f"angle {player.angle:.0f}",
+            f"tic {world.tic_count}  movers {world.rules.active_movers}  "
+            f"secrets {found}/{total}",
+            *inventory_lines(world.inventory)]
+
+
+def inventory_lines(inventory):
+    """Health, armour and keys held; the ammunition of every kind."""
+    keys = ", ".join(sorted(inventory.keys)) or "none"
+    ammo = "  ".join(f"{kind} {rounds}" for kind, rounds in inventory.ammo.items())
+    return [f"health {inventory.health}  armour {inventory.armour}  keys {keys}",
+            f"ammo  {ammo}"]
+
+
+def texture_mode(walk) -> str:
+    """How the view is drawn: ``textures``, or ``flat colours`` (asked for, or a level that
+    names no textures)."""
+    if not walk.tree.level.resources:
+        return "flat colours (no textures)"
+    return "textures" if walk.textures else "flat colours"
+
+
+def _draw_text_block(walk, lines, topleft):
+    """Text with a one-pixel shadow, readable over any part of the view."""
+    x, y = topleft
+    for line in lines:
+        walk.display.blit(walk.font.render(line, True, SHADOW), (x + 1, y + 1))
+        walk.display.blit(walk.font.render(line, True, TEXT), (x, y))
+        y += walk.font.get_linesize()
+
+
+# -- the automap ------------------------------------------------------------------------------
+
+def draw_automap(walk):
+    """The static layer (cached per window size and mode), the things as they are now
+    (toggled by ``show_things``, with their colour key), then the player and view cone."""
+    size = walk.display.get_size()
+    view = MapView.centred(level_bounds(walk.tree), size)
+    key = (size, walk.map_overlay, walk.show_partitions)
+    if walk.map_cache[0] != key:
+        walk.map_cache = (key, _map_layer(walk, size, view))
+    walk.display.blit(walk.map_cache[1], (0, 0))
+    if walk.show_things:
+        draw_things(walk.display, view, walk.world.things)
+        _draw_thing_key(walk)
+    player = walk.player
+    draw_marker(walk.display, view, (player.x, player.y), PLAYER_RADIUS, player.angle, walk.fov)
+
+
+def _draw_thing_key(walk):
+    """The things' colours, one word each, along the map's top right."""
+    x = walk.display.get_width() - 8
+    for kind, colour in reversed(THING_KINDS.items()):
+        word = walk.font.render(kind, True, colour)
+        x -= word.get_width()
+        walk.display.blit(word, (x, 8))
+        x -= 10
+
+
+def _map_layer(walk, size, view):
+    """The automap's static layer; partition lines computed on first use and kept."""
+    if walk.show_partitions and walk.partitions is None:
+        walk.partitions = partition_pieces(walk.tree, level_bounds(walk.tree))
+    return automap_layer(walk.tree, view, size, walk.display, walk.map_overlay,
+                         walk.partitions if walk.show_partitions else None)

@@ -1,0 +1,258 @@
+"""Top-down pictures of a level (S004: visual tools for debugging the compiler).
+
+One transform, ``MapView`` (map units to pixels, y up in the map and down in the picture),
+serves both pictures: the ``draw`` command's PNG of the partition (walls, every partition
+line clipped to the convex cell it splits, the segs coloured by the depth of their node, a
+legend) and the walkthrough's automap.  Drawn with pygame on off-screen surfaces, imported
+when a picture is drawn; no window is opened here.
+"""
+from __future__ import annotations
+
+import colorsys
+import math
+
+import numpy as np
+
+from wallbsp.image import save_png
+
+__all__ = ["MapView", "level_bounds", "node_depths", "depth_color", "clip_polygon",
+           "partition_pieces", "draw_segs_by_depth", "draw_partition", "automap_layer",
+           "draw_marker", "THING_KINDS", "thing_kind", "draw_things"]
+
+BACKGROUND = (16, 16, 20)
+WALL = (70, 70, 78)
+PARTITION = (48, 84, 120)
+TEXT = (230, 230, 230)
+MAP_BACKGROUND, MARKER = (12, 12, 16), (255, 255, 255)
+# the automap's things, by kind (``thing_kind``), in the order of its colour key
+THING_KINDS = {"pickups": (90, 220, 90), "keys": (255, 215, 40), "monsters": (235, 70, 60),
+               "decorations": (150, 150, 165)}
+THING_MIN_PIXELS = 3     # a thing's triangle is never smaller than this (half its length)
+PICTURE_MARGIN = 20      # pixels around the map in the draw command's picture
+LEGEND_HEIGHT = 50       # pixels above the map for the legend
+
+
+class MapView:
+    """Map units to pixels: ``view(x, y) -> (px, py)``; ``scale`` pixels per map unit.
+    ``bounds`` ``(x0, y0, x1, y1)``'s top-left corner ``(x0, y1)`` lands on ``origin``."""
+
+    def __init__(self, bounds, scale, origin):
+        self.x0, self.y1 = bounds[0], bounds[3]
+        self.scale = scale
+        self.ox, self.oy = origin
+
+    @classmethod
+    def centred(cls, bounds, size, margin=24):
+        """The bounds fitted into a ``size`` window, centred, ``margin`` pixels clear."""
+        x0, y0, x1, y1 = bounds
+        width, height = x1 - x0, y1 - y0
+        scale = min(size[0] - 2 * margin, size[1] - 2 * margin) / max(width, height, 1)
+        return cls(bounds, scale, ((size[0] - width * scale) / 2, (size[1] - height * scale) / 2))
+
+    @classmethod
+    def picture(cls, bounds, longest):
+        """``(view, size)`` of a picture whose map part is about ``longest`` pixels on its
+        longer side, with a margin and room for a legend above."""
+        x0, y0, x1, y1 = bounds
+        scale = (longest - 2 * PICTURE_MARGIN) / max(x1 - x0, y1 - y0, 1)
+        size = (int((x1 - x0) * scale) + 2 * PICTURE_MARGIN,
+                int((y1 - y0) * scale) + 2 * PICTURE_MARGIN + LEGEND_HEIGHT)
+        return cls(bounds, scale, (PICTURE_MARGIN, PICTURE_MARGIN + LEGEND_HEIGHT)), size
+
+    def __call__(self, x, y):
+        return (self.ox + (x - self.x0) * self.scale, self.oy + (self.y1 - y) * self.scale)
+
+
+def level_bounds(tree, pad=0.0):
+    """``(x0, y0, x1, y1)`` of the level's vertices, widened by ``pad`` times the longer
+    side plus one unit when ``pad`` is given; ``(0, 0, 1, 1)`` for an empty level."""
+    v = np.array(tree.level.vertices, dtype=np.float64).reshape(-1, 2)
+    if not len(v):
+        return (0.0, 0.0, 1.0, 1.0)
+    lo, hi = v.min(axis=0), v.max(axis=0)
+    margin = pad * max(hi - lo) + 1 if pad else 0.0
+    return (lo[0] - margin, lo[1] - margin, hi[0] + margin, hi[1] + margin)
+
+
+def node_depths(tree) -> list:
+    depth = [0] * tree.node_count
+    for node, (front, back) in enumerate(tree.node_child.tolist()):
+        for kid in (front, back):
+            if kid >= 0:
+                depth[kid] = depth[node] + 1
+    return depth
+
+
+def depth_color(depth: int, max_depth: int):
+    """Shallow nodes red, deep ones violet: the tree's shape at a glance."""
+    hue = 0.8 * depth / max(1, max_depth - 1)
+    return tuple(int(255 * c) for c in colorsys.hsv_to_rgb(hue, 0.85, 1.0))
+
+
+def clip_polygon(poly, line, keep_sign):
+    """The part of a convex polygon where ``sign(a*x + b*y + c) != -keep_sign``."""
+    a, b, c = line
+    out = []
+    for i, p in enumerate(poly):
+        q = poly[(i + 1) % len(poly)]
+        sp = keep_sign * (a * p[0] + b * p[1] + c)
+        sq = keep_sign * (a * q[0] + b * q[1] + c)
+        if sp >= 0:
+            out.append(p)
+        if (sp > 0 > sq) or (sp < 0 < sq):
+            t = sp / (sp - sq)
+            out.append((p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])))
+    return out
+
+
+def _line_in_cell(poly, line):
+    """The piece of a line inside a convex polygon, or None."""
+    a, b, c = (float(v) for v in line)
+    hits = []
+    for i, p in enumerate(poly):
+        q = poly[(i + 1) % len(poly)]
+        sp, sq = a * p[0] + b * p[1] + c, a * q[0] + b * q[1] + c
+        if sp == 0:
+            hits.append(p)
+        elif sp * sq < 0:
+            t = sp / (sp - sq)
+            hits.append((p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])))
+    if len(hits) < 2:
+        return None
+    direction = (b, -a)
+    hits.sort(key=lambda h: h[0] * direction[0] + h[1] * direction[1])
+    return hits[0], hits[-1]
+
+
+def partition_pieces(tree, bounds):
+    """Each node's partition line clipped to its cell: ``[(node, p, q), ...]``."""
+    x0, y0, x1, y1 = bounds
+    pieces = []
+    stack = [(tree.root, [(x0, y0), (x1, y0), (x1, y1), (x0, y1)])] if tree.node_count else []
+    while stack:
+        node, cell = stack.pop()
+        if node < 0 or len(cell) < 3:
+            continue
+        line = tuple(int(v) for v in tree.node_line[node])
+        piece = _line_in_cell(cell, line)
+        if piece:
+            pieces.append((node, *piece))
+        front, back = tree.node_child[node].tolist()
+        stack.append((front, clip_polygon(cell, line, -1)))
+        stack.append((back, clip_polygon(cell, line, 1)))
+    return pieces
+
+
+def draw_segs_by_depth(surface, tree, view, widths=(2, 2)):
+    """Every seg as a line coloured by its node's depth; ``widths``: (one-sided,
+    two-sided) line widths in pixels."""
+    import pygame
+    depth = node_depths(tree)
+    levels = max(depth, default=0) + 1
+    two_sided = [w.back is not None for w in tree.level.walls]
+    seg_wall = tree.seg_wall.tolist()
+    for node, (start, stop) in enumerate(tree.node_segs.tolist()):
+        color = depth_color(depth[node], levels)
+        for seg, (x1, y1, x2, y2) in enumerate(tree.seg_xy[start:stop].tolist(), start):
+            width = widths[1] if two_sided[seg_wall[seg]] else widths[0]
+            pygame.draw.line(surface, color, view(x1, y1), view(x2, y2), width)
+    return levels
+
+
+def draw_partition(tree, path, size=1024):
+    """Write the picture of the tree's partition to ``path`` (PNG, atomically)."""
+    import pygame
+    pygame.font.init()
+    bounds = level_bounds(tree, pad=0.03)
+    view, picture_size = MapView.picture(bounds, size)
+    surface = pygame.Surface(picture_size)
+    surface.fill(BACKGROUND)
+    for _node, p, q in partition_pieces(tree, bounds):
+        pygame.draw.line(surface, PARTITION, view(*p), view(*q), 1)
+    for wall in range(len(tree.level.walls)):
+        p, q = tree.wall_ends(wall)
+        pygame.draw.line(surface, WALL, view(*p), view(*q), 3)
+    levels = draw_segs_by_depth(surface, tree, view)
+    _legend(surface, tree, levels)
+    save_png(path, pygame.surfarray.array3d(surface).transpose(1, 0, 2))
+
+
+def _legend(surface, tree, max_depth):
+    import pygame
+    stats = tree.stats()
+    font = pygame.font.Font(None, 22)
+    lines = [f"{tree.level.name}: {stats['walls']} walls, {stats['segs']} segs, "
+             f"{stats['nodes']} nodes, depth {stats['max_depth']}",
+             f"candidates {stats['candidates']}, seed {stats['seed']}; "
+             f"segs coloured by node depth (shallow to deep):"]
+    for i, text in enumerate(lines):
+        surface.blit(font.render(text, True, TEXT), (20, 8 + 22 * i))
+    bar_x = 20 + font.size(lines[1])[0] + 10
+    for d in range(max_depth):
+        x = bar_x + int(200 * d / max_depth)
+        pygame.draw.rect(surface, depth_color(d, max_depth),
+                         (x, 32, max(1, 200 // max_depth + 1), 14))
+
+
+# -- the automap --------------------------------------------------------------------------------
+
+def automap_layer(tree, view, size, like, overlay=False, partitions=None):
+    """The automap's static picture: segs coloured by the depth of their node (one-sided
+    ones thicker), ``partitions`` (from ``partition_pieces``) under them if given.  In
+    ``overlay`` mode black is transparent, so the view shows through.  ``like``: a surface
+    whose pixel format the layer takes (the window's, for fast blits)."""
+    import pygame
+    layer = pygame.Surface(size, 0, like)
+    layer.fill((0, 0, 0) if overlay else MAP_BACKGROUND)
+    if overlay:
+        layer.set_colorkey((0, 0, 0))
+    for _node, p, q in partitions or ():
+        pygame.draw.line(layer, PARTITION, view(*p), view(*q), 1)
+    draw_segs_by_depth(layer, tree, view, widths=(2, 1))
+    return layer
+
+
+def draw_marker(surface, view, centre, radius, angle, fov):
+    """A player on the map: its circle and its view cone (256 map units, at least 40 px)."""
+    import pygame
+    cx, cy = view(*centre)
+    pygame.draw.circle(surface, MARKER, (cx, cy), max(3, round(radius * view.scale)), 1)
+    reach = max(40.0, 256.0 * view.scale)
+    for side in (-1, 1):
+        a = math.radians(angle + side * fov / 2)
+        pygame.draw.line(surface, MARKER, (cx, cy), (cx + reach * math.cos(a),
+                                                      cy - reach * math.sin(a)), 1)
+
+
+def thing_kind(info) -> str:
+    """The automap's kind of a thing type (a ``thingtypes.ThingInfo``, None: unknown): one
+    of ``THING_KINDS``."""
+    if info is not None and info.pickup is not None:
+        return "keys" if info.pickup.kind == "key" else "pickups"
+    if info is not None and info.monster:
+        return "monsters"
+    return "decorations"
+
+
+def draw_things(surface, view, things) -> int:
+    """Every alive, drawn thing of ``things`` (``wallbsp.sim.things.Things``) as a triangle
+    pointing the way it faces (DOOM's automap things), its radius long (at least
+    ``THING_MIN_PIXELS``), coloured by kind.  Returns how many were drawn."""
+    import pygame
+    shown = np.flatnonzero(things.alive & things.drawn)
+    if not shown.size:
+        return 0
+    types, first = np.unique(things.type[shown], return_index=True)
+    colour = {t: THING_KINDS[thing_kind(things.info(shown[i]))]
+              for t, i in zip(types.tolist(), first.tolist())}
+    px = view.ox + (things.x[shown] - view.x0) * view.scale
+    py = view.oy + (view.y1 - things.y[shown]) * view.scale
+    size = np.maximum(THING_MIN_PIXELS, things.radius[shown] * view.scale)
+    corners = []
+    for turn in (0.0, 140.0, -140.0):          # the tip, then the two back corners
+        a = np.radians(things.angle[shown] + turn)
+        corners.append((px + size * np.cos(a), py - size * np.sin(a)))
+    points = np.stack([np.stack(c, axis=1) for c in corners], axis=1).tolist()
+    for thing_type, triangle in zip(things.type[shown].tolist(), points):
+        pygame.draw.polygon(surface, colour[thing_type], triangle)
+    return len(points)

@@ -1,0 +1,153 @@
+"""Compiled kernels: numba's ``njit`` for the few loops that numpy cannot batch cheaply.
+
+A frame is a few hundred small batches; at 160×120 numpy's fixed cost per call, not the
+pixels, sets the frame rate.  The hot stages (the walk, the column fill of a front-to-back
+frame, the masked pass, collision) therefore have a compiled kernel beside their numpy or
+Python code.  That code stays the reference: the tests draw every frame both ways and
+require the same bytes, and it is what runs where numba is missing or
+``WALLBSP_KERNELS=numpy`` is set.
+
+numba is imported when the first kernel is first called, not with the package: importing
+it costs a third of a second, which a command that draws nothing (``wallbsp stats``) should
+not pay.  Until then a kernel is a ``LazyKernel``; the first call compiles every kernel made
+so far (numba's dispatchers, which compile per signature on their first call and keep the
+result on disk, ``cache=True``) and puts the dispatchers in place of the lazy kernels in
+the modules that define them, so kernels that call kernels are compiled together.
+"""
+from __future__ import annotations
+
+import importlib.util
+import os
+import threading
+
+__all__ = ["kernel", "step_kernel", "kernels_enabled", "use_kernels", "AVAILABLE", "LazyKernel",
+           "jitable", "compiled_as", "register_jitables"]
+
+AVAILABLE = importlib.util.find_spec("numba") is not None
+_STATE = {"on": AVAILABLE and os.environ.get("WALLBSP_KERNELS", "") != "numpy",
+          "numba": None}
+_LAZY: list = []
+_LOADING = threading.Lock()             # two threads' first calls load numba once
+
+
+_INLINE = "_wallbsp_inline"         # a step function's mark: compiled into its callers
+
+
+def _jit(function):
+    numba = _STATE["numba"]
+    inline = "always" if getattr(function, _INLINE, False) else "never"
+    return numba.njit(cache=True, nogil=True, error_model="numpy", inline=inline)(function)
+
+
+class LazyKernel:
+    """A kernel before numba is imported: calling it (or reading a dispatcher attribute
+    such as ``signatures``) compiles every lazy kernel and forwards to its dispatcher."""
+
+    def __init__(self, function):
+        self.py_func = function
+        self.dispatcher = None
+        self.__name__, self.__doc__ = function.__name__, function.__doc__
+        self.__wrapped__ = function
+
+    def __call__(self, *args):
+        if self.dispatcher is None:
+            _load_numba()
+        return self.dispatcher(*args)
+
+    def __getattr__(self, name):
+        if name == "dispatcher":                # not set yet: during __init__ only
+            raise AttributeError(name)
+        if self.dispatcher is None:
+            _load_numba()
+        return getattr(self.dispatcher, name)
+
+
+def _load_numba():
+    """Import numba, make every lazy kernel's dispatcher and swap the dispatchers in for
+    the lazy kernels in the globals of the modules that define kernels (a kernel that
+    calls another must see a dispatcher when numba compiles it)."""
+    with _LOADING:
+        if _STATE["numba"] is None:
+            import numba
+            _STATE["numba"] = numba
+        for lazy in _LAZY:
+            if lazy.dispatcher is None:
+                lazy.dispatcher = _jit(lazy.py_func)
+        for names in {id(lazy.py_func.__globals__): lazy.py_func.__globals__
+                      for lazy in _LAZY}.values():
+            for name, value in list(names.items()):
+                if isinstance(value, LazyKernel):
+                    names[name] = value.dispatcher
+        _LAZY.clear()
+
+
+def kernel(function):
+    """``function`` to be compiled by numba (no Python objects, no GIL, cached on disk),
+    lazily (see the module's docstring); the plain function where numba is absent (never
+    called then: see ``kernels_enabled``)."""
+    if not AVAILABLE:
+        return function
+    if _STATE["numba"] is not None:
+        return _jit(function)
+    lazy = LazyKernel(function)
+    _LAZY.append(lazy)
+    return lazy
+
+
+def step_kernel(function):
+    """A ``kernel`` that other kernels call per pixel run or per entry: numba compiles it
+    into each caller (``inline="always"``) rather than calling it, which saves the call's
+    cost — a tenth of a frame's fill, measured — for a little more compile time."""
+    setattr(function, _INLINE, True)
+    return kernel(function)
+
+
+def kernels_enabled() -> bool:
+    """Whether the compiled kernels are used (else the numpy reference code)."""
+    return _STATE["on"]
+
+
+def use_kernels(on: bool) -> bool:
+    """Turn the kernels on or off (on needs numba); returns the previous setting.  The
+    tests use it to draw the same frame both ways."""
+    previous = _STATE["on"]
+    _STATE["on"] = bool(on) and AVAILABLE
+    return previous
+
+
+# Plain functions that numba may also compile inside a kernel: ``register_jitable``, done
+# only when a kernel that calls them is about to be built.  numba's own
+# ``register_jitable`` and ``overload`` need numba imported, so functions are marked here
+# instead and registered by ``register_jitables()``, which whoever makes such a kernel
+# calls first (``sim.collision``).  Without numba all of this does nothing.
+_PENDING: list = []          # functions to register
+_OVERLOADS: list = []        # (Python function, what a kernel runs for it)
+
+
+def jitable(function):
+    """Mark ``function`` (in the subset of Python numba compiles) as callable from
+    kernels; it is returned unchanged, for the interpreter."""
+    if AVAILABLE:
+        _PENDING.append(function)
+    return function
+
+
+def compiled_as(python_function, choose) -> None:
+    """Inside a kernel, a call of ``python_function`` runs another function instead:
+    ``choose``, with the same parameters (numba passes their types), returns it (a
+    ``jitable``, same parameters again).  numba's ``overload``."""
+    if AVAILABLE:
+        _OVERLOADS.append((python_function, choose))
+
+
+def register_jitables() -> None:
+    """Register with numba what is marked (importing numba the first time)."""
+    if not (_PENDING or _OVERLOADS):
+        return
+    from numba.extending import overload, register_jitable
+    for function in _PENDING:
+        register_jitable(function)
+    for python_function, choose in _OVERLOADS:
+        overload(python_function, jit_options={"error_model": "numpy"})(choose)
+    _PENDING.clear()
+    _OVERLOADS.clear()
