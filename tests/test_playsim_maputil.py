@@ -240,3 +240,38 @@ def test_check_sight_through_one_node():
     assert not p.p_check_sight(looker, thing(110, -40, 1))   # hidden under the step
     p.rejectmatrix = bytes([2])                    # sector 0 -> sector 1 rejected
     assert not p.p_check_sight(looker, thing(180, 40, 1))
+
+
+def test_intercepts_overrun():
+    """Entries 129 on overwrite vanilla's globals after intercepts[]: entry 130's frac
+    and isaline land on lowfloor and openbottom, entry 147's isaline on bmapwidth."""
+    from wallbsp.game.playsim.maputil import Intercept
+    p = _corridor()
+    p.lowfloor = p.openbottom = 5
+    for i in range(130):
+        p._add_intercept(Intercept(1000 + i, True, p.lines[0], None))
+    assert (p.lowfloor, p.openbottom) == (5, 5)        # 0..129: no global touched yet
+    p._add_intercept(Intercept(777, True, p.lines[0], None))
+    assert (p.lowfloor, p.openbottom) == (777, 1)
+    for i in range(131, 147):
+        p._add_intercept(Intercept(i, False, None, Mobj()))
+    assert p.bmapwidth == 2
+    p._add_intercept(Intercept(9, False, None, Mobj()))
+    assert p.bmapwidth == 0 and p.bmaporgx == 0
+
+
+def test_spechit_overrun():
+    """The 9th special line touched overwrites tmbbox[BOXTOP] with doom2.exe's address
+    of the line."""
+    p = _corridor()
+    mo = Mobj()
+    mo.radius = 16 * U
+    p.tmthing = mo
+    p.numspechit = 8
+    line = p.lines[2]
+    line.special = 1
+    p.tmbbox[:] = [80 * U, 48 * U, 184 * U, 216 * U]
+    p.tmfloorz, p.tmceilingz, p.tmdropoffz = 0, 128 * U, 0
+    assert p.pit_check_line(line)
+    assert p.numspechit == 9 and p.spechit[8] is line
+    assert p.tmbbox[BOXTOP] == 0x01C09C98 + 2 * 0x3E

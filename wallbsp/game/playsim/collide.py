@@ -4,9 +4,10 @@ its blockmap callbacks), moving it there and crossing the special lines on the w
 moves (P_ChangeSector, crushing).  Chocolate Doom's emulation of vanilla's overrun of
 its 8 ``spechit`` entries is kept.  The slide move is in ``slide.py``.
 
-Per-level state (``init_collide``): ``tmbbox``, ``tmthing``, ``tmflags``, ``tmx``,
-``tmy``, ``floatok``, ``tmfloorz``, ``tmceilingz``, ``tmdropoffz``, ``ceilingline``,
-``spechit``, ``numspechit``, ``crushchange``, ``nofit``.
+State (``init_collide``, set once: C never resets these globals between levels):
+``tmbbox``, ``tmthing``, ``tmflags``, ``tmx``, ``tmy``, ``floatok``, ``tmfloorz``,
+``tmceilingz``, ``tmdropoffz``, ``ceilingline``, ``spechit``, ``numspechit``,
+``crushchange``, ``nofit``.
 
 ``p_change_sector`` returns ``nofit`` raw, as C does: normally True/False, but a spechit
 overrun can store an address there, and p_floor.c's ``if (flag == true)`` is then false;
@@ -38,6 +39,8 @@ class Collide:
     """Mixin: p_map.c, movement clipping."""
 
     def init_collide(self):
+        if hasattr(self, "tmbbox"):
+            return                      # C's globals: never reset by a level load
         self.tmbbox = [0, 0, 0, 0]
         self.tmthing = None
         self.tmflags = self.tmx = self.tmy = 0
@@ -113,7 +116,7 @@ class Collide:
         self.p_set_thing_position(thing)
         return True
 
-    # ---- movement iterator functions ------------------------------------------------------
+    # ---- movement iterator functions ----------------------------------------------------
 
     def pit_check_line(self, ld):
         """Adjusts tmfloorz and tmceilingz for a line the box touches; False if it

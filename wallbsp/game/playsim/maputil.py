@@ -4,9 +4,10 @@ thing lists and blockmap blocks, the blockmap iterators and the path traversal t
 collects and sorts the lines and things a trace crosses -- with Chocolate Doom's
 emulation of vanilla's overrun of its 128 intercepts.
 
-Per-level state (``init_maputil``): ``opentop``, ``openbottom``, ``openrange``,
-``lowfloor`` (P_LineOpening's results), ``trace`` (the path traversal's divline),
-``intercepts`` (the list P_PathTraverse fills), ``earlyout``.
+State (``init_maputil``, set once: C never resets these globals between levels):
+``opentop``, ``openbottom``, ``openrange``, ``lowfloor`` (P_LineOpening's results),
+``trace`` (the path traversal's divline), ``intercepts`` (the list P_PathTraverse fills),
+``earlyout``.
 """
 from wallbsp.sim.fixed import FRACBITS, FRACUNIT, aprox_distance, c_abs, fixed_div, \
     fixed_mul, wrap32
@@ -94,6 +95,10 @@ class MapUtil:
     """Mixin: p_maputl.c."""
 
     def init_maputil(self):
+        # C's globals: zero at program start and never reset by a level load (a stale
+        # opentop is what P_LineOpening leaves for a one-sided line), so only set once
+        if hasattr(self, "trace"):
+            return
         self.opentop = self.openbottom = self.openrange = self.lowfloor = 0
         self.trace = Divline()
         self.intercepts = []
@@ -341,13 +346,13 @@ class MapUtil:
 
     def _intercepts_overrun(self, num_intercepts, intercept):
         """Vanilla's intercepts[] had 128 entries; the ones after them overwrote the
-        globals that followed it in memory.  The pointer word of each entry is written as
-        0: it only lands where Chocolate Doom writes nowhere or where the value is read
-        back before use (opentop, playerstarts, swingx)."""
+        globals that followed it in memory.  Each entry is 12 bytes: frac, isaline and a
+        pointer.  The pointer word is not written: Chocolate Doom writes a native address
+        there, which only lands on opentop (set again before it is read), swingx and
+        playerstarts (reloaded with the level before a single player's respawn)."""
         location = (num_intercepts - MAXINTERCEPTS_ORIGINAL - 1) * 12
         self._intercepts_memory_overrun(location, intercept.frac)
         self._intercepts_memory_overrun(location + 4, int(bool(intercept.isaline)))
-        self._intercepts_memory_overrun(location + 8, 0)
 
     def _intercepts_memory_overrun(self, location, value):
         offset = 0
@@ -358,7 +363,8 @@ class MapUtil:
                 if int16:
                     starts = getattr(self, name, None)
                     index = (location - offset) // 2
-                    for k, v in ((index, value & 0xFFFF), (index + 1, (value >> 16) & 0xFFFF)):
+                    halves = ((index, value & 0xFFFF), (index + 1, (value >> 16) & 0xFFFF))
+                    for k, v in halves:
                         if starts is not None and k < 20 and k // 5 < len(starts):
                             setattr(starts[k // 5], _MAPTHING_FIELDS[k % 5], _short(v))
                 else:

@@ -4,8 +4,9 @@ walking the BSP tree along the line between them and narrowing the vertical wind
 line crossed.  DOOM 1.2 and earlier traced through the blockmap instead
 (PTR_SightTraverse), as Chocolate Doom does for those versions.
 
-Per-level state (``init_sight``): ``sightzstart``, ``topslope``, ``bottomslope``,
-``strace`` (the divline from looker to target), ``t2x``, ``t2y``, ``sightcounts``.
+State (``init_sight``, set once: C never resets these globals between levels):
+``sightzstart``, ``topslope``, ``bottomslope``, ``strace`` (the divline from looker to
+target), ``t2x``, ``t2y``, ``sightcounts``.
 """
 from wallbsp.sim.fixed import FRACBITS, fixed_div, fixed_mul, wrap32
 
@@ -33,6 +34,8 @@ class Sight:
     """Mixin: p_sight.c."""
 
     def init_sight(self):
+        if hasattr(self, "strace"):
+            return                      # C's globals: never reset by a level load
         self.sightzstart = self.topslope = self.bottomslope = 0
         self.strace = _Divline()
         self.t2x = self.t2y = 0

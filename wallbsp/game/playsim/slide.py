@@ -3,8 +3,9 @@ corners of its box along the move, go up to the nearest blocking line and slide 
 ("a kludgy mess", as id's comment says -- its quirks are kept: the third try and a failed
 partial move fall back to stair-stepping on one axis, then the other).
 
-Per-level state (``init_slide``): ``bestslidefrac``, ``secondslidefrac``,
-``bestslideline``, ``secondslideline``, ``slidemo``, ``tmxmove``, ``tmymove``.
+State (``init_slide``, set once: C never resets these globals between levels):
+``bestslidefrac``, ``secondslidefrac``, ``bestslideline``, ``secondslideline``,
+``slidemo``, ``tmxmove``, ``tmymove``.
 """
 from wallbsp.sim.fixed import ANG180, ANGLETOFINESHIFT, FINECOSINE, FINESINE, FRACUNIT, \
     fixed_mul, point_to_angle2
@@ -19,6 +20,8 @@ class Slide:
     """Mixin: p_map.c, the slide move."""
 
     def init_slide(self):
+        if hasattr(self, "slidemo"):
+            return                      # C's globals: never reset by a level load
         self.bestslidefrac = self.secondslidefrac = 0
         self.bestslideline = self.secondslideline = None
         self.slidemo = None
