@@ -1,7 +1,7 @@
 """p_mobj.c's port (playsim.mobjs / mobjspawn) against hand-computed C results, on a
 stand-in Play whose other modules are stubs."""
 from wallbsp.game.playsim.mobjs import Mobjs
-from wallbsp.game.playsim.structs import Mobj, MapThing, Player, Sector, Subsector, \
+from wallbsp.game.playsim.structs import MapThing, Player, Sector, Subsector, \
     EXE_DOOM_1_9, EXE_ULTIMATE
 from wallbsp.sim import info
 from wallbsp.sim.fixed import FRACUNIT as F
