@@ -9,8 +9,10 @@
 deaths) and ``brain.py`` (the boss brain).
 
 ``init_monsters(self)`` sets ``p_enemy.c``'s globals (``soundtarget``, the arch-vile's
-scratch and the boss brain's targets).  C sets them once when the program starts, never per
-level, so call it once for a ``Play``, not at each level start.
+scratch and the boss brain's targets) at each level start.  C sets them only when the
+program starts; every one but A_BrainSpit's static ``easy`` is written before it is read in
+a level, so resetting them is harmless, and ``easy`` (``brainspit_easy``) is kept across
+levels as C keeps it.
 """
 from wallbsp.sim import info
 from wallbsp.sim.fixed import FRACBITS, FRACUNIT, ANG90, ANG270, point_to_angle2, wrap32
@@ -49,7 +51,7 @@ class Monsters:
     """Monster movement and decisions (``p_enemy.c``); see the module docstring."""
 
     def init_monsters(self):
-        """``p_enemy.c``'s globals at program start."""
+        """``p_enemy.c``'s globals, before a level loads."""
         self.soundtarget = None
         self.corpsehit = None                 # PIT_VileCheck's find
         self.vileobj = None
@@ -57,7 +59,8 @@ class Monsters:
         self.braintargets = [None] * 32       # A_BrainAwake's spots
         self.numbraintargets = 0
         self.braintargeton = 0
-        self.brainspit_easy = 0               # A_BrainSpit's `static int easy`
+        if not hasattr(self, "brainspit_easy"):
+            self.brainspit_easy = 0           # A_BrainSpit's `static int easy`: game-wide
 
     # ---- hearing -----------------------------------------------------------------------
 
