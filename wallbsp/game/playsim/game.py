@@ -31,9 +31,6 @@ BTS_PAUSE, BTS_SAVEGAME, BTS_SPECIALMASK = 1, 2, 3
 
 MAXAMMO = (200, 50, 300, 50)            # p_inter.c's maxammo[]
 INITIAL_HEALTH, INITIAL_BULLETS = 100, 50
-MAPTHING = struct.Struct("<5h")           # x, y, angle, type, options
-# Doom II's monsters: a Doom 1 executable stops loading THINGS at the first of them
-DOOM2_ONLY = frozenset((68, 64, 88, 89, 69, 67, 71, 65, 66, 84))
 
 _fast_monsters = False                    # whether info's tables hold the fast values now
 
@@ -103,6 +100,7 @@ class Game:
         self.gameaction = GA_NOTHING
         self.secretexit = False
         self.leveltime = 0
+        self.validcount = 1                 # r_main.c's: game-wide, never reset
         self.totalkills = self.totalitems = self.totalsecret = 0
         self.bodyqueslot = 0
         self.bodyque = [None] * 32
@@ -111,6 +109,7 @@ class Game:
         self.wminfo = None
         self.sounds_started = self.sounds_stopped = 0
         self._texture_heights = None
+        self.flatnames = self._flat_names()
         self.init_intermission()
         self.init_level_modules()
 
@@ -129,6 +128,16 @@ class Game:
         with open(self.wad_path, "rb") as f:
             f.seek(entry[0])
             return f.read(entry[1])
+
+    def _flat_names(self):
+        """R_InitFlats' flat numbers: every lump from the last F_START to the last F_END,
+        nested markers included, by name."""
+        names = [e[0] for e in self.wad_entries]
+        if "F_START" not in self.wad_dir or "F_END" not in self.wad_dir:
+            return []
+        first = len(names) - names[::-1].index("F_START")
+        last = len(names) - 1 - names[::-1].index("F_END")
+        return names[first:last]
 
     # -- sound: not played ----------------------------------------------------------------
     def s_start_sound(self, origin, sfx_id):
@@ -228,7 +237,7 @@ class Game:
         self.p_setup_level_geometry(self.mapname)
         self.bodyqueslot = 0
         self.deathmatchstarts = []
-        self.p_load_things()
+        self.p_load_things()             # mapload's, from the map's THINGS lump
         if self.deathmatch:
             for i, p in enumerate(self.players):
                 if self.playeringame[i]:
@@ -236,34 +245,6 @@ class Game:
                     self.g_death_match_spawn_player(i)
         self.iquehead = self.iquetail = 0
         self.p_spawn_specials()
-
-    def map_things(self):
-        """The map's THINGS as ``MapThing`` records, in the lump's order: the lump after
-        the map's marker (the last marker of that name, as W_GetNumForName finds)."""
-        names = [e[0] for e in self.wad_entries]
-        marker = len(names) - 1 - names[::-1].index(self.mapname)
-        name, pos, size = self.wad_entries[marker + 1] if marker + 1 < len(names) else \
-            ("", 0, 0)
-        if name != "THINGS":
-            raise DemoError(f"{self.wad_path}: byte 0: map {self.mapname} has no THINGS "
-                            f"lump after its marker")
-        with open(self.wad_path, "rb") as f:
-            f.seek(pos)
-            things = f.read(size)
-        return [MapThing(*MAPTHING.unpack_from(things, k))
-                for k in range(0, len(things) - MAPTHING.size + 1, MAPTHING.size)]
-
-    def p_load_things(self):
-        for mt in self.map_things():
-            if self.gamemode != COMMERCIAL and mt.type in DOOM2_ONLY:
-                break               # vanilla's "break", not "continue": the rest are lost
-            self.p_spawn_map_thing(mt)
-        if not self.deathmatch:
-            for i in range(MAXPLAYERS):
-                if self.playeringame[i] and not self.playerstartsingame[i]:
-                    raise DemoError(f"{self.wad_path}: byte 0: P_LoadThings: player {i + 1} "
-                                    f"start missing in {self.mapname}")
-                self.playerstartsingame[i] = False
 
     # -- players -----------------------------------------------------------------------------
     def g_player_reborn(self, player):
