@@ -1,8 +1,10 @@
-"""p_maputl.c, p_sight.c and p_map.c's movement half (maputil, sight, collide, slide) on
-tiny hand-built maps, against results worked out by hand from the C code."""
+"""p_maputl.c, p_sight.c and p_map.c's movement half (maputil, pathtraverse, sight,
+collide, slide) on tiny hand-built maps, against results worked out by hand from the C
+code."""
 from wallbsp.game.playsim.collide import Collide
-from wallbsp.game.playsim.maputil import (BOXBOTTOM, BOXLEFT, BOXRIGHT, BOXTOP, Divline,
-                                          MapUtil, PT_ADDLINES, PT_ADDTHINGS, PT_EARLYOUT)
+from wallbsp.game.playsim.maputil import BOXBOTTOM, BOXLEFT, BOXRIGHT, BOXTOP, MapUtil
+from wallbsp.game.playsim.pathtraverse import (Divline, Intercept, PathTraverse, PT_ADDLINES,
+                                               PT_ADDTHINGS, PT_EARLYOUT)
 from wallbsp.game.playsim.sight import Sight
 from wallbsp.game.playsim.slide import Slide
 from wallbsp.game.playsim.structs import (EXE_ULTIMATE, Line, Mobj, Node, Sector, Seg,
@@ -14,11 +16,12 @@ from wallbsp.sim.fixed import FRACUNIT
 U = FRACUNIT
 
 
-class _Play(MapUtil, Sight, Collide, Slide):
+class _Play(MapUtil, PathTraverse, Sight, Collide, Slide):
     """Just enough of Play: one subsector holding the whole map."""
 
     def __init__(self):
         self.init_maputil()
+        self.init_path_traverse()
         self.init_sight()
         self.init_collide()
         self.init_slide()
@@ -245,7 +248,6 @@ def test_check_sight_through_one_node():
 def test_intercepts_overrun():
     """Entries 129 on overwrite vanilla's globals after intercepts[]: entry 130's frac
     and isaline land on lowfloor and openbottom, entry 147's isaline on bmapwidth."""
-    from wallbsp.game.playsim.maputil import Intercept
     p = _corridor()
     p.lowfloor = p.openbottom = 5
     for i in range(130):
