@@ -172,12 +172,25 @@ def test_resolution_keys_cycle_the_internal_size(walk):
     assert walk.size == app.RESOLUTIONS[-1]
 
 
+def shows_the_view(walk) -> bool:
+    """The window holds a picture of the level (many colours), not a cleared surface."""
+    pixels = screen(walk).reshape(-1, 3)
+    return len(np.unique(pixels, axis=0)) > 16
+
+
 def test_fullscreen_toggles_and_still_draws(walk):
     press(pygame.K_F11)
     frames(walk, 1)
+    assert walk.fullscreen and shows_the_view(walk)
+    before = screen(walk).copy()
+    press(pygame.K_LEFT)
+    frames(walk, 3)
+    release(pygame.K_LEFT)
+    assert not np.array_equal(screen(walk), before)      # the turned view reaches the screen
     press(pygame.K_f)
     frames(walk, 1)
-    assert not walk.fullscreen
+    assert not walk.fullscreen and shows_the_view(walk)
+    assert screen(walk).shape[:2] == tuple(walk.display.get_size())
 
 
 def test_screenshot_key_writes_numbered_pngs(walk, tmp_path, monkeypatch):

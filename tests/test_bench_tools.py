@@ -16,9 +16,9 @@ FREEDOOM_INSTALLED = Path("/usr/share/games/doom/freedoom2.wad").exists()
 FREEDOOM_BOTH = all(Path(f"/usr/share/games/doom/freedoom{i}.wad").exists() for i in (1, 2))
 
 
-def run_quick(script: str, *options: str) -> dict:
-    done = subprocess.run([sys.executable, str(ROOT / "tools" / script), "--quick", "--no-docs",
-                           *options],
+def run_quick(name: str, *options: str) -> dict:
+    done = subprocess.run([sys.executable, str(ROOT / "tools" / "bench.py"), name, "--quick",
+                           "--no-docs", *options],
                           capture_output=True, text=True, timeout=300, cwd=ROOT)
     assert done.returncode == 0, done.stderr
     return json.loads(done.stdout)
@@ -26,12 +26,12 @@ def run_quick(script: str, *options: str) -> dict:
 
 @pytest.fixture(scope="module")
 def table1():
-    return run_quick("bench_table1.py")
+    return run_quick("table1")
 
 
 @pytest.fixture(scope="module")
 def builders():
-    return run_quick("bench_builders.py")
+    return run_quick("builders")
 
 
 def test_table1_quick_prints_sizes_for_every_k(table1):
@@ -76,7 +76,7 @@ def test_builders_summary_has_the_targets(builders):
 
 
 def test_compile_benchmark_quick_reports_the_large_level_chain_and_table1():
-    result = run_quick("bench_compile.py")
+    result = run_quick("compile")
     assert result["large"]["walls"] >= 10000
     assert result["large"]["segs"] >= result["large"]["walls"]
     assert result["chain"]["walls"] == 2000 and result["chain"]["max_depth"] < 64
@@ -84,7 +84,7 @@ def test_compile_benchmark_quick_reports_the_large_level_chain_and_table1():
 
 
 def test_render_benchmark_quick_reports_fps_nodes_and_gordon_chen():
-    result = run_quick("bench_render.py")
+    result = run_quick("render")
     for level in ("multi", "large"):
         fps = result["levels"][level]["fps"]
         assert set(fps) == {"320x200", "640x400", "1600x1000"}
@@ -95,7 +95,7 @@ def test_render_benchmark_quick_reports_fps_nodes_and_gordon_chen():
 
 
 def test_memory_benchmark_quick_reports_compile_and_first_frame_peaks():
-    result = run_quick("bench_memory.py")
+    result = run_quick("memory")
     rows = result["levels"]
     assert [r["target_walls"] for r in rows] == [500]
     for row in rows:
@@ -111,7 +111,7 @@ def test_memory_benchmark_quick_reports_compile_and_first_frame_peaks():
 
 @pytest.mark.skipif(not FREEDOOM_BOTH, reason="needs freedoom1.wad and freedoom2.wad")
 def test_compare_quick_against_this_checkout_draws_the_same_frames_and_tree():
-    result = run_quick("bench_compare.py", "--baseline", str(ROOT))
+    result = run_quick("compare", "--baseline", str(ROOT))
     assert result["checkouts"]["baseline"] == result["checkouts"]["current"]
     assert result["same_frames"] == {"320x200": True, "640x400": True}
     assert result["same_tree"] is True
@@ -124,7 +124,7 @@ def test_compare_quick_against_this_checkout_draws_the_same_frames_and_tree():
 
 
 def test_resources_quick_loads_e1m1_textures_and_a_bounded_bomb():
-    result = run_quick("bench_resources.py")
+    result = run_quick("resources")
     if not FREEDOOM_BOTH:
         assert "skipped" in result
         return
@@ -140,7 +140,7 @@ def test_compare_interleaved_refuses_a_baseline_that_imports_itself_by_name(tmp_
     package.mkdir()
     (package / "__init__.py").write_text("from .sub import x\n")
     (package / "sub.py").write_text("import wallbsp.other\nx = 1\n")
-    done = subprocess.run([sys.executable, str(ROOT / "tools" / "bench_compare.py"),
+    done = subprocess.run([sys.executable, str(ROOT / "tools" / "bench.py"), "compare",
                            "--baseline", str(tmp_path), "--interleaved", "--quick", "--no-docs"],
                           capture_output=True, text=True, timeout=300, cwd=ROOT)
     assert done.returncode == 2 and done.stdout == ""

@@ -1,4 +1,4 @@
-"""tools/bench_world.py --quick prints the world's targets as one JSON object (nothing is
+"""tools/bench.py world --quick prints the world's targets as one JSON object (nothing is
 timed here; --no-docs: the docs are not rewritten)."""
 import json
 import subprocess
@@ -13,7 +13,7 @@ FREEDOOM_BOTH = all(Path(f"/usr/share/games/doom/freedoom{i}.wad").exists() for 
 
 @pytest.mark.skipif(not FREEDOOM_BOTH, reason="Freedoom is not installed")
 def test_world_benchmark_quick_reports_idle_and_active_tics_and_the_render_ratio():
-    done = subprocess.run([sys.executable, str(ROOT / "tools" / "bench_world.py"), "--quick",
+    done = subprocess.run([sys.executable, str(ROOT / "tools" / "bench.py"), "world", "--quick",
                            "--no-docs"], capture_output=True, text=True, timeout=300, cwd=ROOT)
     assert done.returncode == 0, done.stderr
     result = json.loads(done.stdout)

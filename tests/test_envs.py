@@ -288,7 +288,7 @@ def test_import_wallbsp_needs_no_gymnasium_and_the_module_id_form_works():
 
 def test_the_throughput_script_reports_every_configuration():
     root = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-    done = subprocess.run([sys.executable, os.path.join(root, "tools", "env_throughput.py"),
+    done = subprocess.run([sys.executable, os.path.join(root, "tools", "bench.py"), "env",
                            "--quick", "--no-docs", "--envs", "2"], capture_output=True,
                           text=True, timeout=300, cwd=root,
                           env={**os.environ, "SDL_VIDEODRIVER": "dummy"})

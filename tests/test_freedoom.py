@@ -2,7 +2,7 @@
 validate, and a start view that front to back and the painter draw alike.
 
 The suite takes a representative handful (test_wad.FREEDOOM_SAMPLE: E1M1, MAP01, MAP12 and one
-map of each other episode); ``python tools/bench_maps.py`` runs this same check on all 68 maps
+map of each other episode); ``python tools/bench.py maps`` runs this same check on all 68 maps
 (tools/benchkit/maps.py: validate() and both renderers on every map's start view).
 
 Skipped, with the reason, when the WADs are not installed (Debian package 'freedoom', or set

@@ -560,7 +560,7 @@ FREEDOOM = Path(os.environ.get("FREEDOOM_DIR", "/usr/share/games/doom"))
 FREEDOOM_MAPS = ([("freedoom1.wad", f"E{e}M{m}") for e in range(1, 5) for m in range(1, 10)]
                  + [("freedoom2.wad", f"MAP{m:02d}") for m in range(1, 33)])
 # The suite looks at a handful: E1M1 and MAP01 (the maps everything else uses), MAP12 (the
-# largest, 10,884 linedefs) and one map of each other episode. tools/bench_maps.py imports,
+# largest, 10,884 linedefs) and one map of each other episode. tools/bench.py maps imports,
 # compiles, validates and draws the start view of every map (tools/benchkit/maps.py).
 FREEDOOM_SAMPLE = [("freedoom1.wad", "E1M1"), ("freedoom1.wad", "E2M6"), ("freedoom1.wad", "E3M1"),
                    ("freedoom1.wad", "E4M1"), ("freedoom2.wad", "MAP01"), ("freedoom2.wad", "MAP12")]
@@ -575,7 +575,7 @@ def freedoom(wad: str) -> Path:
 
 @pytest.mark.parametrize("wad,map_name", FREEDOOM_SAMPLE)
 def test_freedoom_maps_import(wad, map_name):
-    """A sample (FREEDOOM_SAMPLE); tools/bench_maps.py imports every map."""
+    """A sample (FREEDOOM_SAMPLE); tools/bench.py maps imports every map."""
     level = import_wad(freedoom(wad), map_name)
     walls, sectors, verts = level["walls"], level["sectors"], level["vertices"]
     assert len(walls) > 100 and len(sectors) > 10

@@ -16,9 +16,11 @@ the modules that define them, so kernels that call kernels are compiled together
 """
 from __future__ import annotations
 
+import hashlib
 import importlib.util
 import os
 import threading
+from pathlib import Path
 
 __all__ = ["kernel", "step_kernel", "kernels_enabled", "use_kernels", "AVAILABLE", "LazyKernel",
            "jitable", "compiled_as", "register_jitables"]
@@ -62,6 +64,33 @@ class LazyKernel:
         return getattr(self.dispatcher, name)
 
 
+# kernels live in sim/ and render/, which never import these folders (tests/test_layout.py)
+_ABOVE_KERNELS = ("app", "envs", "game")
+
+
+def source_digest(root: Path | None = None) -> str:
+    """A digest of every Python source a kernel could reach: kernels inline functions and
+    constants from other modules, which numba's own cache (keyed by each kernel's file)
+    does not see change."""
+    root = root or Path(__file__).resolve().parent
+    digest = hashlib.sha256()
+    for path in sorted(root.rglob("*.py")):
+        if path.relative_to(root).parts[0] in _ABOVE_KERNELS:
+            continue
+        digest.update(path.relative_to(root).as_posix().encode() + b"\0")
+        digest.update(path.read_bytes() + b"\0")
+    return digest.hexdigest()[:16]
+
+
+def kernel_cache_dir() -> Path:
+    """Where numba keeps the compiled kernels: a folder named by the sources' digest, so
+    an edit anywhere in the package means a fresh compile and never stale machine code.
+    Under ``$NUMBA_CACHE_DIR`` if set, else the user's cache folder."""
+    base = os.environ.get("NUMBA_CACHE_DIR") \
+        or Path(os.environ.get("XDG_CACHE_HOME") or Path.home() / ".cache") / "wallbsp"
+    return Path(base) / f"kernels-{source_digest()}"
+
+
 def _load_numba():
     """Import numba, make every lazy kernel's dispatcher and swap the dispatchers in for
     the lazy kernels in the globals of the modules that define kernels (a kernel that
@@ -69,6 +98,9 @@ def _load_numba():
     with _LOADING:
         if _STATE["numba"] is None:
             import numba
+            # read when a kernel is made; not put in the environment, which child
+            # processes would inherit as their base folder
+            numba.config.CACHE_DIR = str(kernel_cache_dir())
             _STATE["numba"] = numba
         for lazy in _LAZY:
             if lazy.dispatcher is None:

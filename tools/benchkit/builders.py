@@ -5,7 +5,7 @@ zdbsp, glbsp (when installed) and the nodes shipped in the WAD itself.
 Prints one JSON object, plots the split ratios to docs/builders.png and rewrites the
 "builders" section of docs/benchmarks.md.
 
-    python tools/bench_builders.py [--quick] [--no-docs] [--repeat N]
+    python tools/bench.py builders [--quick] [--no-docs] [--repeat N]
 
 --quick: the three smallest Freedoom maps, one run each (nothing at all without the WADs).
 """
@@ -28,7 +28,7 @@ from .measure import median_seconds
 from .report import (machine, machine_line, markdown_table, pyplot, run_script,
                      save_plot, script_parser)
 
-COMMAND = "python tools/bench_builders.py"
+COMMAND = "python tools/bench.py builders"
 PLOT = ROOT / "docs" / "builders.png"
 BUILDERS = ("wallbsp", "wallbsp all", "zdbsp", "glbsp", "stock")
 # zdbsp's defaults build vanilla NODES/SEGS/SSECTORS (no -g/-x/-X/-z) with its default

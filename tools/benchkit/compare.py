@@ -1,7 +1,7 @@
 """This checkout against another (the baseline), measured in one run: issue 9's "no slower"
 targets.
 
-    python tools/bench_compare.py --baseline DIR [--rounds N] [--quick] [--no-docs]
+    python tools/bench.py compare --baseline DIR [--rounds N] [--quick] [--no-docs]
 
 DIR is another checkout of wallbsp (e.g. a git worktree of the starting commit). Each round
 runs compare_run.py twice in fresh processes, once with PYTHONPATH at DIR and once at this
@@ -41,7 +41,7 @@ from .measure import python_json
 from .report import machine, machine_line, markdown_table, positive_int, report, script_parser
 from .walk import walk_frames, walk_path
 
-COMMAND = "python tools/bench_compare.py"
+COMMAND = "python tools/bench.py compare"
 WALK_MAP = (FREEDOOM[0], "E1M1")
 COMPILE_MAP = (FREEDOOM[1], "MAP12")       # the largest Freedoom map
 SIZES = ((320, 200), (640, 400))

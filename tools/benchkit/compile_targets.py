@@ -7,7 +7,7 @@
   and exhaustive on every level in levels/ (table1.py also covers the Freedoom maps;
   builders.py compares split ratios with zdbsp and glbsp).
 
-    python tools/bench_compile.py [--quick] [--no-docs] [--repeat N]
+    python tools/bench.py compile [--quick] [--no-docs] [--repeat N]
 
 It rewrites the "compile" section of docs/benchmarks.md (not with --quick or --no-docs).
 """
@@ -54,7 +54,7 @@ def section(result) -> str:
                                     for k in ks] for name, row in result["table1"].items()]
     return "\n\n".join([
         "## The compiler's targets",
-        f"Regenerate: `python tools/bench_compile.py` (build times: median of the runs). "
+        f"Regenerate: `python tools/bench.py compile` (build times: median of the runs). "
         f"{machine_line(result['machine'])}",
         markdown_table(["level", "walls", "segs", "segs/wall", "max depth", "build s (median)",
                         "peak MB added (resident)", "default k"],

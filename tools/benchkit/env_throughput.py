@@ -1,8 +1,8 @@
 """The learning environments' targets (issue 13); prints one JSON object.
 
-    python tools/env_throughput.py            # the full run (a few minutes)
-    python tools/env_throughput.py --quick    # a smoke run
-    python tools/env_throughput.py --envs 8   # N for the vector runs (default: 2 x nproc)
+    python tools/bench.py env            # the full run (a few minutes)
+    python tools/bench.py env --quick    # a smoke run
+    python tools/bench.py env --envs 8   # N for the vector runs (default: 2 x nproc)
 
 The full run also rewrites the "environments" section of docs/benchmarks.md.  Nothing is
 trained: one seeded uniform-random sequence of Discrete actions (a new episode when one
@@ -326,7 +326,7 @@ def section(report) -> str:
           yes[report["meets"]["async_2_speedup"]]]])
     return "\n\n".join([
         "## Learning environments (Gymnasium)",
-        f"Regenerate: `python tools/env_throughput.py`. {machine_line(report['machine'])} "
+        f"Regenerate: `python tools/bench.py env`. {machine_line(report['machine'])} "
         f"Load average when it started: {report['load_average']:.1f}. "
         f"`wallbsp/Exit-v0` on `{report['level']}`, {report['size']}, frame skip 1, a "
         f"seeded random sequence of Discrete actions, the same for every environment; "

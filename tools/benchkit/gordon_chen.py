@@ -5,7 +5,7 @@ plain shading and with a costlier per-pixel shading.
 Prints one JSON object, plots time against N to docs/gordon_chen.png and rewrites the
 "gordon_chen" section of docs/benchmarks.md.
 
-    python tools/bench_gordon_chen.py [--quick] [--no-docs] [--views N] [--repeat N]
+    python tools/bench.py gordon_chen [--quick] [--no-docs] [--views N] [--repeat N]
 
 --quick: N <= 500, S = 500 and parallel, 2 viewpoints, one run each, 320x200 only.
 
@@ -29,7 +29,7 @@ from .measure import first_difference
 from .report import (machine, machine_line, markdown_table, positive_int, pyplot, run_script,
                      save_plot, script_parser)
 
-COMMAND = "python tools/bench_gordon_chen.py"
+COMMAND = "python tools/bench.py gordon_chen"
 PLOT = ROOT / "docs" / "gordon_chen.png"
 EYE_Z = 50                       # half way up the walls (floor 0, ceiling 100)
 NS = (100, 200, 500, 1000, 2000, 5000, 10000)

@@ -1,5 +1,5 @@
 """The large generator: rooms on a grid joined by corridors, as many as it takes to reach a
-wall count (levels/large.json is seed 1, 10,000 walls; tools/bench_memory.py goes to 200,000).
+wall count (levels/large.json is seed 1, 10,000 walls; tools/bench.py memory goes to 200,000).
 
 ``make_large(seed, target_walls)`` returns a level dict; each grid row has its own seeded RNG,
 so adding rows never changes the earlier ones.

@@ -5,7 +5,7 @@ Prints JSON lines: one per map ("kind": "map"), one per walked map and frame siz
 ("kind": "frames"), and a final summary ("kind": "summary"). Rewrites the "maps" and
 "frames" sections of docs/benchmarks.md.
 
-    python tools/bench_maps.py [--quick] [--no-docs] [--repeat N]
+    python tools/bench.py maps [--quick] [--no-docs] [--repeat N]
 
 --quick: E1M1 and MAP01 only, one pass, a 30-frame walk. Without the WADs it prints one
 summary line saying so and exits 0.
@@ -27,7 +27,7 @@ from .report import (machine, machine_line, markdown_table, positive_int, script
 from .walk import (EYE, LOOK_AHEAD, PROBE, STEER, STEER_CANDIDATES, WALK, path_length,
                    start_camera, walk_frames, walk_path)
 
-COMMAND = "python tools/bench_maps.py"
+COMMAND = "python tools/bench.py maps"
 CHECK_FRAME = (320, 200)              # the start view, drawn by both renderers and compared
 FRAME_SIZES = ((320, 200), (640, 400), (720, 450), (1280, 800))
 PAINTER_SIZES = ((320, 200), (640, 400))   # the painter's check; it is slow at large sizes
@@ -254,7 +254,7 @@ def frames_section(lines: list[dict]) -> str:
         f"around (each probed with a {PROBE}-unit move), so it explores rather than "
         "pressing against a wall. The camera path is computed first; only `render` (front "
         "to back, as it draws the map by default: textured where the level names its WAD, "
-        "with its things) is timed; tools/bench_compare.py has the flat-colour walk against "
+        "with its things) is timed; tools/bench.py compare has the flat-colour walk against "
         "the baseline. Each frame's time is "
         f"the median of {s['repeat']} passes; fps = 1 / the median frame time. The painter "
         f"draws every {PAINTER_EVERY}th frame of the walk once, for its fps and overdraw "

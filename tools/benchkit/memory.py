@@ -1,6 +1,6 @@
 """Peak memory of compiling and of the first frame on generated large levels (issue 14 §14).
 
-    python tools/bench_memory.py [--quick] [--no-docs] [--walls N [N ...]] [--seed N]
+    python tools/bench.py memory [--quick] [--no-docs] [--walls N [N ...]] [--seed N]
 
 For each size, the large generator (largelevel.py) makes a level of at least N walls
 (default 10,000, 100,000 and 200,000; --quick: 500), written as a level file.
@@ -34,7 +34,7 @@ from .levels import large_level_text
 from .measure import fresh_step
 from .report import machine, machine_line, markdown_table, positive_int, run_script, script_parser
 
-COMMAND = "python tools/bench_memory.py"
+COMMAND = "python tools/bench.py memory"
 SIZES = (10_000, 100_000, 200_000)
 QUICK_SIZES = (500,)
 FRAME = (640, 400)

@@ -1,7 +1,7 @@
 """The renderer's targets; prints one JSON object.
 
-    python tools/bench_render.py            # the full run (a few minutes)
-    python tools/bench_render.py --quick    # a smoke run, well under a minute
+    python tools/bench.py render            # the full run (a few minutes)
+    python tools/bench.py render --quick    # a smoke run, well under a minute
 
 The full run also rewrites the "render" section of docs/benchmarks.md (not with --no-docs).
 
@@ -129,7 +129,7 @@ def section(report) -> str:
                 c["nodes_visited_median"]] for c in report["gordon_chen"]["cases"]]
     return "\n\n".join([
         "## The renderer's targets",
-        f"Regenerate: `python tools/bench_render.py`. {machine_line(report['machine'])} "
+        f"Regenerate: `python tools/bench.py render`. {machine_line(report['machine'])} "
         "fps = 1 / the "
         f"median frame time over a full turn, 1° a frame, front to back with shaded floors "
         f"and ceilings; per size the median over three positions (and the slowest position).",

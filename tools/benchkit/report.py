@@ -33,15 +33,15 @@ on what else it was doing; tree sizes do not (same level, candidates and seed, s
 
 Regenerate:
 
-    python tools/bench_table1.py      # Fuchs, Abram & Grant's Table 1: tree size against k
-    python tools/bench_builders.py    # wallbsp beside zdbsp, glbsp and the WADs' own nodes
-    python tools/bench_gordon_chen.py # Gordon & Chen's experiment in 2-D: front-to-back / painter's
-    python tools/bench_maps.py        # every Freedoom map: import, compile, validate, render; fps
-    python tools/bench_compile.py     # the compiler's targets
-    python tools/bench_render.py      # the renderer's targets
-    python tools/bench_memory.py      # peak memory of compiling and of the first frame, 10k-200k walls
-    python tools/bench_resources.py   # loading textures; bomb WADs
-    python tools/bench_compare.py --baseline DIR  # this checkout against another, in one run
+    python tools/bench.py table1      # Fuchs, Abram & Grant's Table 1: tree size against k
+    python tools/bench.py builders    # wallbsp beside zdbsp, glbsp and the WADs' own nodes
+    python tools/bench.py gordon_chen # Gordon & Chen's experiment in 2-D: front-to-back / painter's
+    python tools/bench.py maps        # every Freedoom map: import, compile, validate, render; fps
+    python tools/bench.py compile     # the compiler's targets
+    python tools/bench.py render      # the renderer's targets
+    python tools/bench.py memory      # peak memory of compiling and of the first frame, 10k-200k walls
+    python tools/bench.py resources   # loading textures; bomb WADs
+    python tools/bench.py compare --baseline DIR  # this checkout against another, in one run
 
 `--quick` on any of them is a smoke run of a few seconds; `--no-docs` prints the JSON and writes
 nothing. Plots need matplotlib (`pip install -e ".[bench]"`).

@@ -1,6 +1,6 @@
 """Texture loading against issue 10's and issue 14's targets; prints one JSON object.
 
-    python tools/bench_resources.py [--quick] [--no-docs] [--repeat N]
+    python tools/bench.py resources [--quick] [--no-docs] [--repeat N]
 
 Each measurement runs in a fresh Python process (nothing cached, peak memory its own):
 - ``e1m1``: E1M1 of freedoom1.wad imported, then every wall texture, flat and the sky it uses
@@ -28,7 +28,7 @@ from .freedoom import FREEDOOM, absent_wads
 from .measure import fresh_step, resident_mb
 from .report import machine, machine_line, markdown_table, run_script, script_parser
 
-COMMAND = "python tools/bench_resources.py"
+COMMAND = "python tools/bench.py resources"
 TARGETS = {"e1m1": {"seconds": 0.3}, "freedoom1_all": {"seconds": 2.0, "peak_mb": 150},
            "freedoom2_all": {"seconds": 2.0, "peak_mb": 150}, "bombs": {"peak_mb": 300}}
 MEASUREMENTS = ("e1m1", "freedoom1_all", "freedoom2_all", "map12_import")

@@ -4,7 +4,7 @@ random candidate splitters per node, on every level in levels/ and every Freedoo
 Prints one JSON object, plots segs per wall against k to docs/table1.png and rewrites the
 "table1" section of docs/benchmarks.md.
 
-    python tools/bench_table1.py [--quick] [--no-docs] [--repeat N] [--seed N]
+    python tools/bench.py table1 [--quick] [--no-docs] [--repeat N] [--seed N]
 
 --quick: levels/small.json and levels/multi.json and the two smallest Freedoom maps (none when
 the WADs are absent), in a few seconds.
@@ -24,7 +24,7 @@ from .report import (machine, machine_line, markdown_table, pyplot, run_script,
 
 KS = (1, 3, 5, 15, 50, "all")
 PLOT = ROOT / "docs" / "table1.png"
-COMMAND = "python tools/bench_table1.py"
+COMMAND = "python tools/bench.py table1"
 QUICK_LEVELS = ("small", "multi")
 
 # Table 1 of the paper: input polygons, then tree size for k = 1, 3, 5, 15 candidates.

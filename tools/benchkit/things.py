@@ -1,6 +1,6 @@
 """Things at run time on a Freedoom map: moving 1,000 things a tic, and what sprites and
 masked walls cost a rendered frame (issue 12's targets: moves <= 2 ms, the masked pass
-<= 25 % of a frame, >= 500 fps at 320x200 on E1M1). tools/bench_things.py runs it.
+<= 25 % of a frame, >= 500 fps at 320x200 on E1M1). tools/bench.py things runs it.
 
 CPU time of this process (``time.process_time``), so other work on the machine counts less.
 Prints one JSON object; writes nothing.
@@ -79,12 +79,12 @@ def time_frames(state, views, size, repeats=3):
         module.draw_overlay = draw
 
 
-def main():
+def main(argv=None):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--map", default="E1M1")
     parser.add_argument("--size", default="320x200")
     parser.add_argument("--views", type=int, default=60)
-    args = parser.parse_args()
+    args = parser.parse_args(argv)
     wad = FREEDOOM[0] if args.map.upper().startswith("E") else FREEDOOM[1]
     tree = compile_level(load_wad_level(wad, args.map))
     size = tuple(int(v) for v in args.size.split("x"))

@@ -1,7 +1,7 @@
 """The world's targets (SPEC §8); prints one JSON object.
 
-    python tools/bench_world.py            # the full run (about a minute)
-    python tools/bench_world.py --quick    # a smoke run (E1M1 only)
+    python tools/bench.py world            # the full run (about a minute)
+    python tools/bench.py world --quick    # a smoke run (E1M1 only)
 
 1. ``World.tic`` on MAP12 (freedoom2.wad, the largest map) with every mover idle: the player
    standing at the start, the level's light effects running; the median of single tics.
@@ -155,7 +155,7 @@ def _frame_seconds(source, camera) -> float:
 
 def section(result: dict) -> str:
     head = ["## The world's targets",
-            f"Regenerate: `python tools/bench_world.py`. {machine_line(result['machine'])}"]
+            f"Regenerate: `python tools/bench.py world`. {machine_line(result['machine'])}"]
     if "missing" in result:
         return "\n\n".join(head + [f"Not measured: {', '.join(result['missing'])} missing."])
     idle, active, frames = result["idle"], result["active"], result["render"]

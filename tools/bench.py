@@ -1,0 +1,52 @@
+#!/usr/bin/env python3
+"""wallbsp's benchmarks: one entry point over the experiments in tools/benchkit/.
+
+    python tools/bench.py NAME [--quick] [--no-docs] [options of NAME]
+    python tools/bench.py --list
+
+Each experiment prints JSON and (without --no-docs) updates its section of
+docs/benchmarks.md; its module's docstring says what is measured and how. They use the
+package's public API.
+"""
+import importlib
+import sys
+
+# name → (module in benchkit, what it measures)
+BENCHMARKS = {
+    "maps": ("maps", "every Freedoom map through the pipeline, fps along a scripted walk"),
+    "render": ("render_targets", "the renderer's targets: fps at three sizes, nodes visited"),
+    "things": ("things", "sprites and masked walls: fps, the masked pass's share"),
+    "world": ("world_targets", "the world's tic and its frame against the static tree"),
+    "compile": ("compile_targets", "compile time and splits on generated and Freedoom maps"),
+    "builders": ("builders", "our compiler beside other node builders on the Freedoom maps"),
+    "table1": ("table1", "the lecture's Table 1: splits by candidate count"),
+    "gordon_chen": ("gordon_chen", "front to back against the painter's, as Gordon & Chen"),
+    "memory": ("memory", "peak memory of the largest level's first frame"),
+    "resources": ("resources", "WAD and texture loading, each in a fresh process"),
+    "compare": ("compare", "this checkout against a baseline checkout, interleaved"),
+    "env": ("env_throughput", "environments' steps/s, vector envs, reset time"),
+    "playsim": ("playsim", "DOOM's play simulation: demo playback tics/s against Chocolate Doom"),
+}
+
+
+def usage() -> str:
+    width = max(map(len, BENCHMARKS))
+    rows = "\n".join(f"  {name:<{width}}  {what}" for name, (_, what) in BENCHMARKS.items())
+    return f"usage: python tools/bench.py NAME [options]   (NAME --help for its options)\n{rows}"
+
+
+def main(argv: list[str]) -> int:
+    if not argv or argv[0] in ("-h", "--help", "--list"):
+        print(usage())
+        return 0 if argv else 2
+    name, rest = argv[0], argv[1:]
+    if name not in BENCHMARKS:
+        print(f"bench.py: unknown benchmark {name!r}\n{usage()}", file=sys.stderr)
+        return 2
+    module = importlib.import_module(f"benchkit.{BENCHMARKS[name][0]}")
+    sys.argv = [f"bench.py {name}", *rest]
+    return module.main(rest)
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
