@@ -186,6 +186,11 @@ def _next_level(spec: str, args):
 
 
 def cmd_play(args):
+    from wallbsp.app.vanilla import is_wad, play_vanilla
+    if is_wad(args.level):
+        return play_vanilla(args)
+    if args.trace or args.timedemo:
+        raise UsageError("play: --trace and --timedemo are for vanilla demos (a WAD and a .lmp)")
     from wallbsp.game.demo import check_level, load_demo, play
     from wallbsp.game.world import World
     check_outputs("play", [args.screenshot], [args.level, args.demo])

@@ -137,8 +137,14 @@ def build_parser(commands) -> argparse.ArgumentParser:
     _finish(p, commands["walk"])
 
     p = sub.add_parser("play", help="replay a demo headless and print the final state")
-    p.add_argument("level", help="the level, tree or WAD:MAP the demo was recorded on")
-    p.add_argument("demo", help="demo file (JSON, from walk --record)")
+    p.add_argument("level", help="the level, tree or WAD:MAP the demo was recorded on, or a "
+                   "DOOM WAD for a vanilla demo")
+    p.add_argument("demo", help="demo file (JSON, from walk --record), or with a WAD a "
+                   "version 1.9 .lmp file or a lump such as DEMO1")
+    p.add_argument("--trace", metavar="OUT", help="vanilla demos: write one line a tic in "
+                   "Chocolate Doom's trace format")
+    p.add_argument("--timedemo", action="store_true",
+                   help="vanilla demos: print the tics played per second")
     p.add_argument("--screenshot", metavar="PNG", help="save the final view as PNG")
     p.add_argument("--size", type=_size, default=(320, 200), metavar="WxH",
                    help="screenshot size (default 320x200)")
