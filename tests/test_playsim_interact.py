@@ -1,6 +1,7 @@
-"""p_inter.c's port (``Interact``) against results worked out by hand from the C code."""
+"""p_inter.c's port (``Interact`` and ``Damage``) against results worked out by hand from the C code."""
 import pytest
 
+from wallbsp.game.playsim.damage import Damage
 from wallbsp.game.playsim.interact import Interact
 from wallbsp.game.playsim.structs import Mobj, Player, Sector, Subsector, PST_DEAD, \
     COMMERCIAL, EXE_DOOM_1_9
@@ -19,8 +20,8 @@ class ScriptedRng:
         return self.values.pop(0)
 
 
-class Stub(Interact):
-    """Interact with the other modules' functions recorded instead of run."""
+class Stub(Interact, Damage):
+    """Interact and Damage with the other modules' functions recorded instead of run."""
 
     def __init__(self, skill=2, rng=()):
         self.gameskill = skill
