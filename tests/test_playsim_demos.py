@@ -2,6 +2,7 @@
 port is known to stay in sync (``SYNCED_TICS``; raise a number when a fix gets further, so a
 regression fails).  The reference traces are in tests/oracle/ (from shared/oracle/traces).
 Also the .lmp reader, the thinker list and the trace format."""
+import itertools
 import os
 from pathlib import Path
 
@@ -135,3 +136,27 @@ def test_first_difference_names_tic_and_field():
     assert first_difference([line, line], [line, other]) == (2, "prndindex", "92", "93")
     assert first_difference([line], [line, line])[:2] == (2, "end")
     assert len(FIELDS) == len(line.split()) == 16
+
+
+# -- beyond the Freedoom demos: exits, intermissions, other skills ---------------------------
+
+@pytest.mark.parametrize("name", sorted(__import__("playsim_scenarios").SCENARIOS))
+def test_scenario_matches_chocolate_doom(name, tmp_path):
+    from playsim_scenarios import PWAD_MAPS, SCENARIOS, TRACE_LINES, scenario_demo, write_pwad
+    from wallbsp.game.playsim.game import set_fast_monsters
+    from wallbsp.game.playsim.trace import play_demo
+    iwad, (kind, *_) = SCENARIOS[name]
+    wad = wad_path(iwad)
+    files = ()
+    if kind == "run":
+        files = (tmp_path / "test.wad",)
+        write_pwad(files[0], PWAD_MAPS[iwad])
+    demo = parse_demo(scenario_demo(name, wad), name)
+    theirs = (ORACLE / f"scenario-{name}.trace").read_text().splitlines()
+    assert len(theirs) == TRACE_LINES[name]
+    try:
+        ours = list(itertools.islice(play_demo(wad, demo, files=files), len(theirs)))
+    finally:
+        set_fast_monsters(False)        # nightmare changed info's tables for the process
+    diff = first_difference(ours, theirs)
+    assert diff is None, f"{name}: desync at {diff}"

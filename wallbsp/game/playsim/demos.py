@@ -166,6 +166,16 @@ def wad_directory(wad_path) -> dict:
     return {name: (pos, size) for name, pos, size in wad_entries(wad_path)}
 
 
+def wad_image(lumps) -> bytes:
+    """A PWAD holding ``lumps`` (``(name, bytes)`` pairs) in order."""
+    body, entries = bytearray(), []
+    for name, data in lumps:
+        entries.append(struct.pack("<ii8s", 12 + len(body), len(data), name.encode("latin-1")))
+        body += data
+    return b"PWAD" + struct.pack("<ii", len(entries), 12 + len(body)) + bytes(body) + \
+        b"".join(entries)
+
+
 def wad_lump(wad_path, name: str):
     """The bytes of the last lump called ``name`` in the WAD, or None."""
     entry = wad_directory(wad_path).get(name.upper())

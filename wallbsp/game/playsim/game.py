@@ -17,7 +17,7 @@ from wallbsp.sim import info
 from wallbsp.sim.fixed import FRACBITS, FRACUNIT
 from wallbsp.sim.rng import Random
 
-from .demos import DemoError, wad_entries
+from .demos import DemoError, wad_entries, wad_image
 from .structs import (COMMERCIAL, EXE_DOOM_1_9, EXE_ULTIMATE, MAXPLAYERS, NUMAMMO, PST_DEAD,
                       PST_LIVE, PST_REBORN, REGISTERED, RETAIL, SHAREWARE, BT_SPECIAL,
                       MapThing, Player)
@@ -76,12 +76,23 @@ def map_lump_name(gamemode, episode, gamemap) -> str:
 
 class Game:
     # -- the game, once -----------------------------------------------------------------------
-    def g_init(self, wad_path):
-        """Game-wide state: the WAD, the mode, the players, the random numbers."""
-        self.wad_path = wad_path
-        self.wad_entries = wad_entries(wad_path)
-        self.wad_dir = {name: (pos, size) for name, pos, size in self.wad_entries}
-        self.gamemode, self.gameversion = game_mode(self.wad_dir)
+    def g_init(self, wad_path, files=()):
+        """Game-wide state: the WAD (and PWADs ``files`` loaded after it, as ``-file``
+        does: a later lump of a name hides an earlier one), the mode, the players, the
+        random numbers."""
+        self.wad_path = wad_path            # None: no WAD (one of our levels, levelmap.py)
+        self.wad_files = tuple(files)
+        self.wad_entries, self.wad_entry_files = [], []
+        for path in ((wad_path,) if wad_path is not None else ()) + self.wad_files:
+            found = wad_entries(path)
+            self.wad_entries += found
+            self.wad_entry_files += [path] * len(found)
+        # name -> index of the last lump of that name (W_GetNumForName)
+        self.wad_dir = {entry[0]: i for i, entry in enumerate(self.wad_entries)}
+        # the IWAD alone decides the game (as Chocolate Doom identifies it)
+        iwad = self.wad_entries[:len(self.wad_entries) - sum(
+            1 for f in self.wad_entry_files if f is not wad_path)]
+        self.gamemode, self.gameversion = game_mode({e[0] for e in iwad})
         self.rng = Random()
         self.players = [Player() for _ in range(MAXPLAYERS)]
         self.playeringame = [False] * MAXPLAYERS
@@ -122,12 +133,24 @@ class Game:
 
     def w_lump(self, name):
         """The bytes of the last lump called ``name`` (W_CacheLumpName), or None."""
-        entry = self.wad_dir.get(name.upper())
-        if entry is None:
-            return None
-        with open(self.wad_path, "rb") as f:
-            f.seek(entry[0])
-            return f.read(entry[1])
+        index = self.wad_dir.get(name.upper())
+        return None if index is None else self._read_entry(index)
+
+    def _read_entry(self, index):
+        _, pos, size = self.wad_entries[index]
+        with open(self.wad_entry_files[index], "rb") as f:
+            f.seek(pos)
+            return f.read(size)
+
+    def map_wad(self, mapname):
+        """What mapload reads map ``mapname`` from: the WAD's path, or with PWADs a WAD
+        image of the map's marker and the ten lumps after it (wherever they came from)."""
+        if not self.wad_files:
+            return self.wad_path
+        first = self.wad_dir[mapname]
+        lumps = [(self.wad_entries[i][0], self._read_entry(i))
+                 for i in range(first, min(first + 11, len(self.wad_entries)))]
+        return wad_image(lumps)
 
     def _flat_names(self):
         """R_InitFlats' flat numbers: every lump from the last F_START to the last F_END,
@@ -231,13 +254,20 @@ class Game:
         self.init_level_modules()
         self.p_init_thinkers()
         self.leveltime = 0
-        self.mapname = map_lump_name(self.gamemode, episode, gamemap)
-        if self.mapname not in self.wad_dir:
-            raise DemoError(f"{self.wad_path}: byte 0: the WAD has no map {self.mapname}")
-        self.p_setup_level_geometry(self.mapname)
+        source = getattr(self, "levelsource", None)     # (level, tree): levelmap.py
+        if source is not None:
+            self.p_setup_level_from(*source)
+        else:
+            self.mapname = map_lump_name(self.gamemode, episode, gamemap)
+            if self.mapname not in self.wad_dir:
+                raise DemoError(f"{self.wad_path}: byte 0: the WAD has no map {self.mapname}")
+            self.p_setup_level_geometry(self.map_wad(self.mapname), self.mapname)
         self.bodyqueslot = 0
         self.deathmatchstarts = []
-        self.p_load_things()             # mapload's, from the map's THINGS lump
+        if source is not None:
+            self.p_load_level_things(source[0])
+        else:
+            self.p_load_things()         # mapload's, from the map's THINGS lump
         if self.deathmatch:
             for i, p in enumerate(self.players):
                 if self.playeringame[i]:

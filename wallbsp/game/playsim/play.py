@@ -6,7 +6,7 @@ The module map below names the modules a complete simulation needs; a missing on
 ``mobjspawn.py`` or ``slide.py``) are found by looking at the package: every public class
 defined there without ``__init__`` or ``__slots__`` is a mixin.
 
-``Play(wad_path)`` has the game-wide state (``Game.g_init``); a level is loaded by
+``Play(wad_path, files=())`` (``files``: PWADs) has the game-wide state (``Game.g_init``); a level is loaded by
 ``g_init_new`` or ``g_do_play_demo`` (``trace.play_demo`` plays a whole demo).
 """
 import importlib
@@ -68,8 +68,8 @@ def compose(partial=False):
     """A fresh ``Play`` class made of ``mixins(partial)``."""
     bases = tuple(mixins(partial))
 
-    def __init__(self, wad_path):
-        self.g_init(wad_path)
+    def __init__(self, wad_path, files=()):
+        self.g_init(wad_path, files)
 
     return type("Play", bases, {"__init__": __init__, "__module__": __name__,
                                 "__doc__": "DOOM's play simulation (see play.py)."})

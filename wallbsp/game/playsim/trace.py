@@ -6,7 +6,8 @@ A line, written after each tic that ran ``P_Ticker`` while player 0 has a mobj:
 hash`` — the hash is FNV-1a (32-bit) over every map object's x, y, z, health and state
 number, as unsigned 32-bit words, in thinker order.
 
-    python -m wallbsp.game.playsim.trace WAD DEMO [--against TRACE] [--out FILE] [--tics N]
+    python -m wallbsp.game.playsim.trace WAD DEMO [--file PWAD] [--against TRACE]
+                                         [--out FILE] [--tics N]
 
 plays DEMO (a lump such as DEMO1 or a .lmp file) and writes the trace and/or reports the
 first tic and field that differ from TRACE (exit 1 on a desync, 2 on bad input).
@@ -25,7 +26,11 @@ MASK = 0xFFFFFFFF
 
 
 def state_hash(play):
-    """(number of live mobjs, FNV-1a of their x, y, z, health, state) in thinker order."""
+    """(number of live mobjs, FNV-1a of their x, y, z, health, state) in thinker order.
+
+    Each word is xored in without its ``& MASK`` and the hash masked once per two words:
+    the low 32 bits of a xor or a product depend only on the low 32 bits of its operands,
+    so the result is FNV-1a's over the unsigned words (and this runs every tic)."""
     mobj_func = type(play).p_mobj_thinker
     h, n = FNV_OFFSET, 0
     cap = play.thinkercap
@@ -33,8 +38,9 @@ def state_hash(play):
     while th is not cap:
         if th.func is mobj_func:
             n += 1
-            for v in (th.x, th.y, th.z, th.health, th.state):
-                h = ((h ^ (v & MASK)) * FNV_PRIME) & MASK
+            h = ((((h ^ th.x) * FNV_PRIME) ^ th.y) * FNV_PRIME) & MASK
+            h = ((((h ^ th.z) * FNV_PRIME) ^ th.health) * FNV_PRIME) & MASK
+            h = ((h ^ th.state) * FNV_PRIME) & MASK
         th = th.next
     return n, h
 
@@ -52,13 +58,13 @@ def trace_line(play):
         p.killcount, p.itemcount, p.secretcount, h)
 
 
-def play_demo(wad, demo, tics=None, partial=False):
-    """Plays ``demo`` (a ``Demo``, a lump name of ``wad`` or a .lmp path) on the WAD and
-    yields the trace line of every tic that ran the play ticker (at most ``tics`` tics of
-    the demo)."""
+def play_demo(wad, demo, tics=None, partial=False, files=()):
+    """Plays ``demo`` (a ``Demo``, a lump name of ``wad`` or a .lmp path) on the WAD (and
+    the PWADs ``files``) and yields the trace line of every tic that ran the play ticker
+    (at most ``tics`` tics of the demo)."""
     if not hasattr(demo, "tics"):
         demo = load_demo(wad, demo)
-    play = play_class(partial)(wad)
+    play = play_class(partial)(wad, files)
     play.g_do_play_demo(demo)
     for commands in itertools.islice(demo.tics, tics):
         if play.g_ticker(commands):
@@ -98,12 +104,14 @@ def main(argv=None):
     parser.add_argument("demo", help="a lump of the WAD (DEMO1..DEMO4) or a .lmp file")
     parser.add_argument("--against", metavar="TRACE", help="report the first desync")
     parser.add_argument("--out", metavar="FILE", help="write our trace")
+    parser.add_argument("--file", action="append", default=[], metavar="PWAD",
+                        help="a PWAD loaded after the WAD (as Chocolate Doom's -file)")
     parser.add_argument("--tics", type=int, default=None, help="play at most N tics")
     parser.add_argument("--partial", action="store_true",
                         help="compose Play from the modules that exist")
     args = parser.parse_args(argv)
     try:
-        lines = play_demo(args.wad, args.demo, args.tics, args.partial)
+        lines = play_demo(args.wad, args.demo, args.tics, args.partial, args.file)
         reference = None
         if args.against:
             with open(args.against) as f:
