@@ -3,6 +3,7 @@ P_CheckSight walk the structures made from our compiled trees; both are checked 
 brute force on the bundled levels (the sector of a point by the nearest wall a ray meets,
 sight by every wall the sight line crosses), then the player walks as P_Thrust says and a
 door of a bundled level opens."""
+import dataclasses
 import random
 from fractions import Fraction
 from pathlib import Path
@@ -12,8 +13,9 @@ import pytest
 import wallbsp
 from wallbsp.game.playsim.levelmap import (ML_BLOCKING, ML_TWOSIDED, NF_SUBSECTOR,
                                            start_level)
-from wallbsp.game.playsim.structs import TicCmd
-from wallbsp.level.model import Level, Sector, Start, Wall
+from wallbsp.game.playsim.structs import Mobj, TicCmd
+from wallbsp.level.model import Level, Sector, Start, Thing, Wall
+from wallbsp.sim import info
 from wallbsp.sim.fixed import FINECOSINE, FINESINE, FRACUNIT, point_to_angle2
 
 ROOT = Path(__file__).resolve().parent.parent
@@ -361,7 +363,34 @@ def test_crossing_walls_and_colour_only_levels_load():
     assert play.sectors[0].floorheight == FRACUNIT // 2
     assert play.sectors[1].floorpic == "#102030" and play.sectors[0].ceilingpic != "F_SKY1"
     assert all(side.midtexture == "-" for side in play.sides)
+    rng = random.Random(1)
+    checked = 0
+    for _ in range(1500):                   # the compiler's leaf sectors, even where walls cross
+        fx, fy = rng.randrange(-20 << 16, 400 << 16), rng.randrange(-20 << 16, 400 << 16)
+        want = tree.locate(fx / FRACUNIT, fy / FRACUNIT)
+        if want is not None and not near_anything(level, tree, fx, fy, 0.01):
+            assert play.r_point_in_subsector(fx, fy).sector.id == want
+            checked += 1
+    assert checked > 300
     for _ in range(10):
         play.g_ticker([TicCmd(25, 0, 0, 0)])
     assert play.players[0].mo.y > 64 * FRACUNIT
+
+
+def test_monsters_fight_on_our_level():
+    """Things from a level's ``things``: the player's pistol kills a zombieman ahead."""
+    level = wallbsp.load_level(ROOT / "wallbsp/data/default.json")
+    level = dataclasses.replace(level, version=2, things=(Thing(256, 400, 270, 3004, 7),))
+    play = start_level(level, skill=2)
+    mobjs = []
+    t = play.thinkercap.next
+    while t is not play.thinkercap:
+        if isinstance(t, Mobj) and t.player is None:
+            mobjs.append(t)
+        t = t.next
+    assert [m.type for m in mobjs] == [info.MT_POSSESSED]
+    zombie = mobjs[0]
+    for i in range(300):
+        play.g_ticker([TicCmd(0, 0, 0, 1 if i % 10 == 0 else 0)])     # BT_ATTACK
+    assert zombie.health <= 0 and play.players[0].killcount == 1 == play.totalkills
 
