@@ -564,3 +564,25 @@ def test_brain_spit_flies_until_the_spot_and_skips_every_other_on_easy():
     play.a_brain_spit(brain)
     assert len(spat) == 2
     assert spat[0].reactiontime == -(100 // tics)
+
+
+def test_every_action_of_p_enemy_has_its_cname_method():
+    from wallbsp.game.playsim import cname
+    ours = (Monsters, MonsterAttacks, ArchVile, MonsterDeaths, BossBrain)
+    names = {name for cls in ours for name in vars(cls)}
+    for action in ("A_Look", "A_Chase", "A_FaceTarget", "A_PosAttack", "A_SPosAttack",
+                   "A_CPosAttack", "A_CPosRefire", "A_SpidRefire", "A_BspiAttack",
+                   "A_TroopAttack", "A_SargAttack", "A_HeadAttack", "A_CyberAttack",
+                   "A_BruisAttack", "A_SkelMissile", "A_Tracer", "A_SkelWhoosh",
+                   "A_SkelFist", "A_VileChase", "A_VileStart", "A_StartFire",
+                   "A_FireCrackle", "A_Fire", "A_VileTarget", "A_VileAttack", "A_FatRaise",
+                   "A_FatAttack1", "A_FatAttack2", "A_FatAttack3", "A_SkullAttack",
+                   "A_PainAttack", "A_PainDie", "A_Scream", "A_XScream", "A_Pain",
+                   "A_Fall", "A_Explode", "A_BossDeath", "A_Hoof", "A_Metal",
+                   "A_BabyMetal", "A_BrainAwake", "A_BrainPain", "A_BrainScream",
+                   "A_BrainExplode", "A_BrainDie", "A_BrainSpit", "A_SpawnSound",
+                   "A_SpawnFly", "A_PlayerScream", "A_KeenDie", "P_RecursiveSound",
+                   "P_NoiseAlert", "P_CheckMeleeRange", "P_CheckMissileRange", "P_Move",
+                   "P_TryWalk", "P_NewChaseDir", "P_LookForPlayers", "PIT_VileCheck",
+                   "A_PainShootSkull"):
+        assert cname(action) in names, action

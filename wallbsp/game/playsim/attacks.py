@@ -217,7 +217,7 @@ class MonsterAttacks:
         mo.momx = fixed_mul(mo.info.speed, FINECOSINE[an])
         mo.momy = fixed_mul(mo.info.speed, FINESINE[an])
 
-    def a_fat_attack1(self, actor):
+    def a_fat_attack_1(self, actor):
         self.a_face_target(actor)
         actor.angle = _angle(actor.angle + FATSPREAD)   # change direction to ...
         target = self.p_subst_null_mobj(actor.target)
@@ -225,7 +225,7 @@ class MonsterAttacks:
         mo = self.p_spawn_missile(actor, target, info.MT_FATSHOT)
         self._turn_missile(mo, FATSPREAD)
 
-    def a_fat_attack2(self, actor):
+    def a_fat_attack_2(self, actor):
         self.a_face_target(actor)
         actor.angle = _angle(actor.angle - FATSPREAD)   # now the opposite deviation
         target = self.p_subst_null_mobj(actor.target)
@@ -233,7 +233,7 @@ class MonsterAttacks:
         mo = self.p_spawn_missile(actor, target, info.MT_FATSHOT)
         self._turn_missile(mo, -FATSPREAD * 2)
 
-    def a_fat_attack3(self, actor):
+    def a_fat_attack_3(self, actor):
         self.a_face_target(actor)
         target = self.p_subst_null_mobj(actor.target)
         mo = self.p_spawn_missile(actor, target, info.MT_FATSHOT)

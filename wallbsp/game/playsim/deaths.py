@@ -8,12 +8,8 @@ executable emulated, ``self.gameversion``, and on ``self.gamemode``).
 from wallbsp.sim import info
 from wallbsp.game.playsim.structs import Line, COMMERCIAL, EXE_ULTIMATE, MAXPLAYERS
 from wallbsp.game.playsim.monsters import mobj_thinkers
-
-# p_spec.h's floor_e and vldoor_e, as EV_DoFloor and EV_DoDoor take them
-LOWER_FLOOR_TO_LOWEST = 1                     # lowerFloorToLowest
-RAISE_TO_TEXTURE = 5                          # raiseToTexture
-VLD_OPEN = 3                                  # vld_open
-VLD_BLAZE_OPEN = 6                            # vld_blazeOpen
+from wallbsp.game.playsim.spectypes import LOWERFLOORTOLOWEST, RAISETOTEXTURE, VLD_OPEN, \
+    VLD_BLAZEOPEN
 
 
 def tagged_line(tag):
@@ -110,19 +106,19 @@ class MonsterDeaths:
         if self.gamemode == COMMERCIAL:
             if self.gamemap == 7:
                 if mo.type == info.MT_FATSO:
-                    self.ev_do_floor(tagged_line(666), LOWER_FLOOR_TO_LOWEST)
+                    self.ev_do_floor(tagged_line(666), LOWERFLOORTOLOWEST)
                     return
                 if mo.type == info.MT_BABY:
-                    self.ev_do_floor(tagged_line(667), RAISE_TO_TEXTURE)
+                    self.ev_do_floor(tagged_line(667), RAISETOTEXTURE)
                     return
         elif self.gameepisode == 1:
-            self.ev_do_floor(tagged_line(666), LOWER_FLOOR_TO_LOWEST)
+            self.ev_do_floor(tagged_line(666), LOWERFLOORTOLOWEST)
             return
         elif self.gameepisode == 4:
             if self.gamemap == 6:
-                self.ev_do_door(tagged_line(666), VLD_BLAZE_OPEN)
+                self.ev_do_door(tagged_line(666), VLD_BLAZEOPEN)
                 return
             if self.gamemap == 8:
-                self.ev_do_floor(tagged_line(666), LOWER_FLOOR_TO_LOWEST)
+                self.ev_do_floor(tagged_line(666), LOWERFLOORTOLOWEST)
                 return
         self.g_exit_level()
