@@ -21,6 +21,7 @@ import struct
 from wallbsp.sim import info
 from wallbsp.sim.fixed import FRACBITS, MAXINT, MININT, c_div, fixed_div, fixed_mul, wrap32
 
+from .bsptables import BspTables
 from .structs import (COMMERCIAL, ST_HORIZONTAL, ST_NEGATIVE, ST_POSITIVE, ST_VERTICAL, Line,
                       MapThing, Node, Sector, Seg, Side, Subsector, Vertex)
 
@@ -109,7 +110,7 @@ def pad_reject(length, totallines):
     return pad[:length] + bytes(max(0, length - len(pad)))
 
 
-class MapLoad:
+class MapLoad(BspTables):
     """Mixin: p_setup.c and R_PointInSubsector."""
 
     def init_mapload(self):
@@ -371,14 +372,32 @@ class MapLoad:
         return 0 if right < left else 1
 
     def r_point_in_subsector(self, x, y):
-        """R_PointInSubsector: the subsector holding (x, y), down the WAD's nodes."""
-        if not self.nodes:
+        """R_PointInSubsector: the subsector holding (x, y), down the WAD's nodes.
+
+        R_PointOnSide inlined over the node table (bsptables): it runs for every move."""
+        nodes = self.node_table()
+        if not nodes:
             return self.subsectors[0]          # a single subsector is a special case
-        nodes = self.nodes
         nodenum = len(nodes) - 1
         while not nodenum & NF_SUBSECTOR:
-            node = nodes[nodenum]
-            nodenum = node.children[self.r_point_on_side(x, y, node)]
+            nx, ny, ndx, ndy, ndxhi, ndyhi, child0, child1 = nodes[nodenum]
+            if not ndx:
+                back = ndy > 0 if x <= nx else ndy < 0
+            elif not ndy:
+                back = ndx < 0 if y <= ny else ndx > 0
+            else:
+                dx = x - nx
+                if not -0x80000000 <= dx <= 0x7FFFFFFF:
+                    dx = wrap32(dx)
+                dy = y - ny
+                if not -0x80000000 <= dy <= 0x7FFFFFFF:
+                    dy = wrap32(dy)
+                if (ndy ^ ndx ^ dx ^ dy) < 0:
+                    back = (ndy ^ dx) < 0       # the products' signs differ
+                else:
+                    # FixedMul of a 16-bit half and a 32-bit value: fits, no wrap
+                    back = (dy * ndxhi) >> FRACBITS >= (ndyhi * dx) >> FRACBITS
+            nodenum = child1 if back else child0
         return self.subsectors[nodenum & ~NF_SUBSECTOR]
 
 

@@ -10,6 +10,7 @@ target), ``t2x``, ``t2y``, ``sightcounts``.
 """
 from wallbsp.sim.fixed import FRACBITS, fixed_div, fixed_mul, wrap32
 
+from .bsptables import BspTables
 from .structs import EXE_DOOM_1_2
 
 NF_SUBSECTOR = 0x8000
@@ -23,6 +24,47 @@ def _w(v):
     return v if _I32_MIN <= v <= _I32_MAX else wrap32(v)
 
 
+def divline_side(x, y, lx, ly, ldx, ldy):
+    """P_DivlineSide of (x, y) and the divline from (lx, ly) along (ldx, ldy): 0 (front),
+    1 (back) or 2 (on).  Plain ints, not a divline object: the sight walk calls it for
+    every node and seg it meets."""
+    if not ldx:
+        if x == lx:
+            return 2
+        if x <= lx:
+            return 1 if ldy > 0 else 0
+        return 1 if ldy < 0 else 0
+    if not ldy:
+        if x == ly:                     # sic: DOOM compares x with the line's y
+            return 2
+        if y <= ly:
+            return 1 if ldx < 0 else 0
+        return 1 if ldx > 0 else 0
+    dx = x - lx
+    if not _I32_MIN <= dx <= _I32_MAX:
+        dx = wrap32(dx)
+    dy = y - ly
+    if not _I32_MIN <= dy <= _I32_MAX:
+        dy = wrap32(dy)
+    # two 16-bit halves: the products always fit in 32 bits
+    left = (ldy >> FRACBITS) * (dx >> FRACBITS)
+    right = (dy >> FRACBITS) * (ldx >> FRACBITS)
+    if right < left:
+        return 0                        # front side
+    if left == right:
+        return 2
+    return 1                            # back side
+
+
+def intercept_vector2(x2, y2, dx2, dy2, x1, y1, dx1, dy1):
+    """P_InterceptVector2: the fraction along divline 2 where divline 1 crosses it."""
+    den = _w(fixed_mul(dy1 >> 8, dx2) - fixed_mul(dx1 >> 8, dy2))
+    if den == 0:
+        return 0
+    num = _w(fixed_mul(_w(x1 - x2) >> 8, dy1) + fixed_mul(_w(y2 - y1) >> 8, dx1))
+    return fixed_div(num, den)
+
+
 class _Divline:
     __slots__ = ("x", "y", "dx", "dy")
 
@@ -30,7 +72,7 @@ class _Divline:
         self.x, self.y, self.dx, self.dy = x, y, dx, dy
 
 
-class Sight:
+class Sight(BspTables):
     """Mixin: p_sight.c."""
 
     def init_sight(self):
@@ -59,81 +101,46 @@ class Sight:
 
     def p_divline_side(self, x, y, node):
         """0 (front), 1 (back) or 2 (on)."""
-        if not node.dx:
-            if x == node.x:
-                return 2
-            if x <= node.x:
-                return int(node.dy > 0)
-            return int(node.dy < 0)
-        if not node.dy:
-            if x == node.y:             # sic: DOOM compares x with the line's y
-                return 2
-            if y <= node.y:
-                return int(node.dx < 0)
-            return int(node.dx > 0)
-        dx = _w(x - node.x)
-        dy = _w(y - node.y)
-        left = _w((node.dy >> FRACBITS) * (dx >> FRACBITS))
-        right = _w((dy >> FRACBITS) * (node.dx >> FRACBITS))
-        if right < left:
-            return 0                    # front side
-        if left == right:
-            return 2
-        return 1                        # back side
+        return divline_side(x, y, node.x, node.y, node.dx, node.dy)
 
     def p_intercept_vector2(self, v2, v1):
-        den = _w(fixed_mul(v1.dy >> 8, v2.dx) - fixed_mul(v1.dx >> 8, v2.dy))
-        if den == 0:
-            return 0
-        num = _w(fixed_mul(_w(v1.x - v2.x) >> 8, v1.dy)
-                 + fixed_mul(_w(v2.y - v1.y) >> 8, v1.dx))
-        return fixed_div(num, den)
+        return intercept_vector2(v2.x, v2.y, v2.dx, v2.dy, v1.x, v1.y, v1.dx, v1.dy)
 
     def p_cross_subsector(self, num):
         """True if strace crosses the subsector without being blocked."""
-        sub = self.subsectors[num]
-        segs = self.segs
         strace = self.strace
-        divl = _Divline()
-        for i in range(sub.firstline, sub.firstline + sub.numlines):
-            seg = segs[i]
-            line = seg.linedef
-            if line.validcount == self.validcount:
+        sx, sy, sdx, sdy = strace.x, strace.y, strace.dx, strace.dy
+        t2x, t2y = self.t2x, self.t2y
+        validcount = self.validcount
+        for line, x1, y1, x2, y2, ldx, ldy, front, back in self.sight_table()[num]:
+            if line.validcount == validcount:
                 continue                # already checked the other side
-            line.validcount = self.validcount
-            v1, v2 = line.v1, line.v2
-            s1 = self.p_divline_side(v1.x, v1.y, strace)
-            s2 = self.p_divline_side(v2.x, v2.y, strace)
-            if s1 == s2:
+            line.validcount = validcount
+            if divline_side(x1, y1, sx, sy, sdx, sdy) == \
+                    divline_side(x2, y2, sx, sy, sdx, sdy):
                 continue                # line isn't crossed
-            divl.x = v1.x
-            divl.y = v1.y
-            divl.dx = _w(v2.x - v1.x)
-            divl.dy = _w(v2.y - v1.y)
-            s1 = self.p_divline_side(strace.x, strace.y, divl)
-            s2 = self.p_divline_side(self.t2x, self.t2y, divl)
-            if s1 == s2:
+            if divline_side(sx, sy, x1, y1, ldx, ldy) == \
+                    divline_side(t2x, t2y, x1, y1, ldx, ldy):
                 continue
             # backsector may be None for an "impassible glass" hack line
             if line.backsector is None:
                 return False
             if not line.flags & ML_TWOSIDED:
                 return False            # not two sided anyway
-            front = seg.frontsector
-            back = seg.backsector
-            if (front.floorheight == back.floorheight
-                    and front.ceilingheight == back.ceilingheight):
+            ffloor, fceil = front.floorheight, front.ceilingheight
+            bfloor, bceil = back.floorheight, back.ceilingheight
+            if ffloor == bfloor and fceil == bceil:
                 continue                # no wall to block sight with
-            opentop = min(front.ceilingheight, back.ceilingheight)
-            openbottom = max(front.floorheight, back.floorheight)
+            opentop = fceil if fceil < bceil else bceil
+            openbottom = ffloor if ffloor > bfloor else bfloor
             if openbottom >= opentop:
                 return False            # quick test for totally closed doors
-            frac = self.p_intercept_vector2(strace, divl)
-            if front.floorheight != back.floorheight:
+            frac = intercept_vector2(sx, sy, sdx, sdy, x1, y1, ldx, ldy)
+            if ffloor != bfloor:
                 slope = fixed_div(_w(openbottom - self.sightzstart), frac)
                 if slope > self.bottomslope:
                     self.bottomslope = slope
-            if front.ceilingheight != back.ceilingheight:
+            if fceil != bceil:
                 slope = fixed_div(_w(opentop - self.sightzstart), frac)
                 if slope < self.topslope:
                     self.topslope = slope
@@ -142,20 +149,46 @@ class Sight:
         return True                     # passed the subsector ok
 
     def p_cross_bsp_node(self, bspnum):
-        """True if strace crosses the node's subtree without being blocked."""
-        if bspnum & NF_SUBSECTOR:
-            if bspnum == -1:
-                return self.p_cross_subsector(0)
-            return self.p_cross_subsector(bspnum & ~NF_SUBSECTOR)
-        bsp = self.nodes[bspnum]
-        side = self.p_divline_side(self.strace.x, self.strace.y, bsp)
-        if side == 2:
-            side = 0                    # an "on" should cross both sides
-        if not self.p_cross_bsp_node(bsp.children[side]):
-            return False
-        if side == self.p_divline_side(self.t2x, self.t2y, bsp):
-            return True                 # the line doesn't touch the other side
-        return self.p_cross_bsp_node(bsp.children[side ^ 1])
+        """True if strace crosses the node's subtree without being blocked.
+
+        C's recursion (the near child, then the far one unless the whole line is on the
+        near side) as a loop over a stack of far children still to cross: the sides are
+        pure, so taking t2's side before the near child is crossed changes nothing, and
+        the subsectors are crossed in C's order."""
+        nodes = self.node_table()
+        strace = self.strace
+        sx, sy, tx, ty = strace.x, strace.y, self.t2x, self.t2y
+        far = []
+        while True:
+            while not bspnum & NF_SUBSECTOR:
+                x, y, dx, dy, dxhi, dyhi, child0, child1 = nodes[bspnum]
+                if dx and dy:
+                    # divline_side inlined for a slanted partition (sides of a point
+                    # from the products of 16-bit halves: see divline_side)
+                    ddx, ddy = sx - x, sy - y
+                    if not (_I32_MIN <= ddx <= _I32_MAX and _I32_MIN <= ddy <= _I32_MAX):
+                        ddx, ddy = wrap32(ddx), wrap32(ddy)
+                    side = 1 if (ddy >> FRACBITS) * dxhi > dyhi * (ddx >> FRACBITS) else 0
+                    ddx, ddy = tx - x, ty - y
+                    if not (_I32_MIN <= ddx <= _I32_MAX and _I32_MIN <= ddy <= _I32_MAX):
+                        ddx, ddy = wrap32(ddx), wrap32(ddy)
+                    left = dyhi * (ddx >> FRACBITS)
+                    right = (ddy >> FRACBITS) * dxhi
+                    t2side = 0 if right < left else 2 if right == left else 1
+                else:
+                    side = divline_side(sx, sy, x, y, dx, dy)
+                    t2side = divline_side(tx, ty, x, y, dx, dy)
+                # an "on" should cross both sides (as the front side first)
+                if side == 2:
+                    side = 0
+                if side != t2side:
+                    far.append(child0 if side else child1)
+                bspnum = child1 if side else child0
+            if not self.p_cross_subsector(0 if bspnum == -1 else bspnum & ~NF_SUBSECTOR):
+                return False
+            if not far:
+                return True
+            bspnum = far.pop()
 
     def p_check_sight(self, t1, t2):
         """True if a straight line between t1 and t2 is unobstructed."""
