@@ -7,7 +7,8 @@ tests/oracle/ (``scenario-*.trace``) were made by Chocolate Doom with the trace 
     write_pwad(path, PWAD_MAPS[wad]); write the .lmp of scenario_demo(name)
     DOOMTRACE=out chocolate-doom -iwad WAD.wad -file PWAD -timedemo LMP -nosound -nomusic
 
-and cut to their first ``TRACE_LINES[name]`` lines.
+and cut to their first ``TRACE_LINES[name]`` lines.  The net-game demos were steered by
+this simulation (aiming at the other player) and are stored as they were traced.
 """
 import struct
 
@@ -35,21 +36,36 @@ SCENARIOS = {
     "nightmare-f2demo1": ("freedoom2", ("patch", "DEMO1", {1: 4})),
     "nomonsters-f2demo3": ("freedoom2", ("patch", "DEMO3", {7: 1})),
     "baby-f2demo4": ("freedoom2", ("patch", "DEMO4", {1: 0})),
+    # two players on the net-game map (PWAD_MAPS with net=True), demos stored in
+    # tests/oracle/: co-op (player 1 shoots player 2 dead, who comes back at his start,
+    # then player 1 leaves by the switch) and deathmatch (both aim and fire, come back at
+    # random deathmatch starts; then player 1 leaves), each through the intermission's
+    # net-game tally onto MAP02
+    "coop-map01": ("freedoom2", ("lmp",)),
+    "deathmatch-map01": ("freedoom2", ("lmp",)),
 }
 TRACE_LINES = {"exits-map01": 216, "exits-map06": 232, "exits-map15": 248,
                "exits-e1m3": 232, "exits-e1m7": 32, "nightmare-f1demo1": 800,
                "fast-respawn-f1demo2": 800, "nightmare-f2demo1": 800,
-               "nomonsters-f2demo3": 800, "baby-f2demo4": 800}
+               "nomonsters-f2demo3": 800, "baby-f2demo4": 800, "coop-map01": 500,
+               "deathmatch-map01": 821}
 
 
-def room_map(special):
+# net-game maps: no imp, four player starts and four deathmatch starts; the middle line
+# is plain and the east wall is a switch exit (11)
+NET_THINGS = ((64, 128, 0, 1, 7), (448, 128, 180, 2, 7), (64, 224, 0, 3, 7),
+              (448, 32, 180, 4, 7), (64, 64, 0, 11, 7), (64, 192, 0, 11, 7),
+              (448, 64, 180, 11, 7), (448, 192, 180, 11, 7))
+
+
+def room_map(special, things=None, east_wall=0):
     """The lumps of one test map (THINGS .. BLOCKMAP), with hand-made BSP data: the rooms
     are the two subsectors of the one node."""
     verts = [(0, 0), (256, 0), (512, 0), (512, 256), (256, 256), (0, 256)]
     sector = struct.pack("<hh8s8shhh", 0, 128, b"FLOOR4_8", b"CEIL3_5", 160, 0, 0)
     # v1, v2, flags, special, tag, right side, left side
     lines = [(0, 5, 1, 0, 0, 0, -1), (5, 4, 1, 0, 0, 1, -1), (4, 3, 1, 0, 0, 2, -1),
-             (3, 2, 1, 0, 0, 3, -1), (2, 1, 1, 0, 0, 4, -1), (1, 0, 1, 0, 0, 5, -1),
+             (3, 2, 1, east_wall, 0, 3, -1), (2, 1, 1, 0, 0, 4, -1), (1, 0, 1, 0, 0, 5, -1),
              (1, 4, 4, special, 0, 6, 7)]
     side_sectors = (0, 0, 1, 1, 1, 0, 1, 0)
     sides = b"".join(struct.pack("<hh8s8s8sh", 0, 0, b"-", b"-",
@@ -61,7 +77,8 @@ def room_map(special):
             (2, 1, west, 4, 0, 0), (1, 4, north, 6, 0, 0)]
     node = struct.pack("<4h4h4h2H", 256, 0, 0, 256, 256, 0, 256, 512, 256, 0, 0, 256,
                        0x8001, 0x8000)
-    things = [(128, 128, 0, 1, 7), (448, 160, 180, 3001, 7), (400, 64, 90, 2014, 7)]
+    if things is None:
+        things = [(128, 128, 0, 1, 7), (448, 160, 180, 3001, 7), (400, 64, 90, 2014, 7)]
     orgx, orgy, cols, rows = -8, -8, 5, 3
 
     def touches(line, bx, by):
@@ -83,23 +100,26 @@ def room_map(special):
             ("BLOCKMAP", struct.pack("<%dh" % len(words), *words))]
 
 
-def pwad_lumps(maps):
+def pwad_lumps(maps, net=False):
     lumps = []
     for name, special in maps:
         lumps.append((name, b""))
-        lumps += room_map(special)
+        lumps += room_map(0, NET_THINGS, 11) if net else room_map(special)
     return lumps
 
 
-def write_pwad(path, maps):
+def write_pwad(path, maps, net=False):
     from wallbsp.game.playsim.demos import wad_image
     with open(path, "wb") as f:
-        f.write(wad_image(pwad_lumps(maps)))
+        f.write(wad_image(pwad_lumps(maps, net)))
 
 
 def scenario_demo(name, iwad_path):
     """The .lmp bytes of scenario ``name``."""
     _, (kind, *args) = SCENARIOS[name]
+    if kind == "lmp":
+        from pathlib import Path
+        return (Path(__file__).resolve().parent / "oracle" / f"scenario-{name}.lmp").read_bytes()
     if kind == "patch":
         from wallbsp.game.playsim.demos import wad_lump
         lump, patch = args

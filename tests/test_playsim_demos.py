@@ -148,9 +148,10 @@ def test_scenario_matches_chocolate_doom(name, tmp_path):
     iwad, (kind, *_) = SCENARIOS[name]
     wad = wad_path(iwad)
     files = ()
-    if kind == "run":
+    if kind in ("run", "lmp"):
         files = (tmp_path / "test.wad",)
-        write_pwad(files[0], PWAD_MAPS[iwad])
+        write_pwad(files[0], PWAD_MAPS[iwad] if kind == "run" else (("MAP01", 0),),
+                   net=kind == "lmp")
     demo = parse_demo(scenario_demo(name, wad), name)
     theirs = (ORACLE / f"scenario-{name}.trace").read_text().splitlines()
     assert len(theirs) == TRACE_LINES[name]

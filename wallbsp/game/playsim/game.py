@@ -1,8 +1,9 @@
 """``g_game.c``, the part that moves the simulation: starting a game (``G_InitNew``), loading
 a level (``G_DoLoadLevel`` and ``P_SetupLevel``'s order of work), one game tic
 (``G_Ticker``: reborns, game actions, the tic commands, then the play, intermission or
-finale ticker), the players between levels (``G_PlayerReborn``, ``G_PlayerFinishLevel``) and
-the exits (``G_ExitLevel``, ``G_SecretExitLevel``, ``G_DoCompleted``, ``G_WorldDone``).
+finale ticker) and the exits (``G_ExitLevel``, ``G_SecretExitLevel``, ``G_DoCompleted``,
+``G_WorldDone``).  The player structure functions (``G_PlayerReborn``, ``G_DoReborn``, ...) are in
+``gameplayers.py``.
 
 Game-wide state (not per level) is set by ``g_init(wad_path)``, which ``Play.__init__``
 calls: the WAD, its game mode and executable version, the players, the random numbers.
@@ -18,9 +19,8 @@ from wallbsp.sim.fixed import FRACBITS, FRACUNIT
 from wallbsp.sim.rng import Random
 
 from .demos import DemoError, wad_entries, wad_image
-from .structs import (COMMERCIAL, EXE_DOOM_1_9, EXE_ULTIMATE, MAXPLAYERS, NUMAMMO, PST_DEAD,
-                      PST_LIVE, PST_REBORN, REGISTERED, RETAIL, SHAREWARE, BT_SPECIAL,
-                      MapThing, Player)
+from .structs import (BT_SPECIAL, COMMERCIAL, EXE_DOOM_1_9, EXE_ULTIMATE, MAXPLAYERS,
+                      PST_DEAD, PST_REBORN, REGISTERED, RETAIL, SHAREWARE, MapThing, Player)
 
 # gamestate_t and gameaction_t (d_event.h / doomdef.h)
 GS_LEVEL, GS_INTERMISSION, GS_FINALE, GS_DEMOSCREEN = range(4)
@@ -29,8 +29,6 @@ GS_LEVEL, GS_INTERMISSION, GS_FINALE, GS_DEMOSCREEN = range(4)
 SK_BABY, SK_EASY, SK_MEDIUM, SK_HARD, SK_NIGHTMARE = range(5)
 BTS_PAUSE, BTS_SAVEGAME, BTS_SPECIALMASK = 1, 2, 3
 
-MAXAMMO = (200, 50, 300, 50)            # p_inter.c's maxammo[]
-INITIAL_HEALTH, INITIAL_BULLETS = 100, 50
 
 _fast_monsters = False                    # whether info's tables hold the fast values now
 
@@ -276,44 +274,6 @@ class Game:
         self.iquehead = self.iquetail = 0
         self.p_spawn_specials()
 
-    # -- players -----------------------------------------------------------------------------
-    def g_player_reborn(self, player):
-        """Almost everything of player ``player`` cleared, as after a death; the frags and
-        the level's counts survive.  The Player object stays (mobjs hold it)."""
-        p = self.players[player]
-        frags, kills, items, secrets = p.frags, p.killcount, p.itemcount, p.secretcount
-        fresh = Player()
-        for slot in Player.__slots__:
-            setattr(p, slot, getattr(fresh, slot))
-        p.frags, p.killcount, p.itemcount, p.secretcount = frags, kills, items, secrets
-        p.usedown = p.attackdown = True     # don't do anything immediately
-        p.playerstate = PST_LIVE
-        p.health = INITIAL_HEALTH
-        p.readyweapon = p.pendingweapon = info.wp_pistol
-        p.weaponowned[info.wp_fist] = True
-        p.weaponowned[info.wp_pistol] = True
-        p.ammo[info.am_clip] = INITIAL_BULLETS
-        p.maxammo = list(MAXAMMO[:NUMAMMO])
-
-    def g_player_finish_level(self, player):
-        p = self.players[player]
-        p.powers = [0] * len(p.powers)
-        p.cards = [False] * len(p.cards)
-        p.mo.flags &= ~info.MF_SHADOW       # cancel invisibility
-        p.extralight = 0                    # cancel gun flashes
-        p.fixedcolormap = 0                 # cancel ir goggles
-        p.damagecount = 0
-        p.bonuscount = 0
-
-    def g_do_reborn(self, playernum):
-        if not self.netgame:
-            self.gameaction = GA_LOADLEVEL  # reload the level from scratch
-            return
-        raise NotImplementedError("G_DoReborn: net games are not played")
-
-    def g_death_match_spawn_player(self, playernum):
-        raise NotImplementedError("G_DeathMatchSpawnPlayer: deathmatch is not played")
-
     # -- exits -------------------------------------------------------------------------------
     def g_exit_level(self):
         self.secretexit = False
@@ -392,11 +352,13 @@ class Game:
         self.wi_start(self.wminfo)
 
     def _wminfo(self):
-        """wbstartstruct_t's fields that the intermission's timing reads."""
+        """wbstartstruct_t's fields that the intermission's timing reads (``plyr``: one
+        dict a player slot)."""
         gamemap, episode = self.gamemap, self.gameepisode
+        previous = self.wminfo["next"] if self.wminfo else 0    # C's wminfo is static
         if self.gamemode == COMMERCIAL:
             if self.secretexit:
-                nxt = {15: 30, 31: 31}.get(gamemap, gamemap)   # C leaves it unset otherwise
+                nxt = {15: 30, 31: 31}.get(gamemap, previous)   # otherwise C leaves it
             else:
                 nxt = 15 if gamemap in (31, 32) else gamemap
             partime = 35 * CPARS[gamemap - 1] if 1 <= gamemap <= 32 else 0
@@ -404,18 +366,20 @@ class Game:
             if self.secretexit:
                 nxt = 8
             elif gamemap == 9:
-                nxt = {1: 3, 2: 5, 3: 6, 4: 2}[episode]
+                nxt = {1: 3, 2: 5, 3: 6, 4: 2}.get(episode, previous)
             else:
                 nxt = gamemap
             if episode < 4:
                 partime = 35 * PARS[episode][gamemap]
             else:
                 partime = 35 * CPARS[gamemap]   # E4 has no par times: cpars[] is read
-        p = self.players[self.consoleplayer]
-        return {"next": nxt, "didsecret": p.didsecret, "maxkills": self.totalkills,
-                "maxitems": self.totalitems, "maxsecret": self.totalsecret,
-                "partime": partime, "skills": p.killcount, "sitems": p.itemcount,
-                "ssecret": p.secretcount, "stime": self.leveltime}
+        plyr = [{"in": self.playeringame[i], "skills": p.killcount, "sitems": p.itemcount,
+                 "ssecret": p.secretcount, "stime": self.leveltime, "frags": list(p.frags)}
+                for i, p in enumerate(self.players)]
+        return {"next": nxt, "didsecret": self.players[self.consoleplayer].didsecret,
+                "maxkills": self.totalkills, "maxitems": self.totalitems,
+                "maxsecret": self.totalsecret, "partime": partime,
+                "pnum": self.consoleplayer, "plyr": plyr}
 
     def g_world_done(self):
         self.gameaction = GA_WORLDDONE

@@ -6,8 +6,9 @@ The module map below names the modules a complete simulation needs; a missing on
 ``mobjspawn.py`` or ``slide.py``) are found by looking at the package: every public class
 defined there without ``__init__`` or ``__slots__`` is a mixin.
 
-``Play(wad_path, files=())`` (``files``: PWADs) has the game-wide state (``Game.g_init``); a level is loaded by
-``g_init_new`` or ``g_do_play_demo`` (``trace.play_demo`` plays a whole demo).
+``Play(wad_path, files=())`` (``files``: PWADs) has the game-wide state (``Game.g_init``);
+a level is loaded by ``g_init_new`` or ``g_do_play_demo`` (``trace.play_demo`` plays a
+whole demo).
 """
 import importlib
 import pkgutil
@@ -16,7 +17,8 @@ from . import structs
 
 # module -> its mixin class (the module map of the port)
 MODULE_MAP = {
-    "mapload": "MapLoad", "ticker": "Ticker", "game": "Game", "intermission": "Intermission",
+    "mapload": "MapLoad", "ticker": "Ticker", "game": "Game", "gameplayers": "GamePlayers",
+    "intermission": "Intermission",
     "maputil": "MapUtil", "sight": "Sight", "collide": "Collide", "hitscan": "Hitscan",
     "mobjs": "Mobjs", "player": "PlayerThink", "monsters": "Monsters",
     "attacks": "MonsterAttacks", "weapons": "Weapons", "interact": "Interact",
