@@ -17,6 +17,7 @@ import itertools
 import sys
 
 from .demos import DemoError, load_demo
+from .mapload import MapLoadError
 from .play import play_class
 
 FIELDS = ("map", "leveltime", "x", "y", "z", "angle", "momx", "momy", "health", "armor",
@@ -58,14 +59,21 @@ def trace_line(play):
         p.killcount, p.itemcount, p.secretcount, h)
 
 
-def play_demo(wad, demo, tics=None, partial=False, files=()):
-    """Plays ``demo`` (a ``Demo``, a lump name of ``wad`` or a .lmp path) on the WAD (and
-    the PWADs ``files``) and yields the trace line of every tic that ran the play ticker
-    (at most ``tics`` tics of the demo)."""
+def start_demo(wad, demo, files=(), partial=False):
+    """``(play, demo)``: a ``Play`` on the WAD (and PWADs ``files``) with ``demo`` (a
+    ``Demo``, a lump name of ``wad`` or a .lmp path) started (G_DoPlayDemo).  Each of
+    ``demo.tics`` is then one ``play.g_ticker(commands)``, True when the play ran."""
     if not hasattr(demo, "tics"):
         demo = load_demo(wad, demo)
     play = play_class(partial)(wad, files)
     play.g_do_play_demo(demo)
+    return play, demo
+
+
+def play_demo(wad, demo, tics=None, partial=False, files=()):
+    """Plays ``demo`` (see ``start_demo``) and yields the trace line of every tic that ran
+    the play ticker (at most ``tics`` tics of the demo)."""
+    play, demo = start_demo(wad, demo, files, partial)
     for commands in itertools.islice(demo.tics, tics):
         if play.g_ticker(commands):
             line = trace_line(play)
@@ -131,7 +139,7 @@ def main(argv=None):
         finally:
             if out:
                 out.close()
-    except (DemoError, OSError) as e:
+    except (DemoError, MapLoadError, OSError) as e:
         print(f"error: {e}", file=sys.stderr)
         return 2
     if reference is None:
