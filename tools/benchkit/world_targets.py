@@ -1,13 +1,17 @@
-"""The world's targets (SPEC §8); prints one JSON object.
+"""The world's targets (SPEC §8, §10); prints one JSON object.
 
     python tools/bench.py world            # the full run (about a minute)
     python tools/bench.py world --quick    # a smoke run (E1M1 only)
 
-1. ``World.tic`` on MAP12 (freedoom2.wad, the largest map) with every mover idle: the player
-   standing at the start, the level's light effects running; the median of single tics.
-   Target ≤ 0.1 ms.
-2. ``World.tic`` on MAP12 with 20 movers active: 20 doors opened at once (their lines used
-   through the world's rules), each tic timed while all 20 move.  Target ≤ 0.5 ms.
+The world is DOOM's play simulation (``wallbsp.game.playsim``), so these time its tics.
+
+1. ``World.tic`` on MAP12 (freedoom2.wad, the largest map), the player standing at the
+   start, nothing awake: the level's light effects and the idle monsters' looks; the median
+   of single tics.  Target ≤ 0.5 ms.
+2. ``World.tic`` on MAP12 with every monster awake (each set chasing the player, as a noise
+   would wake it) and 20 doors moving (their lines used through DOOM's ``P_UseSpecialLine``
+   with every key held): the median of single tics while they act.  Target ≤ 1 ms
+   (issue 20).
 3. Rendering a ``World`` against rendering the static tree along the scripted E1M1 walk
    (walk.py; freedoom1.wad), 320x200 front to back: every door of the map opened at the
    start and one tic run before each frame, so the renderer meets changed heights; the two
@@ -28,10 +32,11 @@ from .freedoom import FREEDOOM, absent_wads, load_map
 from .report import machine, machine_line, markdown_table, run_script, script_parser
 from .walk import walk_frames, walk_path
 
-IDLE_TARGET_MS, ACTIVE_TARGET_MS, RENDER_TARGET = 0.1, 0.5, 1.10
+IDLE_TARGET_MS, ACTIVE_TARGET_MS, RENDER_TARGET = 0.5, 1.0, 1.10
 ACTIVE_MOVERS = 20
 SIZE = (320, 200)
-ALL_KEYS = ("blue", "red", "yellow")
+# DOOM's manual doors (DR, D1 and the locked ones; not the blazing 117/118, soon open)
+MANUAL_DOORS = frozenset((1, 26, 27, 28, 31, 32, 33, 34))
 
 
 def main(argv=None) -> int:
@@ -50,7 +55,7 @@ def run(args) -> dict:
         (compile_level(load_map(FREEDOOM[1], "MAP12")), "MAP12")
     return {"machine": machine(), "quick": args.quick,
             "idle": idle_tics(*ticked, tics),
-            "active": active_tics(*ticked, ACTIVE_MOVERS),
+            "active": active_tics(*ticked, ACTIVE_MOVERS, 60 if args.quick else 300),
             "render": render_ratio(e1m1, 30 if args.quick else walk_frames(),
                                    1 if args.quick else 5)}
 
@@ -66,51 +71,80 @@ def timed_tics(world, count: int) -> list[float]:
 
 def idle_tics(tree, name: str, count: int) -> dict:
     world = World(tree)
-    timed_tics(world, 35)                     # the player settles; caches are built
+    timed_tics(world, 35)                     # the pistol comes up; caches are built
     times = timed_tics(world, count)
     median = 1000 * statistics.median(times)
-    return {"map": name, "tics": count, "active_movers": world.rules.active_movers,
-            "light_effects": len(world.rules.lights), "median_ms": round(median, 4),
+    return {"map": name, "tics": count, "active_movers": world.active_movers,
+            "thinkers": sum(1 for _ in world.play.thinkers()),
+            "median_ms": round(median, 4),
             "p90_ms": round(1000 * sorted(times)[int(0.9 * len(times))], 4),
             "target_ms": IDLE_TARGET_MS, "meets_target": median <= IDLE_TARGET_MS}
 
 
-def door_lines(world, count: int) -> list[int]:
-    """An opening line of each of up to ``count`` shut doors (manual, two-sided, not
-    blazing), the doors that open furthest first (they move longest)."""
-    from wallbsp.game.specials import LINE_SPECIALS
+def door_lines(world, count: int) -> list:
+    """An opening line of each of up to ``count`` shut manual doors of the play, the doors
+    that open furthest first (they move longest)."""
+    play = world.play
     lines = {}
-    for i, wall in enumerate(world.level.walls):
-        entry = LINE_SPECIALS.get(wall.special)
-        if (entry is not None and entry.trigger == "D" and wall.back is not None
-                and "BLAZE" not in str(entry.arg)):          # blazing doors are soon open
-            floor, ceiling, _light = world.sector(wall.back)
-            if ceiling - floor < 1:
-                lines.setdefault(wall.back, i)
-    rise = {s: world.rules.neighbours.lowest_ceiling(world.state, s) - world.sector(s)[1]
+    for line in play.lines:
+        back = line.backsector
+        if line.special in MANUAL_DOORS and back is not None \
+                and back.ceilingheight <= back.floorheight:
+            lines.setdefault(back.id, line)
+    rise = {s: _lowest_neighbour_ceiling(play.sectors[s]) - play.sectors[s].ceilingheight
             for s in lines}
     return [lines[s] for s in sorted(lines, key=lambda s: (-rise[s], s))[:count]]
 
 
-def active_tics(tree, name: str, count: int) -> dict:
-    """Tics while ``count`` doors (fewer if the map has fewer) all move."""
+def _lowest_neighbour_ceiling(sector):
+    heights = [other.ceilingheight for line in sector.lines
+               for other in (line.frontsector, line.backsector)
+               if other is not None and other is not sector]
+    return min(heights, default=sector.ceilingheight)
+
+
+def open_doors(world, lines) -> None:
+    """Use ``lines`` as the player would, holding every key."""
+    play = world.play
+    player = play.players[0]
+    player.cards = [True] * len(player.cards)
+    for line in lines:
+        play.p_use_special_line(player.mo, line, 0)
+    world.state.sync()
+
+
+def wake_monsters(world) -> int:
+    """Every monster chasing the player, as a noise that reached it would have it."""
+    from wallbsp.sim import info
+    play = world.play
+    target = play.players[0].mo
+    woken = 0
+    for th in list(play.thinkers()):
+        if getattr(th, "flags", 0) & info.MF_COUNTKILL and th.health > 0:
+            th.target = target
+            play.p_set_mobj_state(th, th.info.seestate)
+            woken += 1
+    return woken
+
+
+def active_tics(tree, name: str, count: int, tics: int) -> dict:
+    """Tics while every monster is awake and ``count`` doors (fewer if the map has fewer)
+    move."""
     world = World(tree)
     timed_tics(world, 35)
-    for line in door_lines(world, count):
-        world.rules.use_line(line, 0, keys=ALL_KEYS)
-    started = world.rules.active_movers
-    times = []
-    while started and world.rules.active_movers >= started and len(times) < 60:
-        before = world.state.ceiling.copy()
+    woken = wake_monsters(world)
+    open_doors(world, door_lines(world, count))
+    started = world.active_movers
+    times, moving = [], 0
+    for _ in range(tics):
+        before = world.active_movers
         times += timed_tics(world, 1)
-        if (world.state.ceiling != before).sum() < started:
-            times.pop()                       # a door reached the top: not all moving
-            break
-    median = 1000 * statistics.median(times) if times else None
-    return {"map": name, "movers_started": started, "tics_with_all_moving": len(times),
-            "median_ms": None if median is None else round(median, 4),
-            "target_ms": ACTIVE_TARGET_MS,
-            "meets_target": median is not None and median <= ACTIVE_TARGET_MS}
+        moving += before >= started
+    median = 1000 * statistics.median(times)
+    return {"map": name, "monsters_awake": woken, "movers_started": started,
+            "tics": len(times), "tics_with_all_moving": moving,
+            "median_ms": round(median, 4), "target_ms": ACTIVE_TARGET_MS,
+            "meets_target": median <= ACTIVE_TARGET_MS}
 
 
 def render_ratio(tree, frames: int, passes: int) -> dict:
@@ -123,8 +157,7 @@ def render_ratio(tree, frames: int, passes: int) -> dict:
     for _ in range(passes):
         before = (static, live)
         world = World(tree)
-        for line in door_lines(world, len(world.level.walls)):
-            world.rules.use_line(line, 0, keys=ALL_KEYS)
+        open_doors(world, door_lines(world, len(world.level.walls)))
         render(world, cameras[0], *SIZE)
         for i, camera in enumerate(cameras):
             version = world.state.version
@@ -160,17 +193,19 @@ def section(result: dict) -> str:
         return "\n\n".join(head + [f"Not measured: {', '.join(result['missing'])} missing."])
     idle, active, frames = result["idle"], result["active"], result["render"]
     yes = lambda met: "yes" if met else "NO"            # noqa: E731
-    rows = [[f"`World.tic`, every mover idle ({idle['map']})", f"{idle['median_ms']} ms (median)",
+    rows = [[f"`World.tic`, nothing awake ({idle['map']})", f"{idle['median_ms']} ms (median)",
              f"≤ {idle['target_ms']} ms", yes(idle["meets_target"])],
-            [f"`World.tic`, {active['movers_started']} doors moving ({active['map']})",
-             f"{active['median_ms']} ms (median of {active['tics_with_all_moving']} tics)",
+            [f"`World.tic`, {active['monsters_awake']} monsters awake and "
+             f"{active['movers_started']} doors moving ({active['map']})",
+             f"{active['median_ms']} ms (median of {active['tics']} tics)",
              f"≤ {active['target_ms']} ms", yes(active["meets_target"])],
             [f"render a World / the static tree (E1M1 walk, {frames['size']})",
              f"{frames['ratio']} ({frames['world_ms']} / {frames['static_ms']} ms a frame)",
              f"≤ {frames['target']}", yes(frames["meets_target"])]]
     return "\n\n".join(head + [
-        "Single tics timed with `time.perf_counter`, the player standing at the start; the "
-        f"idle world still runs its {idle['light_effects']} light effects; the "
+        "Single tics of DOOM's play simulation timed with `time.perf_counter`, the player "
+        f"standing at the start; the idle world still runs its {idle['thinkers']} thinkers "
+        "(lights, monsters looking); then every monster is set chasing the player and the "
         f"{active['movers_started']} doors are the map's slowest shut doors (not blazing), "
         "used at once. The render ratio is that of the summed frame "
         f"times of {frames['frames']} frames, world and tree interleaved, the median of "

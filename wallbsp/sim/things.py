@@ -41,7 +41,8 @@ from wallbsp.sim.collision import box_sides
 from wallbsp.sim.thingtypes import (DEATHMATCH_START, PLAYER_STARTS, SOLID, SPAWNCEILING,
     thing_info)
 
-__all__ = ["Things", "level_things", "spawned_at", "locate_leaves", "MULTIPLAYER_ONLY"]
+__all__ = ["Things", "level_things", "spawned_at", "locate_leaves", "leaf_sectors",
+           "MULTIPLAYER_ONLY"]
 
 MULTIPLAYER_ONLY = 16              # THINGS flag bit 4
 _MARKERS = frozenset(PLAYER_STARTS) | {DEATHMATCH_START}
@@ -106,6 +107,11 @@ def _tree_lines(tree) -> _TreeLines:
     if lines is None:
         lines = _LINES[tree] = _TreeLines(tree)
     return lines
+
+
+def leaf_sectors(tree) -> np.ndarray:
+    """The sector of each leaf of ``tree`` (int64, made once per tree)."""
+    return _tree_lines(tree).leaf_sector
 
 
 def locate_leaves(tree, x, y) -> np.ndarray:

@@ -159,6 +159,24 @@ class TicCmd:
         self.angleturn, self.buttons = angleturn, buttons
         self.consistancy = self.chatchar = 0
 
+    def copy_to(self, cmd):
+        """``*cmd = *self`` for the fields a command carries (G_Ticker's copy into a
+        player's ``cmd``)."""
+        cmd.forwardmove, cmd.sidemove = self.forwardmove, self.sidemove
+        cmd.angleturn, cmd.buttons = self.angleturn, self.buttons
+
+    def __repr__(self):
+        return (f"TicCmd(forwardmove={self.forwardmove}, sidemove={self.sidemove}, "
+                f"angleturn={self.angleturn}, buttons={self.buttons})")
+
+    def __eq__(self, other):
+        if not isinstance(other, TicCmd):
+            return NotImplemented
+        return (self.forwardmove, self.sidemove, self.angleturn, self.buttons) == \
+            (other.forwardmove, other.sidemove, other.angleturn, other.buttons)
+
+    __hash__ = None
+
 
 # buttons (d_event.h)
 BT_ATTACK, BT_USE, BT_SPECIAL, BT_CHANGE = 1, 2, 128, 4

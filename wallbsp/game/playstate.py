@@ -1,0 +1,294 @@
+"""What the renderer and the queries read of DOOM's play simulation: a ``WorldState`` fed
+from a ``Play`` once a tic (``PlayState.sync``), so the renderer draws the play without
+knowing it.
+
+- **Sectors**: ``floor``, ``ceiling`` and ``light`` are the Play's ``floorheight``,
+  ``ceilingheight`` (map units, from fixed point) and ``lightlevel`` (so flickering lights
+  are the playsim's light thinkers, random numbers and all); ``version`` moves only when a
+  height changed, so the renderer's caches keyed on it survive a tic where only lights
+  changed.  Floor flats that a special changed are ``floor_textures``.
+- **Walls**: wall ``i`` is a line of the Play (``wall_lines``: DOOM's linedefs in order,
+  less the ones the importer leaves out, SPEC §2b), its front side the line's right side
+  (its left one where the line has no right side).  A switch's pressed texture and the
+  offset of a scrolling wall (special 48) are ``wall_textures`` and ``wall_x_offset``;
+  only the sides of lines that had a special when the level was loaded are watched (no
+  other line ever changes its texture).
+- **Things**: every map object (``mobj``) is a thing of ``PlayThings`` (a ``Things``),
+  drawn in its *current* state's frame: ``type`` there is a picture code (the sprite
+  number × 256 + the frame letter), ``bright`` the state's full-bright bit, ``angle`` the
+  mobj's, ``z`` its feet.  Thing ``i`` of the level's THINGS entries is the mobj that entry
+  spawned (``slots`` given at load); mobjs spawned later (missiles, puffs, blood, drops,
+  the spawner's cubes) are appended, and a removed mobj's thing stays, not ``alive``, so a
+  thing's index never changes while the level is played.  ``ThingsView`` is what
+  ``World.things`` shows callers: the same arrays, ``type`` the editor number (DOOM's
+  ``doomednum``, -1 for objects no map places) and ``mobjtype`` DOOM's ``MT_*``.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from wallbsp.sim import info
+from wallbsp.sim.state import WorldState
+from wallbsp.sim.things import Things, leaf_sectors, locate_leaves
+from wallbsp.sim.thingtypes import COUNTKILL, NOSECTOR, ThingInfo, thing_info
+
+__all__ = ["PlayState", "PlayThings", "ThingsView", "wall_lines", "picture_code",
+           "FRAC", "ANGLE_DEGREES"]
+
+FRAC = 1.0 / 65536.0
+ANGLE_DEGREES = 360.0 / 4294967296.0
+FF_FULLBRIGHT, FF_FRAMEMASK = 0x8000, 0x7FFF
+SCROLL_SPECIAL = 48                     # the wall whose texture scrolls left
+
+
+def picture_code(sprite: int, frame: int) -> int:
+    """The key the renderer chooses a thing's picture by: sprite and frame letter."""
+    return (sprite << 8) | (frame & FF_FRAMEMASK & 0xFF)
+
+
+def wall_lines(play) -> list:
+    """``[(line, front side, back side or -1), ...]`` of each wall: the Play's lines in
+    order without those with no side or no length, a line with only a left side turned
+    round (the importer's rule, ``level.wadmap``)."""
+    walls = []
+    for line in play.lines:
+        right, left = line.sidenum
+        if right == -1 and left == -1:
+            continue
+        if line.v1.x == line.v2.x and line.v1.y == line.v2.y:
+            continue
+        if right == -1:
+            walls.append((line, left, -1))
+        else:
+            walls.append((line, right, left))
+    return walls
+
+
+class PlayThings(Things):
+    """The map objects of a Play as ``Things`` (module docstring)."""
+
+    def __init__(self, tree, capacity: int = 0):
+        super().__init__(tree)
+        self.doomednum = np.zeros(0, dtype=np.int64)
+        self.mobjtype = np.zeros(0, dtype=np.int64)
+        self.mobjs: list = []            # slot -> mobj (None: no mobj ever)
+        self._slot: dict = {}            # mobj -> slot
+        self._pictures: dict = {}        # picture code -> ThingInfo (what the renderer reads)
+        self._grow(capacity)
+
+    def _info(self, code: int):
+        return self._pictures.get(int(code))
+
+    def mobj(self, i: int):
+        """The map object of thing ``i`` (None when it is no longer in the world)."""
+        mo = self.mobjs[i] if 0 <= i < len(self.mobjs) else None
+        return mo if mo is not None and self.alive[i] else None
+
+    def _grow(self, n: int) -> None:
+        """Arrays for ``n`` things (new ones not alive)."""
+        extra = n - len(self.x)
+        if extra <= 0:
+            return
+        for name, fill in (("x", 0.0), ("y", 0.0), ("z", 0.0), ("angle", 0.0), ("type", -1),
+                           ("alive", False), ("leaf", 0), ("sector", -1), ("radius", 0.0),
+                           ("height", 0.0), ("flags", 0), ("drawn", False), ("bright", False),
+                           ("doomednum", -1), ("mobjtype", -1)):
+            old = getattr(self, name)
+            setattr(self, name, np.concatenate([old, np.full(extra, fill, dtype=old.dtype)]))
+        self.mobjs.extend([None] * (n - len(self.mobjs)))
+
+    def sync(self, play, slots=None) -> bool:
+        """Read every live mobj of ``play`` (``slots``: mobj -> thing index for the ones
+        placed by THINGS entries, at load).  True when anything changed."""
+        if slots:
+            self._grow(max(slots.values()) + 1)
+            for mo, i in slots.items():
+                self._slot[mo] = i
+                self.mobjs[i] = mo
+        mobj_func = type(play).p_mobj_thinker
+        cap = play.thinkercap
+        th = cap.next
+        slot_of, states, mobjs, pictures = self._slot, info.STATES, self.mobjs, self._pictures
+        rows = []
+        while th is not cap:
+            if th.func is mobj_func:
+                i = slot_of.get(th)
+                if i is None:
+                    i = slot_of[th] = len(mobjs)
+                    mobjs.append(th)
+                st = states[th.state]
+                code = (st.sprite << 8) | (st.frame & 0xFF)
+                if code not in pictures:
+                    self._learn(st, th)
+                rows.append((i, th.x, th.y, th.z, th.angle, code, st.frame & FF_FULLBRIGHT,
+                             th.flags, th.radius, th.height))
+            th = th.next
+        self._grow(len(mobjs))
+        return self._apply(rows)
+
+    def _learn(self, st, mo) -> None:
+        code = picture_code(st.sprite, st.frame)
+        flags = mo.flags
+        self._pictures[code] = ThingInfo(
+            type=code, name=info.SPRNAMES[st.sprite], sprite=info.SPRNAMES[st.sprite],
+            frame=chr(ord("A") + (st.frame & FF_FRAMEMASK)), radius=mo.radius >> 16,
+            height=mo.height >> 16, flags=flags, bright=bool(st.frame & FF_FULLBRIGHT),
+            rotates=True, monster=bool(flags & COUNTKILL))
+
+    def _apply(self, rows) -> bool:
+        seen = np.zeros(len(self.x), dtype=bool)
+        changed = False
+        if rows:
+            a = np.array(rows, dtype=np.int64)
+            ids = a[:, 0]
+            seen[ids] = True
+            x, y, z = a[:, 1] * FRAC, a[:, 2] * FRAC, a[:, 3] * FRAC
+            angle = (a[:, 4] & 0xFFFFFFFF) * ANGLE_DEGREES
+            code, bright, flags = a[:, 5].astype(np.int32), a[:, 6] != 0, a[:, 7]
+            radius, height = a[:, 8] * FRAC, a[:, 9] * FRAC
+            moved = (self.x[ids] != x) | (self.y[ids] != y) | ~self.alive[ids]
+            other = (moved | (self.z[ids] != z) | (self.angle[ids] != angle)
+                     | (self.type[ids] != code) | (self.bright[ids] != bright)
+                     | (self.flags[ids] != flags) | (self.radius[ids] != radius)
+                     | (self.height[ids] != height))
+            if moved.any():
+                m = ids[moved]
+                leaf = locate_leaves(self.tree, x[moved], y[moved])
+                self.leaf[m] = leaf
+                self.sector[m] = leaf_sectors(self.tree)[leaf]
+            if other.any():
+                c = ids[other]
+                k = other
+                self.x[c], self.y[c], self.z[c], self.angle[c] = x[k], y[k], z[k], angle[k]
+                self.type[c], self.bright[c], self.flags[c] = code[k], bright[k], flags[k]
+                self.radius[c], self.height[c] = radius[k], height[k]
+                self.drawn[c] = (flags[k] & NOSECTOR) == 0
+                self.alive[c] = True
+                fresh = c[self.mobjtype[c] < 0]
+                for i in fresh.tolist():
+                    t = self.mobjs[i].type
+                    self.mobjtype[i] = t
+                    self.doomednum[i] = info.MOBJINFO[t].doomednum
+                changed = True
+                self._changed(c)
+        gone = np.flatnonzero(self.alive & ~seen)
+        if gone.size:
+            self.alive[gone] = False
+            for i in gone.tolist():
+                mo = self.mobjs[i]
+                if mo is not None:
+                    self._slot.pop(mo, None)
+                    self.mobjs[i] = None
+            self._changed(gone)
+            changed = True
+        return changed
+
+
+class ThingsView:
+    """``World.things``: the things' arrays as callers know them (``type``: the editor
+    number, -1 for objects no map places; ``mobjtype``: DOOM's ``MT_*``; ``alive``: still
+    in the world).  Everything else is ``PlayThings``'."""
+
+    def __init__(self, things: PlayThings):
+        self._things = things
+
+    @property
+    def type(self) -> np.ndarray:
+        return self._things.doomednum
+
+    def info(self, i: int):
+        """The ``ThingInfo`` of thing ``i``'s editor number (None for one no map places)."""
+        number = int(self._things.doomednum[i])
+        return thing_info(number, self._things.own_types) if number >= 0 else None
+
+    def __len__(self) -> int:
+        return len(self._things)
+
+    def __getattr__(self, name):
+        return getattr(self._things, name)
+
+
+class PlayState(WorldState):
+    """A ``WorldState`` read from a ``Play`` (module docstring)."""
+
+    def __init__(self, tree, play, skill: int = 3, slots=None):
+        super().__init__(tree, skill)
+        self.play = play
+        self._things = PlayThings(tree, capacity=len(tree.level.things))
+        self.walls = wall_lines(play)
+        self._watched = []               # (wall, side number, Side, textures at load)
+        self._scrolling = []             # (wall, Side, offset at load)
+        for wall, (line, front, back) in enumerate(self.walls):
+            if not line.special:
+                continue
+            for side, sidenum in ((0, front), (1, back)):
+                if sidenum >= 0:
+                    sd = play.sides[sidenum]
+                    self._watched.append((wall, side, sd, self._textures_of(sd)))
+            if line.special == SCROLL_SPECIAL:
+                sd = play.sides[front]
+                self._scrolling.append((wall, sd, sd.textureoffset))
+        self._floorpics = [s.floorpic for s in play.sectors]
+        self._heights = None
+        self._lights = None
+        self._pics = list(self._floorpics)
+        self.sync(slots)
+        self.things.version = 0
+
+    @staticmethod
+    def _textures_of(sd):
+        return (sd.toptexture, sd.midtexture, sd.bottomtexture)
+
+    def sync(self, slots=None) -> None:
+        """Read the Play's state after a tic (or at load)."""
+        play = self.play
+        sectors = play.sectors
+        heights = [s.floorheight for s in sectors], [s.ceilingheight for s in sectors]
+        if heights != self._heights:
+            self._heights = heights
+            self.floor = np.array(heights[0], dtype=np.float64) * FRAC
+            self.ceiling = np.array(heights[1], dtype=np.float64) * FRAC
+            self.version += 1
+        lights = [s.lightlevel for s in sectors]
+        if lights != self._lights:
+            self._lights = lights
+            self.light = np.array(lights, dtype=np.float64)
+        pics = [s.floorpic for s in sectors]
+        if pics != self._pics:
+            for i, (was, now) in enumerate(zip(self._pics, pics)):
+                if was != now:
+                    self.floor_textures[i] = None if now == "-" else now
+            self._pics = pics
+            self.texture_version += 1
+        for wall, side, sd, first in self._watched:
+            now = self._textures_of(sd)
+            if now == first and not self.wall_textures:
+                continue
+            for part, was, name in zip(("upper", "middle", "lower"), first, now):
+                key = (wall, side, part)
+                if name == was:
+                    if key in self.wall_textures:
+                        del self.wall_textures[key]
+                        self.texture_version += 1
+                elif self.wall_textures.get(key, was) != (None if name == "-" else name) \
+                        or key not in self.wall_textures:
+                    self.wall_textures[key] = None if name == "-" else name
+                    self.texture_version += 1
+        for wall, sd, first in self._scrolling:
+            self.wall_x_offset[wall] = (sd.textureoffset - first) * FRAC
+        self._things.sync(play, slots)
+
+    def set_sector(self, i: int, floor=None, ceiling=None, light=None) -> None:
+        """Change sector ``i`` in the play itself (heights to DOOM's fixed point), then read
+        it back: the play owns the sectors."""
+        sector = self.play.sectors[i]
+        if floor is not None:
+            sector.floorheight = int(round(float(floor) * 65536))
+        if ceiling is not None:
+            sector.ceilingheight = int(round(float(ceiling) * 65536))
+        if light is not None:
+            sector.lightlevel = int(light)
+        self.sync()
+
+    def set_light(self, i: int, light) -> None:
+        self.set_sector(i, light=light)
