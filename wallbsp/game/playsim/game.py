@@ -12,6 +12,7 @@ buttons they latch into ``attackdown``/``usedown``) are in ``intermission.py``.
 
 Sounds are not played: ``s_start_sound``/``s_stop_sound`` only count calls.
 """
+import os
 import struct
 
 from wallbsp.sim import info
@@ -19,7 +20,7 @@ from wallbsp.sim.fixed import FRACBITS, FRACUNIT
 from wallbsp.sim.rng import Random
 
 from .demos import DemoError, wad_entries, wad_image
-from .structs import (BT_SPECIAL, COMMERCIAL, EXE_DOOM_1_9, EXE_ULTIMATE, MAXPLAYERS,
+from .structs import (BT_SPECIAL, COMMERCIAL, EXE_DOOM_1_9, EXE_FINAL, EXE_ULTIMATE, MAXPLAYERS,
                       PST_DEAD, PST_REBORN, REGISTERED, RETAIL, SHAREWARE, MapThing, Player)
 
 # gamestate_t and gameaction_t (d_event.h / doomdef.h)
@@ -54,11 +55,13 @@ def set_fast_monsters(fast: bool) -> None:
     _fast_monsters = fast
 
 
-def game_mode(names) -> tuple:
+def game_mode(names, iwad_name="") -> tuple:
     """(gamemode, gameversion) as Chocolate Doom picks them for an IWAD with these lumps:
-    Doom II's maps → commercial, v1.9; E4 → retail, Ultimate Doom; E2/E3 → registered."""
+    Doom II's maps → commercial, v1.9 (Final Doom's tnt.wad and plutonia.wad: its
+    executable); E4 → retail, Ultimate Doom; E2/E3 → registered."""
     if "MAP01" in names:
-        return COMMERCIAL, EXE_DOOM_1_9
+        final = os.path.basename(str(iwad_name)).lower() in ("tnt.wad", "plutonia.wad")
+        return COMMERCIAL, EXE_FINAL if final else EXE_DOOM_1_9
     if "E4M1" in names:
         return RETAIL, EXE_ULTIMATE
     if "E3M1" in names or "E2M1" in names:
@@ -90,7 +93,7 @@ class Game:
         # the IWAD alone decides the game (as Chocolate Doom identifies it)
         iwad = self.wad_entries[:len(self.wad_entries) - sum(
             1 for f in self.wad_entry_files if f is not wad_path)]
-        self.gamemode, self.gameversion = game_mode({e[0] for e in iwad})
+        self.gamemode, self.gameversion = game_mode({e[0] for e in iwad}, wad_path or "")
         self.rng = Random()
         self.players = [Player() for _ in range(MAXPLAYERS)]
         self.playeringame = [False] * MAXPLAYERS
