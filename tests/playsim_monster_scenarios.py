@@ -10,6 +10,7 @@ these bytes:
 - ``zoo-*``: a Freedoom 2 map whose monsters are all replaced by a cycle of other types
   (arch-viles, revenants, pain elementals, mancubi, spiders, cyberdemons, the boss brain's
   spitter and targets, ...), played by a pseudo-random walk that fires half the time.
+- ``coop-*``: the same with two players (a net game), each on its own walk.
 - ``boss-*``: a two-room map (``playsim_scenarios.room_map``) where a deaf boss stands on a
   teleport destination in the east room, facing away; the player walks in behind it, turns
   and walks back over the WR teleport line (tagged 666 like the east room), telefragging it:
@@ -29,6 +30,11 @@ ZOO = {  # name -> (map, the doomednums replacing its monsters in turn, tics, wa
     "zoo-map05": ("MAP05", (68, 7, 3003, 3005, 71, 3001, 3002), 1500, 2),
     "zoo-map06": ("MAP06", (88, 16, 89, 87, 16, 87, 88, 7), 1500, 6),
     "zoo-map07": ("MAP07", (67, 68, 16, 3003), 1500, 7),
+}
+# two players in co-op (a net game: A_Chase's second look, P_LookForPlayers over two players)
+COOP = {  # name -> (map, replacing doomednums, tics, the players' walks' seeds, skill)
+    "coop-map01": ("MAP01", (64, 66, 67, 71, 68, 16, 7, 72, 69, 3003, 3006, 65, 3005, 58,
+                             9, 3001, 3002, 3004), 2000, (3, 4), 2),
 }
 BOSSES = {  # name -> (IWAD, map name, episode, map, the boss's doomednum)
     "boss-map07": ("freedoom2", "MAP07", 1, 7, 67),
@@ -83,8 +89,8 @@ def _room_with_tag(things, special):
 
 def scenario_pwad(name, iwad_path):
     """The PWAD bytes of scenario ``name`` (``iwad_path``: the IWAD a zoo map comes from)."""
-    if name in ZOO:
-        mapname, cycle, _, _ = ZOO[name]
+    if name in ZOO or name in COOP:
+        mapname, cycle = (ZOO.get(name) or COOP[name])[:2]
         lumps = [(n, _replace_monsters(raw, cycle) if n == "THINGS" else raw)
                  for n, raw in _iwad_map(iwad_path, mapname)]
     elif name in BOSSES:
@@ -131,6 +137,11 @@ def scenario_demo(name):
         mapname, _, count, seed = ZOO[name]
         skill, episode, gamemap = 1, 1, int(mapname[3:])
         tics = _random_walk(count, seed)
+    elif name in COOP:
+        mapname, _, count, seeds, skill = COOP[name]
+        walks = [_random_walk(count, seed) for seed in seeds]
+        header = bytes([109, skill, 1, int(mapname[3:]), 0, 0, 0, 0, 0, 1, 1, 0, 0])
+        return header + b"".join(a + b for a, b in zip(*walks)) + b"\x80"
     elif name in BOSSES:
         _, _, episode, gamemap, _ = BOSSES[name]
         skill = 2
@@ -144,4 +155,4 @@ def scenario_demo(name):
     return header + b"".join(tics) + b"\x80"
 
 
-SCENARIOS = sorted(ZOO) + sorted(BOSSES) + ["keens"]
+SCENARIOS = sorted(ZOO) + sorted(COOP) + sorted(BOSSES) + ["keens"]
