@@ -25,6 +25,7 @@ BENCHMARKS = {
     "resources": ("resources", "WAD and texture loading, each in a fresh process"),
     "compare": ("compare", "this checkout against a baseline checkout, interleaved"),
     "env": ("env_throughput", "environments' steps/s, vector envs, reset time"),
+    "vector": ("vector", "make_vec's batched vector env against one env and gymnasium's"),
     "playsim": ("playsim", "DOOM's play simulation: demo playback tics/s against Chocolate Doom"),
 }
 

@@ -15,6 +15,9 @@ or, without the import, with the module named in the id (gymnasium imports it)::
 - ``wallbsp/Explore-v0``: a fresh generated level every episode; reward for new ground;
 - ``wallbsp/Find-v0``: a generated level with a target thing; +1 for reaching it.
 
+``make_vec(env_id, num_envs, workers=...)`` runs many as one gymnasium ``VectorEnv`` with
+shared-memory batches and EnvPool's ``send``/``recv`` (``vector``).
+
 The tasks are in ``tasks``, the options every environment takes in ``base``, the action
 tables in ``actions``, the observation keys in ``observations``.  gymnasium is imported
 here and below only: ``import wallbsp`` does not need it.
@@ -25,9 +28,11 @@ from wallbsp.envs.actions import DISCRETE_ACTIONS, TURN_DEGREES, Buttons
 from wallbsp.envs.base import DEFAULT_OBSERVATIONS, WallbspEnv
 from wallbsp.envs.observations import OBSERVATIONS
 from wallbsp.envs.tasks import ExitEnv, ExploreEnv, FindEnv
+from wallbsp.envs.vector import WorkerError, make_vec
 
 __all__ = ["DEFAULT_OBSERVATIONS", "DISCRETE_ACTIONS", "ENV_IDS", "OBSERVATIONS",
-           "TURN_DEGREES", "Buttons", "ExitEnv", "ExploreEnv", "FindEnv", "WallbspEnv"]
+           "TURN_DEGREES", "Buttons", "ExitEnv", "ExploreEnv", "FindEnv", "WallbspEnv",
+           "WorkerError", "make_vec"]
 
 ENV_IDS = {"wallbsp/Exit-v0": "wallbsp.envs.tasks:ExitEnv",
            "wallbsp/Explore-v0": "wallbsp.envs.tasks:ExploreEnv",
