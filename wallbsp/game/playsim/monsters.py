@@ -16,7 +16,7 @@ levels as C keeps it.
 """
 from wallbsp.sim import info
 from wallbsp.sim.fixed import FRACBITS, FRACUNIT, ANG90, ANG270, point_to_angle2, wrap32
-from wallbsp.game.playsim.structs import COMMERCIAL, EXE_DOOM_1_2
+from wallbsp.game.playsim.structs import EXE_DOOM_1_2
 
 # dirtype_t
 DI_EAST, DI_NORTHEAST, DI_NORTH, DI_NORTHWEST, DI_WEST, DI_SOUTHWEST, DI_SOUTH, \
@@ -37,14 +37,9 @@ MELEERANGE = 64 * FRACUNIT
 FLOATSPEED = 4 * FRACUNIT
 MAXRADIUS = 32 * FRACUNIT
 MAPBLOCKSHIFT = FRACBITS + 7
-MAXPLAYERS = 4
 
 # doomdef.h skill_t
 SK_NIGHTMARE = 4
-
-# structs' GameVersion_t leaves out Chocolate Doom's exe_doom_1_5 (between 1.2 and 1.666):
-# `gameversion < exe_doom_1_5` is `gameversion <= exe_doom_1_2`
-EXE_DOOM_1_5 = EXE_DOOM_1_2 + 0.5
 
 
 class Monsters:
@@ -119,7 +114,8 @@ class Monsters:
         if not pl:
             return False
         dist = self.p_aprox_distance(pl.x - actor.x, pl.y - actor.y)
-        if self.gameversion < EXE_DOOM_1_5:
+        # C: gameversion < exe_doom_1_5 (structs has no 1.5: the one before it is 1.2)
+        if self.gameversion <= EXE_DOOM_1_2:
             range_ = MELEERANGE
         else:
             range_ = MELEERANGE - 20 * FRACUNIT + pl.info.radius
@@ -410,7 +406,6 @@ class Monsters:
     def a_baby_metal(self, mo):
         self.s_start_sound(mo, info.sfx_bspwlk)
         self.a_chase(mo)
-
 
 
 def mobj_thinkers(play):
