@@ -1,14 +1,11 @@
-"""Movement and collision both ways: the compiled kernels (``segments.*_KERNEL``) and the
-same functions run by the interpreter must give the same floats, query by query and tic by
-tic of a walk (``wallbsp.jit.use_kernels``)."""
-import contextlib
-
+"""Movement and collision both ways: the compiled kernel (``segments.KERNEL``, what
+``queries`` runs) and the same functions run by the interpreter (``sim/collision.py`` is
+one source, compiled or not) must give the same floats, query by query."""
 import numpy as np
 import pytest
 
 from wallbsp import jit as compiled
 from wallbsp.sim import queries, collision as segments
-from wallbsp.game.world import World
 from wallbsp.sim.queries import PLAYER_RADIUS
 from wallbsp.sim.querytables import Tables
 from wallbsp.sim.state import WorldState
@@ -16,44 +13,11 @@ from wallbsp.sim.state import WorldState
 pytestmark = pytest.mark.skipif(not compiled.AVAILABLE, reason="numba is not installed")
 
 
-@contextlib.contextmanager
-def kernels(on):
-    previous = compiled.use_kernels(on)
-    try:
-        yield
-    finally:
-        compiled.use_kernels(previous)
-
-
 @pytest.fixture(params=["multi", "E1M1"])
 def tree(request, compiled_levels, freedoom_cache):
     if request.param == "E1M1":
         return freedoom_cache.tree("freedoom1.wad", "E1M1")
     return compiled_levels[request.param]
-
-
-def walk(tree, on, tics=500, seed=3):
-    """A World walked by seeded random inputs, each held for a while (so the walk gets
-    somewhere, into doors and things): every tic's player, heights and things."""
-    rng = np.random.default_rng(seed)
-    world = World(tree)
-    trail = []
-    with kernels(on):
-        for tic in range(tics):
-            if tic % 12 == 0:
-                forward, strafe = rng.choice([-1.0, 0.0, 1.0, 1.0]), rng.choice([-1.0, 0.0, 1.0])
-                turn, run = float(rng.uniform(-8, 8)), bool(rng.integers(2))
-            world.tic(forward, strafe, turn, use=bool(rng.integers(6) == 0), run=run)
-            p = world.player
-            trail.append((p.x, p.y, p.z, p.angle, p.momx, p.momy, p.floor, p.ceiling, p.eye,
-                          world.state.version, int(world.things.alive.sum())))
-    return trail
-
-
-def test_a_walk_is_the_same_tic_by_tic_compiled_or_not(tree):
-    compiled_trail, python_trail = walk(tree, True), walk(tree, False)
-    assert compiled_trail == python_trail
-    assert len({(x, y) for x, y, *_ in python_trail}) > 100      # it did walk about
 
 
 def sample_points(tree, count, seed):
@@ -96,31 +60,54 @@ def test_moves_and_surroundings_are_the_same_compiled_or_not(tree):
     assert moved > 100 and blocked > 20
 
 
-def test_points_on_partition_lines_are_located_exactly_both_ways(tree):
-    """At a seg's end the float side test cannot decide (``UNSURE``): the tree decides."""
+def test_points_on_partition_lines_are_located_exactly(tree):
+    """At a seg's end the float side test cannot decide (``UNSURE``): the tree decides,
+    and the interpreted functions say UNSURE there too."""
+    state = WorldState(tree)
+    tables = Tables(tree)
+    lists = (tables.lists, state.floor.tolist(), state.ceiling.tolist())
     ends = np.asarray(tree.seg_xy, dtype=np.float64)[:200, :2].tolist()
-    for on in (True, False):
-        with kernels(on):
-            state = WorldState(tree)          # a new state: no answer kept from the other way
-            for x, y in ends:
-                assert queries.surroundings(state, x, y).sector == tree.locate(x, y)
+    unsure = 0
+    for x, y in ends:
+        assert queries.surroundings(state, x, y).sector == tree.locate(x, y)
+        found = segments.surroundings_at(*lists, x, y, float(PLAYER_RADIUS), segments.LOCATE)
+        unsure += found[0] == segments.UNSURE
+        if found[0] != segments.UNSURE:
+            assert found[0] == (-1 if tree.locate(x, y) is None else tree.locate(x, y))
+    assert unsure > 0
 
 
-def test_queries_answer_the_same_compiled_or_not(tree):
-    """Through ``queries``, with separate states (each keeps its last answer)."""
-    answers = {}
-    for on in (True, False):
-        with kernels(on):
-            state = WorldState(tree)
-            out = []
-            for x, y in sample_points(tree, 150, 11):
-                out.append((queries.standing_heights(state, x, y),
-                            sorted(queries.sectors_overlapped(state, x, y)),
-                            queries.move(state, x, y, 37.0, -21.0, 0.0),
-                            queries.walls_crossed(state, (x, y), (x + 90.0, y + 40.0)),
-                            queries.use_target(state, x, y, 30.0, reach=200.0)))
-            answers[on] = out
-    assert answers[True] == answers[False]
+def test_queries_answer_as_the_interpreted_functions(tree):
+    """Through ``queries`` (compiled) against ``collision``'s functions interpreted on
+    the tree's lists: moves, surroundings and the walls a segment meets."""
+    state = WorldState(tree)
+    tables = Tables(tree)
+    lists = (tables.lists, state.floor.tolist(), state.ceiling.tolist())
+    moved = 0
+    for x, y in sample_points(tree, 150, 11):
+        if tree.locate(x, y) is None:
+            continue
+        got = queries.move(state, x, y, 37.0, -21.0, 0.0)
+        length = float(np.hypot(37.0, -21.0))
+        pieces = max(1, int(np.ceil(length / PLAYER_RADIUS)))
+        boxes = state.things.solid_boxes_near(x, y, 3 * length + PLAYER_RADIUS + 1)
+        want = segments.move_steps(*lists, boxes, x, y, 37.0 / pieces, -21.0 / pieces, pieces,
+                                   (0.0, float(PLAYER_RADIUS), 24.0, 56.0))
+        assert got == tuple(want)
+        moved += got != (x, y)
+        around = queries.surroundings(state, x, y)
+        sector, bottom, top, walls = segments.surroundings_at(*lists, x, y,
+                                                              float(PLAYER_RADIUS),
+                                                              segments.LOCATE)
+        if sector != segments.UNSURE:
+            assert (around.sector, around.floor, around.ceiling, around.walls) == \
+                (sector, bottom, top, walls)
+        met = sorted(segments.walls_met(tables.lists, x, y, x + 90.0, y + 40.0))
+        assert queries.walls_crossed(state, (x, y), (x + 90.0, y + 40.0)) == [
+            (wall, segments.wall_side(tables.lists[6][wall], x, y)) for _, wall in met
+            if segments.wall_side(tables.lists[6][wall], x, y)
+            != segments.wall_side(tables.lists[6][wall], x + 90.0, y + 40.0)]
+    assert moved > 50
 
 
 def test_the_compiled_length_is_math_hypot():

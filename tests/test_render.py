@@ -18,7 +18,7 @@ from wallbsp.image import png_bytes, save_png
 from wallbsp.level.model import Level, Sector, Start, Wall
 from wallbsp.camera import Camera
 from wallbsp.render import render
-from wallbsp.render.columns import ClosedColumns
+from wallbsp.render.walk import FAR, close_span, open_spans
 
 ROOT = Path(__file__).resolve().parent.parent
 GOLDEN = ROOT / "tests" / "golden"
@@ -125,6 +125,38 @@ def test_bad_arguments_are_value_errors():
 # The closed-column list: Gordon & Chen's eight cases, in terms of the open stretch [10, 20)
 # between the closed intervals [0, 10) and [20, 30) (screen 30 wide)
 
+class ClosedColumns:
+    """The walk kernel's closed-column list (``walk.open_spans``, ``walk.close_span``, run
+    as the walk runs them) behind the interface of a list of intervals."""
+
+    def __init__(self, width):
+        self.width = width
+        self.starts = np.empty(width + 4, dtype=np.int64)
+        self.ends = np.empty(width + 4, dtype=np.int64)
+        self.starts[:2], self.ends[:2] = (-FAR, width), (0, FAR)
+        self.count = 2
+
+    @property
+    def full(self):
+        return self.count == 1
+
+    def intervals(self):
+        return [(max(s, 0), min(e, self.width)) for s, e in
+                zip(self.starts[:self.count].tolist(), self.ends[:self.count].tolist())
+                if min(e, self.width) > max(s, 0)]
+
+    def covers(self, c1, c2):
+        i = int(np.searchsorted(self.starts[:self.count], c1, side="right")) - 1
+        return self.ends[i] >= c2
+
+    def clip(self, c1, c2, solid):
+        spans = np.empty((self.width + 2, 2), dtype=np.int64)
+        n = open_spans(self.starts, self.ends, self.count, c1, c2, spans)
+        if solid and n:
+            self.count = close_span(self.starts, self.ends, self.count, c1, c2)
+        return [tuple(span) for span in spans[:n].tolist()]
+
+
 def list_with_hole():
     closed = ClosedColumns(30)
     closed.clip(0, 10, True)
@@ -226,18 +258,6 @@ def test_painter_equals_front_to_back_on_random_views(compiled_levels):
             back = render(tree, camera, width, height, order="back_to_front")
             assert_same_frames(front, back)
             assert back.stats["pixels_written"] >= front.stats["pixels_written"]
-
-
-def test_painter_gives_the_same_frame_in_small_chunks(compiled_levels, monkeypatch):
-    from wallbsp.render import painter
-    tree = compiled_levels["multi"]
-    camera = Camera(256, 112, 41, 60)
-    whole = render(tree, camera, 96, 60, order="back_to_front")
-    monkeypatch.setattr(painter, "PAINTER_CHUNK", 500)
-    chunked = render(tree, camera, 96, 60, order="back_to_front")
-    assert_same_frames(whole, chunked)
-    assert_same_frames(whole, render(tree, camera, 96, 60))
-    assert whole.stats == chunked.stats
 
 
 def test_painter_equals_front_to_back_in_odd_places(compiled_levels):

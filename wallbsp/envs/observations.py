@@ -22,7 +22,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from wallbsp.render.rowmajor import rows_of
+from wallbsp.render.rows import rows_of
 
 __all__ = ["OBSERVATIONS", "VIEW_KEYS", "observation_space", "check_observations", "Automap",
            "pose_of", "view_observation"]

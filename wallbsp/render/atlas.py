@@ -1,5 +1,5 @@
 """The pictures drawn over the frame (sprites, masked middle textures) packed into flat arrays,
-so one numpy gather fetches the texels of every sprite column of a frame at once.
+which the masked pass's kernels read.
 
 A picture gets a *slot*: its texels are ``texels[offset + x*height + y]`` (column-major,
 like ``Picture.pixels``), with ``opaque`` beside them.  A WAD picture's texel is a palette
@@ -11,12 +11,30 @@ the atlas lives: the renderer keeps one atlas per resource set.
 from __future__ import annotations
 
 import weakref
+from typing import NamedTuple
 
 import numpy as np
 
-from wallbsp.render.shading import lit_palette, pack_rgb, scaled_rgb
+from wallbsp.render.shading import lit_palette, pack_rgb
 
-__all__ = ["Atlas", "atlas_for"]
+__all__ = ["Atlas", "Pictures", "atlas_for"]
+
+_NO_PALETTE = np.zeros((1, 1), dtype="<u4")        # an atlas of rgb pictures and boxes only
+
+
+class Pictures(NamedTuple):
+    """An atlas's slots as the kernels read them: picture ``p``'s texel ``(x, y)`` is
+    ``texels[offset[p] + x*height[p] + y]``; ``lit_palette`` ``(32, 256)`` lights a paletted
+    picture's texels."""
+    texels: np.ndarray
+    opaque: np.ndarray
+    offset: np.ndarray
+    width: np.ndarray
+    height: np.ndarray
+    left: np.ndarray
+    top: np.ndarray
+    paletted: np.ndarray
+    lit_palette: np.ndarray
 
 
 class Atlas:
@@ -100,24 +118,16 @@ class Atlas:
         return slot
 
     # -- the flat arrays -----------------------------------------------------------------------
-    def arrays(self):
-        """``(texels, opaque, offset, width, height, left, top, paletted)`` as numpy arrays."""
+    def arrays(self) -> Pictures:
+        """The slots as ``Pictures``."""
         if self._packed is None:
-            self._packed = (self._texels[:self._size], self._opaque[:self._size],
-                            *(np.array(v, dtype=np.int64) for v in (
-                                self.offset, self.width, self.height, self.left, self.top)),
-                            np.array(self.paletted, dtype=bool))
+            self._packed = Pictures(
+                self._texels[:self._size], self._opaque[:self._size],
+                *(np.array(v, dtype=np.int64) for v in (self.offset, self.width, self.height,
+                                                        self.left, self.top)),
+                np.array(self.paletted, dtype=bool),
+                _NO_PALETTE if self.lit_palette is None else self.lit_palette)
         return self._packed
-
-    def colours(self, texels, paletted, level) -> np.ndarray:
-        """Packed rgb of ``texels`` at light ``level`` (0-31), per texel."""
-        out = np.empty(len(texels), dtype="<u4")
-        if self.lit_palette is not None and paletted.any():
-            out[paletted] = self.lit_palette[level[paletted], texels[paletted]]
-        rgb = ~paletted
-        if rgb.any():
-            out[rgb] = scaled_rgb(texels[rgb], level[rgb])
-        return out
 
 
 def _grown(values, used, capacity):

@@ -1,192 +1,255 @@
-"""Filling a front-to-back frame: the entries become vertical runs, the runs become pixels.
+"""The column fill, by compiled kernels: every entry's ceiling, upper wall, lower wall and
+floor (DOOM's ``R_RenderSegLoop``), textured (SPEC §4b) or in flat colours, lit by
+``shading``.
 
-Front to back, a column closed by a solid seg is never touched again, so the clip window of a
-column is a running max/min over its entries in walk order (``column_windows``); every pixel
-belongs to exactly one *run* ``(length, key, kind, index)`` and the flat-colour frame is one
-``np.repeat`` of the runs into colour stripes.  The windows are also what later stages need:
-``DrawSegs`` keeps, per entry, the window open when its piece was drawn and the window it
-left open, with its depth (DOOM's drawsegs, which clip sprites and see-through walls).
+Front to back, an entry's parts are clipped to the window its column still had open when
+it was drawn, and the windows left open at the end are "nothing"; each pixel is written
+once.  The painter (``painter=True``) writes every entry's parts unclipped over the frame,
+far to near, the nearer overwriting: the same surfaces, so the same texels.
+
+A wall part, the sky and "nothing" are *column runs*: one texture column, the texture row
+linear in the screen row, ``t = t0 + t1*row`` (wrapped at the texture's height), one
+light level (walls are lit by column).  The column is ``floor(x_offset + |P - S|) mod
+width`` along the whole wall; rows follow the pegging table (``textures.TexturePack.parts``);
+a part whose unclipped rows stay inside the padded column steps the row in int32 fixed
+point (``FIX`` fraction bits), else it wraps per pixel.  A floor or ceiling has one depth
+per screen row: its world point is ``(ex, ey) + (kx, ky) / (y0 - row)`` and it is lit by
+row.  Two-sided walls whose upper or lower part has no texture show the plane behind it
+(``surfaces.key_parts``).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass
-
 import numpy as np
 
-from wallbsp.render.frame import KIND_CEILING, KIND_FLOOR, KIND_NOTHING, KIND_WALL, size_table
-from wallbsp.render.shading import plane_stripes, wall_codes
-from wallbsp.render.tables import key_light
+from wallbsp.jit import kernel, step_kernel
+from wallbsp.render.frame import KIND_CEILING, KIND_WALL
+from wallbsp.render.shading import FULL_BRIGHT, UNLIT, far_level, light_level, plane_level
 
-__all__ = ["DrawSegs", "Runs", "front_to_back_runs", "drawsegs", "column_windows",
-           "row_numbers", "colour_columns", "fill_flat"]
+__all__ = ["paint_textured", "paint_flat", "part_rows", "FIX"]
 
-
-@dataclass
-class DrawSegs:
-    """Per entry (one drawn piece in one column), in column order, then walk order:
-    ``piece`` (index into the walk's pieces), ``col``, inverse depth ``w``, rows ``[top,
-    bottom)`` open when it was drawn and ``[open_top, open_bottom)`` it left open (empty
-    when it closed the column)."""
-    piece: np.ndarray
-    col: np.ndarray
-    w: np.ndarray
-    top: np.ndarray
-    bottom: np.ndarray
-    open_top: np.ndarray
-    open_bottom: np.ndarray
+FIX = 19                       # fraction bits of texture rows in int32 fixed point,
+FIX_ONE = float(1 << FIX)
+FIX_LIMIT = float(1 << (31 - FIX))     # leaving rows (and steps) below 4096 texels
+INT32_MIN = -(1 << 31)
+FLAT_MASK = 63                 # flats are 64 × 64
 
 
-class Runs:
-    """The frame as runs, column by column, top down: ``lengths``, ``keys`` (colour code,
-    plane key or "nothing"), ``kinds``, ``indices``; ``entries`` (the entry each run belongs
-    to, ``>= len(entries.col)`` for the closing "nothing" runs) is made on first use."""
-
-    def __init__(self, lengths, keys, kinds, indices, slots, order, keep):
-        self.lengths, self.keys, self.kinds, self.indices = lengths, keys, kinds, indices
-        self._where = (slots, order, keep)
-        self._entries = None
-
-    @property
-    def entries(self) -> np.ndarray:
-        if self._entries is None:
-            slots, order, keep = self._where
-            entries = np.empty(len(keep), dtype=np.int64)
-            entries[slots] = order
-            self._entries = entries[keep]
-        return self._entries
-
-
-def column_windows(col, u, lo, height):
-    """Rows ``[top, bottom)`` still open when each entry is drawn (entries sorted by column,
-    then walk order): the running max of the openings' tops and min of their bottoms over
-    the column's earlier entries.  One ``maximum.accumulate`` each, offset per column."""
-    offset = col * (height + 1)
-    top_after = np.maximum.accumulate(offset + u) - offset
-    bottom_after = height - (np.maximum.accumulate(offset + (height - lo)) - offset)
-    first = np.ones(len(col), dtype=bool)
-    first[1:] = col[1:] != col[:-1]
-    top = np.zeros(len(col), dtype=np.int64)
-    top[1:] = top_after[:-1]
-    top[first] = 0
-    bottom = np.full(len(col), height, dtype=np.int64)
-    bottom[1:] = bottom_after[:-1]
-    bottom[first] = height
-    return top, np.maximum(bottom, top)
+@step_kernel
+def part_rows(bounds, i, part, painter, height):
+    """Entry ``i``'s part (0 ceiling, 1 upper, 2 lower, 3 floor): its rows ``[r0, r1)`` —
+    within the window open when it was drawn, or whole for the painter — and the part's
+    unclipped first and last rows (where its texture rows are anchored; the floor's are
+    unused)."""
+    if painter:
+        if part == 0:
+            return 0, bounds[0, i], 0, bounds[0, i] - 1
+        if part == 1:
+            return bounds[0, i], bounds[1, i], bounds[0, i], bounds[1, i] - 1
+        if part == 2:
+            return bounds[2, i], bounds[3, i], bounds[2, i], bounds[3, i] - 1
+        return bounds[3, i], height, 0, 0
+    top, bottom = bounds[4, i], bounds[5, i]
+    if part == 0:
+        return top, min(max(bounds[0, i], top), bottom), 0, bounds[0, i] - 1
+    if part == 1:
+        return (min(max(bounds[0, i], top), bottom), bounds[6, i], bounds[0, i],
+                bounds[1, i] - 1)
+    if part == 2:
+        return bounds[7, i], min(max(bounds[3, i], top), bottom), bounds[2, i], bounds[3, i] - 1
+    return min(max(bounds[3, i], top), bottom), bottom, 0, 0
 
 
-def front_to_back_runs(tables, view, e, codes, parts=None):
-    """``(Runs, windows)``: the runs of the frame and the windows of every entry (for
-    ``drawsegs``).
+@step_kernel
+def _rint(x):
+    """``np.rint``: the nearest whole number, halves to even."""
+    r = np.floor(x)
+    diff = x - r
+    if diff > 0.5 or (diff == 0.5 and r % 2.0 != 0.0):
+        r += 1.0
+    return r
 
-    Each column gets a closing sentinel entry that paints "nothing" over whatever window is
-    left.  A column with n entries holds 4n runs: the tops (ceiling, upper wall) in walk
-    order, then the bottoms (lower wall, floor) in reverse walk order; empty runs dropped.
-    ``codes`` are the entries' ``(upper, lower)`` wall keys; or ``parts`` gives each of the
-    four parts' ``(keys, kinds, indices)`` as ``(4, entries)`` arrays (the sentinels' key is
-    then 4)."""
-    width, height = view.width, view.height
-    n_entries = len(e.col)
-    sentinel = _sentinels(width, height)
-    col = np.concatenate([e.col, sentinel.col])
-    order = col.argsort(kind="stable")                # by column, then walk order
-    col = col[order]
-    bounds = np.concatenate([e.bounds, sentinel.bounds], axis=1).take(order, axis=1)
-    top, bottom = column_windows(col, bounds[1], bounds[2], height)
-    bounds = np.minimum(np.maximum(bounds, top), bottom)
-    p1, u, lo, fl = bounds
-    # part lengths: ceiling [top, p1), upper [p1, u), lower [l, fl), floor [fl, bottom)
-    lengths = np.stack([p1 - top, u - p1, fl - lo, bottom - fl])
-    per_col = np.bincount(col, minlength=width)
-    group = (per_col.cumsum() - per_col)[col]
-    top_slot = 4 * group + 2 * (np.arange(len(col), dtype=np.int64) - group)
-    bottom_slot = 8 * group + 4 * per_col[col] - 2 - top_slot
-    slots = np.stack([top_slot, top_slot + 1, bottom_slot, bottom_slot + 1])
-    if parts is None:
-        floor_key = tables.plane_key_base + 2 * e.near
-        upper_code, lower_code = codes
-        keys = np.stack([floor_key + 1, upper_code, lower_code, floor_key])
-        indices = np.stack([e.near, e.wall, e.wall, e.near])
-        kinds = _PART_KINDS * (order < n_entries)
-        nothing = tables.nothing_key
+
+@step_kernel
+def _int32(x):
+    """numpy's float64 to int32 cast: truncation, and INT32_MIN where it does not fit."""
+    if not (-2147483649.0 < x < 2147483648.0):        # NaN too
+        return INT32_MIN
+    return int(x)
+
+
+@step_kernel
+def _column_run(out, at, r0, r1, first, last, texture, t0, t1, level, surfaces):
+    """Rows ``[r0, r1)`` of a column run into ``out[at + row]``: ``texture`` is ``(column
+    address, padded column length, texture height)``; texture rows ``t0 + t1*row``,
+    reduced so that the part's unclipped first row reads ``[0, height)``; the part's
+    unclipped rows are ``first..last``."""
+    address, stride, height = texture
+    atlas, lut = surfaces.atlas, surfaces.lut
+    if height <= 1.0:
+        t1 = 0.0                                       # a colour: one texel
+    at_first = t0 + t1 * first
+    t_rel = at_first - height * np.floor(at_first / height) - t1 * first
+    end = t_rel + t1 * (last + 1.0)
+    if end >= stride - 1 or stride >= FIX_LIMIT or t1 >= FIX_LIMIT:
+        wrap = int(height)
+        for r in range(r0, r1):
+            t = t_rel + t1 * r
+            out[at + r] = lut[int(atlas[int(t) % wrap + address]) + level]
     else:
-        keys, part_kinds, indices = parts
-        kinds = np.concatenate([part_kinds, sentinel.kinds], axis=1).take(order, axis=1)
-        nothing = 4
-    keys = np.concatenate([keys, np.full((4, width), nothing, dtype=np.int64)], axis=1)
-    indices = np.concatenate([indices, sentinel.indices], axis=1)
-    runs = _scatter_runs(slots, order, lengths, keys.take(order, axis=1), kinds,
-                         indices.take(order, axis=1))
-    return runs, (order, top, bottom, u, lo)
+        step = int(_rint(t1 * FIX_ONE))
+        fixed = (address << FIX) + int(np.floor(t_rel * FIX_ONE + 0.5))
+        for r in range(r0, r1):
+            out[at + r] = lut[int(atlas[(fixed + step * r) >> FIX]) + level]
 
 
-class _Sentinels:
-    """The closing entries of a frame size (one per column), made once: read-only blocks
-    the fill appends to the entries' own."""
-
-    def __init__(self, width, height):
-        self.col = np.arange(width, dtype=np.int64)
-        self.bounds = np.full((4, width), height, dtype=np.int64)
-        self.bounds[0] = 0
-        self.kinds = np.zeros((4, width), dtype=np.uint8)
-        self.indices = np.full((4, width), -1, dtype=np.int64)
-
-
-_SENTINELS: dict = {}
-
-
-def _sentinels(width, height) -> _Sentinels:
-    return size_table(_SENTINELS, (width, height), lambda: _Sentinels(width, height))
-
-
-_PART_KINDS = np.array([[KIND_CEILING], [KIND_WALL], [KIND_WALL], [KIND_FLOOR]], dtype=np.uint8)
-
-
-def _scatter_runs(slots, order, lengths, keys, kinds, indices) -> Runs:
-    """Put the (part, entry) values in their run slots; drop the empty runs."""
-    n_runs = slots.size
-    out = []
-    for values, dtype in ((lengths, np.int64), (keys, np.int64), (kinds, np.uint8),
-                          (indices, np.int32)):
-        runs = np.empty(n_runs, dtype=dtype)
-        runs[slots] = values
-        out.append(runs)
-    keep = out[0] > 0
-    return Runs(*(x[keep] for x in out), slots, order, keep)
+@step_kernel
+def _wall(out, at, r0, r1, part, key, w, first, last, ray, view, scene, surfaces, light):
+    """A wall part's rows: ``surfaces.part_table``'s row of the part (upper, middle or
+    lower) of side key ``key``."""
+    which_part = 0 if part == 1 else (1 if scene.key_far[key] < 0 else 2)
+    t = surfaces.part_table[which_part, key]
+    depth = 1.0 / w
+    px = (view.x - t[5]) + depth * (view.fx + ray * view.rx)
+    py = (view.y - t[6]) + depth * (view.fy + ray * view.ry)
+    along = abs(px * t[7] + py * t[8])
+    x_offset = t[9]
+    if (key & 1) == 0:                                   # a front side may scroll
+        x_offset = x_offset + scene.wall_x_offset[scene.key_wall[key]]
+    column = np.floor(x_offset + along) % t[4]
+    top = scene.key_heights[int(t[11]), key] + t[12]
+    step = depth / view.f
+    address = int(t[0] + column * t[1])
+    n_colours = surfaces.n_colours
+    level = light_level(scene.key_far_light[key], w) * n_colours if light \
+        else UNLIT * n_colours
+    _column_run(out, at, r0, r1, first, last, (address, t[2], t[3]),
+                top + t[10] - view.z - view.y0 * step, step, level, surfaces)
 
 
-def drawsegs(e, windows) -> DrawSegs:
-    """The ``DrawSegs`` of entries ``e`` from the windows ``front_to_back_runs`` gave."""
-    order, top, bottom, u, lo = windows
-    real = order < len(e.col)                         # the closing sentinels are no pieces
-    order, top, bottom, u, lo = order[real], top[real], bottom[real], u[real], lo[real]
-    piece = np.arange(len(e.counts), dtype=np.int64).repeat(e.counts)[order]
-    return DrawSegs(piece, e.col[order], e.w[order], top, bottom, u, np.maximum(lo, u))
+@step_kernel
+def _plane(out, at, r0, r1, h, base, far, ray, view, surfaces, light):
+    """A floor's or ceiling's rows: one depth per row."""
+    fz = view.f * (h - view.z)
+    kx = fz * (view.fx + ray * view.rx)
+    ky = -(fz * (view.fy + ray * view.ry))
+    n_colours = surfaces.n_colours
+    level = UNLIT * n_colours
+    atlas, lut = surfaces.atlas, surfaces.lut
+    for r in range(r0, r1):
+        inverse = 1.0 / (view.y0 - r)
+        tx = _int32(kx * inverse + view.flat_x) & FLAT_MASK
+        ty = _int32(ky * inverse + view.flat_y) & FLAT_MASK
+        if light:
+            level = plane_level(far, view.y0, r, fz) * n_colours
+        out[at + r] = lut[int(atlas[((tx << 6) | ty) + base]) + level]
 
 
-_ROWS_CACHE: dict = {}
+@step_kernel
+def _sky(out, at, r0, r1, first, last, c, sector, view, surfaces, light):
+    """The sky's rows (never dimmed): the sky texture's column of screen column ``c``, or
+    the sector's ceiling colour when there is no sky texture."""
+    s = surfaces
+    level = FULL_BRIGHT * s.n_colours if light else UNLIT * s.n_colours
+    if s.sky < 0:
+        t = s.sky_colour[sector]
+        _column_run(out, at, r0, r1, first, last,
+                    (s.base[t], float(s.stride[t]), float(s.height[t])), 0.0, 0.0, level, s)
+    else:
+        t = s.sky
+        _column_run(out, at, r0, r1, first, last,
+                    (s.base[t] + s.sky_columns[c] * s.pitch[t], float(s.stride[t]),
+                     float(s.height[t])), view.sky_t0, view.sky_t1, level, s)
 
 
-def row_numbers(width, height):
-    """Row of every pixel of a column-major ``(width, height)`` frame, flat, int64."""
-    return size_table(_ROWS_CACHE, (width, height),
-                      lambda: np.tile(np.arange(height, dtype=np.int64), width))
+@step_kernel
+def _nothing(out, entries, value, painter, height):
+    """"Nothing" (out of the map) over the windows front to back left open, or over the
+    whole frame before the painter paints."""
+    if painter:
+        for p in range(out.shape[0]):
+            out[p] = value
+        return
+    for c in range(len(entries.open_top)):
+        top = entries.open_top[c]
+        for r in range(top, max(entries.open_bottom[c], top)):
+            out[c * height + r] = value
 
 
-def colour_columns(stripes, pixel_stripe_rows, width, height):
-    """The ``(width, height, 3)`` uint8 view of the stripe texels the pixels pick."""
-    flat = stripes.reshape(-1).take(pixel_stripe_rows, mode="clip")   # in range: no check
-    return flat.view(np.uint8).reshape(width, height, 4)[:, :, :3]
+@kernel
+def paint_textured(entries, view, parts, scene, surfaces, light, painter, out):
+    """Every pixel of a textured frame into ``out`` (packed rgb, column-major ``width *
+    height``); returns the pixels written (those not "nothing")."""
+    height = view.height
+    unlit = UNLIT * surfaces.n_colours
+    if painter:
+        _nothing(out, entries, surfaces.lut[int(surfaces.atlas[surfaces.base[surfaces.black]])
+                                            + unlit], painter, height)
+    written = 0
+    for i in range(len(entries.keys)):
+        key, c, w = entries.keys[i], entries.cols[i], entries.w[i]
+        at = c * height
+        ray = view.u[c]
+        for part in range(4):
+            r0, r1, first, last = part_rows(entries.bounds, i, part, painter, height)
+            if r1 <= r0:
+                continue
+            written += r1 - r0
+            kind = parts.kind[part, key]
+            if kind == KIND_WALL:
+                _wall(out, at, r0, r1, part, key, w, first, last, ray, view, scene, surfaces,
+                      light)
+                continue
+            sector = parts.index[part, key]
+            ceil = kind == KIND_CEILING
+            if ceil and scene.sector_sky[sector]:
+                _sky(out, at, r0, r1, first, last, c, sector, view, surfaces, light)
+            else:
+                h = scene.ceiling[sector] if ceil else scene.floor[sector]
+                _plane(out, at, r0, r1, h, surfaces.plane_base[sector, 1 if ceil else 0],
+                       far_level(scene.sector_light[sector]), ray, view, surfaces, light)
+    if not painter:
+        _nothing(out, entries, surfaces.lut[int(surfaces.atlas[surfaces.base[surfaces.black]])
+                                            + unlit], painter, height)
+    return written
 
 
-def fill_flat(tables, state, view, entries, light=True):
-    """Front to back in flat colours: ``(colour columns, Runs, windows, pixels written)``;
-    every pixel is written once."""
-    width, height = view.width, view.height
-    codes = wall_codes(tables, key_light(tables, state), entries, light)
-    runs, windows = front_to_back_runs(tables, view, entries, codes)
-    stripes, stripe = plane_stripes(tables, state, view, runs.keys, light)
-    pixel = (stripe * height).repeat(runs.lengths)
-    pixel += row_numbers(width, height)
-    colour = colour_columns(stripes, pixel, width, height)
-    written = int(runs.lengths[runs.kinds != KIND_NOTHING].sum())
-    return colour, runs, windows, written
+@kernel
+def paint_flat(entries, view, scene, flat, light, painter, out):
+    """Every pixel of a flat-colour frame into ``out``: a wall part is one colour (its
+    column's light), a plane is shaded per row, "nothing" is black.  Returns the pixels
+    written."""
+    height = view.height
+    if painter:
+        _nothing(out, entries, 0, painter, height)
+    written = 0
+    for i in range(len(entries.keys)):
+        key, c = entries.keys[i], entries.cols[i]
+        at = c * height
+        level = light_level(scene.key_far_light[key], entries.w[i]) if light else FULL_BRIGHT
+        for part in range(4):
+            r0, r1 = part_rows(entries.bounds, i, part, painter, height)[:2]
+            if r1 <= r0:
+                continue
+            written += r1 - r0
+            if part == 1 or part == 2:
+                lit = FULL_BRIGHT if part == 1 and flat.key_upper_sky[key] else level
+                colour = flat.lit_colours[flat.surface_colour[flat.key_surfaces[part - 1, key]],
+                                          lit]
+                for r in range(r0, r1):
+                    out[at + r] = colour
+                continue
+            sector = flat.key_near[key]
+            ceil = part == 0
+            row = flat.lit_colours[flat.surface_colour[flat.plane_surface + 2 * sector
+                                                       + (1 if ceil else 0)]]
+            if not light or (ceil and scene.sector_sky[sector]):
+                for r in range(r0, r1):
+                    out[at + r] = row[FULL_BRIGHT]
+                continue
+            fz = view.f * ((scene.ceiling[sector] if ceil else scene.floor[sector]) - view.z)
+            far = far_level(scene.sector_light[sector])
+            for r in range(r0, r1):
+                out[at + r] = row[plane_level(far, view.y0, r, fz)]
+    if not painter:
+        _nothing(out, entries, 0, painter, height)
+    return written

@@ -6,7 +6,7 @@ import io
 import numpy as np
 
 from wallbsp.files import write_atomically
-from wallbsp.render.rowmajor import labels_rows, rgb_rows, rows_of
+from wallbsp.render.rows import labels_rows, rgb_rows, rows_of
 
 __all__ = ["Frame", "save_ids", "size_table", "KIND_NOTHING", "KIND_WALL", "KIND_FLOOR",
            "KIND_CEILING", "KIND_THING"]

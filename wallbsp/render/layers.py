@@ -1,83 +1,156 @@
-"""The id and depth buffers of a frame (SPEC §5), computed only when asked for.
+"""The id and depth buffers of a frame (SPEC §5), computed only when asked for, and a
+program's observation rows in one kernel call (``Frame.view_rows``).
 
-Both renderers describe their frame as *runs* (a surface over consecutive rows of one
-column) plus, per pixel, which run shows: front to back by run lengths (each pixel is
-written once, in order), the painter by a per-pixel run number (the last write wins).  Per
-run the depth is ``a + b / |y0 - row|``: a wall's ``1/w`` (its column's depth), a plane's
-``|f*(h - z)|`` over its row's distance from the horizon, ``inf`` for sky and nothing.
+Per entry part the pixels report its kind and index; the depth is a wall's ``1/w`` (its
+column's depth), a plane's ``|f*(h - z)| / |y0 - row|``, ``inf`` for sky and nothing.
 Heights are read from the frame's ``HeightTables`` (a copy per world version), so a later
 change to the ``WorldState`` cannot change a frame already drawn.
 """
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
-from wallbsp.render.frame import KIND_CEILING, KIND_FLOOR, KIND_WALL, size_table
+from wallbsp.jit import kernel
+from wallbsp.render.fill import part_rows
+from wallbsp.render.frame import KIND_CEILING, KIND_FLOOR, KIND_NOTHING, KIND_WALL
+from wallbsp.render.rows import (label_rows_kernel, packed_pixels, rgb_rows_kernel,
+                                 transpose_kernel)
 
-__all__ = ["RunLayers"]
+__all__ = ["Layers", "paint_layers", "observe_rows"]
 
 
-class RunLayers:
-    """``columns(name)`` for ``kind``, ``index`` and ``depth`` of a frame given as runs (a
-    new array each call, which the caller may write).
+@kernel
+def paint_layers(entries, view, parts, scene, painter, kind_out, index_out, depth_out):
+    """Kind, index and depth of every pixel, column-major (the parts as the fill draws
+    them: front to back clipped, or the painter's, the nearer overwriting)."""
+    height = view.height
+    inverse = np.empty(height, dtype=np.float64)
+    for r in range(height):
+        inverse[r] = 1.0 / abs(view.y0 - r)
+    if painter:
+        for p in range(kind_out.shape[0]):
+            kind_out[p], index_out[p], depth_out[p] = KIND_NOTHING, -1, np.float32(math.inf)
+    for i in range(len(entries.keys)):
+        key, c = entries.keys[i], entries.cols[i]
+        at = c * height
+        for part in range(4):
+            r0, r1 = part_rows(entries.bounds, i, part, painter, height)[:2]
+            if r1 <= r0:
+                continue
+            kind = parts.kind[part, key]
+            index = parts.index[part, key]
+            a, b = math.inf, 0.0
+            if kind == KIND_WALL:
+                a = 1.0 / entries.w[i]
+            elif kind == KIND_FLOOR or not scene.sector_sky[index]:
+                a = 0.0
+                h = scene.ceiling[index] if kind == KIND_CEILING else scene.floor[index]
+                b = abs(view.f * (h - view.z))
+            for r in range(r0, r1):
+                kind_out[at + r] = kind
+                index_out[at + r] = index
+                scale = b * inverse[r] if b > 0.0 else b
+                depth_out[at + r] = np.float32(a + scale)
+    if painter:
+        return
+    for c in range(len(entries.open_top)):
+        top = entries.open_top[c]
+        for r in range(top, max(entries.open_bottom[c], top)):
+            kind_out[c * height + r] = KIND_NOTHING
+            index_out[c * height + r] = -1
+            depth_out[c * height + r] = np.float32(math.inf)
 
-    ``runs``: per run ``kinds``, ``indices``, ``entries`` (entry of ``e`` each run belongs
-    to, ``>= len(e.col)`` for none); exactly one of ``lengths`` (front to back: runs in
-    pixel order) or ``pixel_run`` (per pixel, column-major, the run it shows) is given."""
 
-    def __init__(self, view, heights, tables, e, runs, lengths=None, pixel_run=None):
-        self.width, self.height = view.width, view.height
-        self.runs, self.e = runs, e
-        self.lengths, self.pixel_run = lengths, pixel_run
-        self.y0, self.f, self.z = view.y0, view.f, view.z
-        self.floor, self.ceiling = heights.floor, heights.ceiling
-        self.sky = tables.sector_sky
+@kernel
+def observe_rows(entries, view, parts, scene, painter, overlay, packed, rgb, depth_rows,
+                 labels):
+    """Fill the wanted outputs among ``rgb`` ``(H, W, 3)``, ``depth_rows`` ``(H, W)`` and
+    ``labels`` ``(H, W, 2)`` (one of size 0 is not wanted): ``packed`` is the frame's
+    colour ``(W*H,)``; ``overlay`` the masked pass's pixels, the slice each shows and the
+    slices' kind, index and depth."""
+    width, height = view.width, view.height
+    if depth_rows.size or labels.size:
+        kind = np.empty(width * height, dtype=np.uint8)
+        index = np.empty(width * height, dtype=np.int32)
+        depth = np.empty(width * height, dtype=np.float32)
+        paint_layers(entries, view, parts, scene, painter, kind, index, depth)
+        pixel, which, slice_kind, slice_index, slice_depth = overlay
+        for k in range(len(pixel)):
+            p, s = pixel[k], which[k]
+            kind[p], index[p] = slice_kind[s], slice_index[s]
+            depth[p] = np.float32(slice_depth[s])
+        if depth_rows.size:
+            transpose_kernel(depth.reshape(width, height), depth_rows)
+        if labels.size:
+            label_rows_kernel(kind.reshape(width, height).T, index.reshape(width, height).T,
+                              labels)
+    if rgb.size:
+        rgb_rows_kernel(packed.reshape(width, height), rgb)
 
-    def _expand(self, values):
-        if self.lengths is not None:
-            return values.repeat(self.lengths)
-        return values.take(self.pixel_run)
+
+_NO_OVERLAY = (np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64),
+               np.zeros(0, dtype=np.uint8), np.zeros(0, dtype=np.int64),
+               np.zeros(0, dtype=np.float64))
+
+
+class Layers:
+    """``columns(name)`` for ``kind``, ``index`` and ``depth`` (all three made by one
+    kernel pass the first time one is asked for; each call's array is the caller's own:
+    the one made, the first time, then copies), ``drawsegs()`` (None for the painter) and
+    ``view_rows``."""
+
+    def __init__(self, view, entries, drawsegs, parts, scene, painter, packed, colour_columns):
+        self.view, self.entries, self._drawsegs = view, entries, drawsegs
+        self.parts, self.scene, self.painter = parts, scene, painter
+        self.packed, self.colour_columns = packed, colour_columns   # the fill's own buffer
+        self._made = None
+        self._given = set()
 
     def columns(self, name):
-        shape = (self.width, self.height)
-        if name == "kind":
-            return self._expand(self.runs.kinds).reshape(shape)
-        if name == "index":
-            return self._expand(self.runs.indices).reshape(shape)
-        if name == "depth":
-            return self._depth().reshape(shape)
-        raise KeyError(name)
+        if self._made is None:
+            self._made = self._paint()
+        if name in self._given:
+            return self._made[name].copy()
+        self._given.add(name)
+        return self._made[name]
 
-    def _depth(self):
-        runs, e = self.runs, self.e
-        kinds, near = runs.kinds, runs.indices
-        wall, ceiling = kinds == KIND_WALL, kinds == KIND_CEILING
-        plane = ceiling | (kinds == KIND_FLOOR)
-        sector = np.where(plane, near, 0)
-        h = np.where(ceiling, self.ceiling.take(sector), self.floor.take(sector))
-        flat = plane & ~(ceiling & self.sky.take(sector))      # sky: inf, as nothing
-        # per run: depth = a + b / |y0 - row| (a wall's 1/w, a plane's |f*(h - z)| / ...)
-        b = np.where(flat, np.abs(self.f * (h - self.z)), 0.0)
-        a = np.where(flat, 0.0, np.inf)
-        if len(e.col):
-            entry = runs.entries[wall]
-            a[wall] = 1.0 / e.w.take(np.minimum(entry, len(e.col) - 1))
-        depth = self._expand(a)
-        scale = self._expand(b)
-        np.multiply(scale, _inverse_rows(self.y0, self.width, self.height), out=scale,
-                    where=scale > 0)
-        # summed in float64 and rounded once into the float32 layer (no float64 sum kept)
-        return np.add(depth, scale, out=np.empty(len(depth), dtype=np.float32))
+    def _paint(self):
+        view = self.view
+        shape = (view.width, view.height)
+        n = view.width * view.height
+        kind = np.empty(n, dtype=np.uint8)
+        index = np.empty(n, dtype=np.int32)
+        depth = np.empty(n, dtype=np.float32)
+        paint_layers(self.entries, view, self.parts, self.scene, self.painter, kind, index,
+                     depth)
+        return {"kind": kind.reshape(shape), "index": index.reshape(shape),
+                "depth": depth.reshape(shape)}
+
+    def drawsegs(self):
+        return self._drawsegs
+
+    def view_rows(self, colour_columns, names, overlay=None):
+        """``Frame.view_rows``: ``{name: rows}`` for ``names`` among rgb, depth and labels
+        in one kernel call, with ``overlay``'s pixels (``overlay.Overlay``) written over
+        the layers; None where the colour buffer is not the fill's own."""
+        packed = (self.packed if colour_columns is self.colour_columns
+                  else packed_pixels(colour_columns))
+        if packed is None:
+            return None
+        view = self.view
+        rows = (view.height, view.width)
+        out = {"rgb": _rows("rgb" in names, rows + (3,), np.uint8),
+               "depth": _rows("depth" in names, rows, np.float32),
+               "labels": _rows("labels" in names, rows + (2,), np.int32)}
+        drawn = _NO_OVERLAY if overlay is None or overlay.slices is None else (
+            overlay.pixel, overlay.which, *overlay.slices)
+        observe_rows(self.entries, view, self.parts, self.scene, self.painter, drawn, packed,
+                     out["rgb"], out["depth"], out["labels"])
+        return {name: out[name] for name in names}
 
 
-_INVERSE_ROWS: dict = {}
-
-
-def _inverse_rows(y0, width, height):
-    """``1 / |y0 - row|`` of every pixel of a column-major frame (inf on the horizon)."""
-    def make():
-        with np.errstate(divide="ignore"):
-            rows = 1.0 / np.abs(y0 - np.arange(height, dtype=np.float64))
-        return np.tile(rows, width)
-
-    return size_table(_INVERSE_ROWS, (y0, width, height), make)
+def _rows(wanted, shape, dtype):
+    """A new output of ``shape``, or an empty one of the same rank when not ``wanted``."""
+    return np.empty(shape if wanted else (0,) * len(shape), dtype=dtype)

@@ -15,16 +15,26 @@ repeated vertically â€” with transparent texels showing what lies behind (SPEC Â
 from __future__ import annotations
 
 import weakref
+from typing import NamedTuple
 
 import numpy as np
 
-from wallbsp.render.clipping import Slices, clipped, texture_rows
-from wallbsp.render.frame import KIND_WALL
-from wallbsp.render.shading import FULL_BRIGHT, light_levels
-from wallbsp.render.tables import key_light
+from wallbsp.jit import kernel
+from wallbsp.render.shading import FULL_BRIGHT, light_level
+from wallbsp.render.sprites import SLICE_FLOATS, SLICE_INTS
 from wallbsp.render.textures import side_geometry, switched_name
 
-__all__ = ["masked_slices", "has_masked_walls", "masked_keys", "MaskedKeys"]
+__all__ = ["masked_columns", "has_masked_walls", "masked_keys", "MaskedKeys"]
+
+
+class MaskedWalls(NamedTuple):
+    """``MaskedKeys``' arrays as ``masked_columns`` reads them."""
+    slot: np.ndarray
+    start: np.ndarray
+    direction: np.ndarray
+    x_offset: np.ndarray
+    y_offset: np.ndarray
+    unpegged: np.ndarray
 
 
 class MaskedKeys:
@@ -44,11 +54,12 @@ class MaskedKeys:
                 if partner is not None:
                     atlas.wall_slot(partner)
         self.any = bool((self.slot >= 0).any())
+        self.arrays = None
         if self.any:
-            self.start, self.direction, self.x_offset, self.y_offset, _ = side_geometry(
-                tables, level)
-            self.unpegged = np.array([w.lower_unpegged for w in level.walls],
-                                     dtype=bool)[tables.key_wall]
+            start, direction, x_offset, y_offset, _ = side_geometry(tables, level)
+            unpegged = np.array([w.lower_unpegged for w in level.walls],
+                                dtype=bool)[tables.key_wall]
+            self.arrays = MaskedWalls(self.slot, start, direction, x_offset, y_offset, unpegged)
 
 
 def _middle_keys(tables, state) -> list:
@@ -85,45 +96,60 @@ def has_masked_walls(tables, state, atlas) -> bool:
     return masked_keys(tables, state, atlas).any
 
 
-def masked_slices(view, state, tables, piece_keys, drawsegs, atlas, light=True):
-    """``Slices`` of the masked middle textures of the drawn pieces (None when none):
-    ``piece_keys`` are the side keys of the walk's pieces, ``drawsegs`` their entries."""
-    keys = masked_keys(tables, state, atlas)
-    if not len(drawsegs.col) or not keys.any:
-        return None
-    entry_key = piece_keys[drawsegs.piece]
-    chosen = keys.slot[entry_key] >= 0
-    if not chosen.any():
-        return None
-    key = entry_key[chosen]
-    col, w = drawsegs.col[chosen], drawsegs.w[chosen]
-    depth = 1.0 / w
-    slot = keys.slot[key]
-    _, _, _, width, height, _, _, _ = atlas.arrays()
-    width, height = width[slot], height[slot]
-    tx = _texture_columns(view, state, tables, keys, key, col, depth, width)
-    near, far = tables.key_near[key], tables.key_far[key]
-    floors = np.maximum(state.floor[near], state.floor[far])
-    ceilings = np.minimum(state.ceiling[near], state.ceiling[far])
-    top = np.where(keys.unpegged[key], floors + height, ceilings) + keys.y_offset[key]
-    r1, r2, t0, tstep = texture_rows(view, top, height, depth)
-    row1, row2 = clipped(r1, r2, drawsegs.open_top[chosen], drawsegs.open_bottom[chosen])
-    if light:
-        level = light_levels(key_light(tables, state)[key], w)
-    else:
-        level = np.full(len(key), FULL_BRIGHT, dtype=np.int64)
-    seen = row2 > row1
-    return Slices(*(v[seen] for v in (col, row1, row2, slot, tx, t0, tstep, level,
-                                      np.full(len(col), KIND_WALL, np.uint8),
-                                      tables.key_wall[key], depth)))
+@kernel
+def masked_columns(drawsegs, piece_keys, walls, scene, pictures, lit, view):
+    """``(ints, floats)``: the slices (``sprites.SLICE_INTS``) of the drawsegs whose piece's
+    side key has a masked middle, clipped to the window the piece left open (kind: a
+    wall)."""
+    total = 0
+    for j in range(drawsegs.piece.shape[0]):
+        total += walls.slot[piece_keys[drawsegs.piece[j]]] >= 0
+    ints = np.empty((SLICE_INTS, total), dtype=np.int64)
+    floats = np.empty((SLICE_FLOATS, total), dtype=np.float64)
+    n = 0
+    for j in range(drawsegs.piece.shape[0]):
+        key = piece_keys[drawsegs.piece[j]]
+        p = walls.slot[key]
+        if p < 0:
+            continue
+        col, w = drawsegs.col[j], drawsegs.w[j]
+        depth = 1.0 / w
+        width, height = pictures.width[p], pictures.height[p]
+        # the texture column: floor(x_offset + |P - S|) mod width
+        px = view.x + depth * (view.fx + view.u[col] * view.rx)
+        py = view.y + depth * (view.fy + view.u[col] * view.ry)
+        along = (px - walls.start[key, 0]) * walls.direction[key, 0] \
+            + (py - walls.start[key, 1]) * walls.direction[key, 1]
+        offset = walls.x_offset[key] + (0.0 if key & 1 else
+                                        scene.wall_x_offset[scene.key_wall[key]])
+        tx = int(np.floor(offset + along)) % width
+        near, far = scene.key_near[key], scene.key_far[key]
+        floors = max(scene.floor[near], scene.floor[far])
+        ceilings = min(scene.ceiling[near], scene.ceiling[far])
+        top = (floors + height if walls.unpegged[key] else ceilings) + walls.y_offset[key]
+        # rows [r1, r2) whose centres see heights in (top - height, top]
+        scale = view.f / depth
+        r1 = int(np.ceil(view.y0 - (top - view.z) * scale))
+        r2 = int(np.ceil(view.y0 - (top - height - view.z) * scale))
+        tstep = depth / view.f
+        t0 = top - view.z - view.y0 * tstep
+        row1 = max(r1, drawsegs.open_top[j])
+        row2 = max(min(r2, drawsegs.open_bottom[j]), row1)
+        if row2 <= row1:
+            continue
+        level = light_level(scene.key_far_light[key], w) if lit else FULL_BRIGHT
+        ints[0, n], ints[1, n], ints[2, n], ints[3, n] = col, row1, row2, p
+        ints[4, n], ints[5, n], ints[6, n] = tx, level, scene.key_wall[key]
+        floats[0, n], floats[1, n], floats[2, n] = t0, tstep, depth
+        n += 1
+    return _contiguous(ints, n), _contiguous(floats, n)  # sprite_columns' one type
 
 
-def _texture_columns(view, state, tables, keys, key, col, depth, width):
-    """``floor(x_offset + |P - S|) mod width`` per entry (the front side's scrolling too)."""
-    u = view.u[col]
-    px = view.x + depth * (view.fx + u * view.rx)
-    py = view.y + depth * (view.fy + u * view.ry)
-    start, direction = keys.start[key], keys.direction[key]
-    along = (px - start[:, 0]) * direction[:, 0] + (py - start[:, 1]) * direction[:, 1]
-    offset = keys.x_offset[key] + np.where(key & 1, 0.0, state.wall_x_offset[tables.key_wall[key]])
-    return np.floor(offset + along).astype(np.int64) % width
+@kernel
+def _contiguous(rows, n):
+    """``rows[:, :n]`` as a new contiguous array (element by element: quick to compile)."""
+    out = np.empty((rows.shape[0], n), dtype=rows.dtype)
+    for r in range(rows.shape[0]):
+        for k in range(n):
+            out[r, k] = rows[r, k]
+    return out

@@ -1,43 +1,48 @@
 """The masked pass: sprites and masked middle textures over the finished walls and planes,
 far to near (DOOM's R_DrawMasked), and the frame layers that report them (kind 4 = thing).
 
-``draw_masked`` gathers the things of the leaves the walk entered, makes the sprite and
-masked-wall ``Slices`` clipped to the walk's windows (``clipping``), and composites them in
-one batch: every slice row becomes a pixel, transparent texels drop out, and where slices
-overlap the nearest opaque texel wins — the painter's far-to-near order without a loop.
-The frame's ``kind``, ``index`` and ``depth`` layers are the walls' with the overlay's
-pixels written over them (``OverlayLayers``).
-
-With the compiled kernels on (``compiled.kernels_enabled``), ``overlaycompiled`` does the
-same work in a few kernel calls (``overlaykernel``, ``maskedkernel``); this numpy code is
-the reference they are tested against.
+The things of the leaves the front-to-back walk entered are cut to those ahead of the eye
+(``sprites.visible_things``, which also says whether a drawn piece has a masked middle:
+then ``masked.masked_columns`` makes the masked walls' slices); ``composite.draw_things``
+looks the things' pictures up in a table of the choices ``sprites.pictures`` made (a
+thing seen from a rotation not chosen before sends the frame back here once, to choose
+it), clips their columns and draws them with the masked walls' slices.  The frame's
+``kind``, ``index`` and ``depth`` layers are the walls' with the overlay's pixels written
+over them (``OverlayLayers``).
 """
 from __future__ import annotations
 
 import weakref
+from typing import NamedTuple
 
 import numpy as np
 
-from wallbsp.jit import kernels_enabled
 from wallbsp.render.atlas import atlas_for
-from wallbsp.render.clipping import ClipWindows, Slices
-from wallbsp.render.fill import drawsegs, front_to_back_runs
-from wallbsp.render.masked import has_masked_walls, masked_slices
-from wallbsp.render.overlaycompiled import compiled_overlay
-from wallbsp.render.rowmajor import packed_pixels
-from wallbsp.render.rows import Entries
-from wallbsp.render.sprites import sprite_slices
+from wallbsp.render.composite import draw_things
+from wallbsp.render.entries import entries_of
+from wallbsp.render.masked import masked_columns, masked_keys
+from wallbsp.render.sprites import (SLICE_FLOATS, SLICE_INTS, Clip, Seen, ThingArrays,
+                                    pictures, rotations, visible_things)
 from wallbsp.render.textures import level_resources
 from wallbsp.render.walk import walk_front_to_back
 
-__all__ = ["Overlay", "OverlayLayers", "draw_masked", "draw_overlay", "composite", "walk_boxes",
-           "thing_boxes"]
+__all__ = ["Overlay", "OverlayLayers", "Reports", "draw_overlay", "thing_boxes"]
+
+_NO_WALLS = (np.zeros((SLICE_INTS, 0), dtype=np.int64),
+             np.zeros((SLICE_FLOATS, 0), dtype=np.float64))
+
+
+class Reports(NamedTuple):
+    """What the drawn slices report per slice."""
+    kind: np.ndarray
+    index: np.ndarray
+    depth: np.ndarray
 
 
 class Overlay:
     """Pixels the masked pass wrote: flat column-major ``pixel`` numbers (``col * H +
     row``) and the slice each shows (``which``); ``kind``, ``index`` and ``depth`` per
-    pixel are read from the slices when asked for."""
+    pixel are read from the slices' ``Reports`` when asked for."""
 
     def __init__(self, pixel, which, slices):
         self.pixel, self.which, self.slices = pixel, which, slices
@@ -55,70 +60,7 @@ class Overlay:
         return self.slices.depth[self.which].astype(np.float32)
 
 
-def composite(slices: Slices, atlas, colour_columns, height) -> Overlay:
-    """Draw ``slices`` into ``colour_columns`` (``width × height × 3`` uint8) and return
-    the pixels written; the nearest opaque texel of each pixel wins.  Per-slice numbers are
-    made first, so each pixel costs a handful of gathers."""
-    counts = slices.bottom - slices.top
-    texels, opaque, offset, _, tex_height, _, _, paletted = atlas.arrays()
-    last_row = tex_height[slices.slot] - 1
-    base = offset[slices.slot] + slices.tx * (last_row + 1)
-    first_pixel = slices.col * height
-    shift = counts.cumsum() - counts - slices.top
-    # one entry per pixel, slices in their order (int64: numpy indexes with it as is)
-    which = np.arange(len(counts)).repeat(counts)
-    row = np.arange(len(which)) - shift[which]
-    ty = (slices.t0[which] + row * slices.tstep[which]).astype(np.int64)   # >= 0: trunc = floor
-    texel = base[which] + np.minimum(ty, last_row[which])                    # rounding at the foot
-    keep = opaque[texel]
-    pixel = first_pixel[which] + row
-    shared = _shared_columns(slices, height)
-    if shared is not None:                 # the opaque texels of columns slices share
-        contested = np.flatnonzero(keep & shared[which])
-        keep[contested] = _nearest(pixel[contested], which[contested], slices.depth,
-                                   colour_columns.shape[0] * height)
-    which, pixel, texel = which[keep], pixel[keep], texels[texel[keep]]
-    packed = _lit(atlas, paletted[slices.slot], slices.level, which, texel)
-    whole = packed_pixels(colour_columns)     # one write a pixel instead of three bytes
-    if whole is not None:
-        whole[pixel] = packed
-    else:
-        colour_columns.reshape(-1, 3)[pixel] = packed.view(np.uint8).reshape(-1, 4)[:, :3]
-    return Overlay(pixel, which, slices)
-
-
-def _lit(atlas, paletted, level, which, texel):
-    """Packed colours of the texels at their slices' light levels."""
-    if paletted.all():                                      # a WAD's pictures only
-        return atlas.lit_palette[level[which], texel]
-    return atlas.colours(texel, paletted[which], level[which])
-
-
-def _shared_columns(slices, height):
-    """Per slice, whether its column holds another slice that overlaps one there (None
-    when no two slices share a pixel): sorted by column and top row, a slice overlaps when
-    it starts above the lowest bottom of the column's earlier slices."""
-    if len(slices.col) < 2:
-        return None
-    order = np.lexsort((slices.top, slices.col))
-    col, top, bottom = slices.col[order], slices.top[order], slices.bottom[order]
-    span = height + 1
-    lowest = np.maximum.accumulate(col * span + bottom)[:-1] - col[1:] * span
-    overlaps = top[1:] < lowest
-    if not overlaps.any():
-        return None
-    return np.isin(slices.col, col[1:][overlaps])
-
-
-def _nearest(pixel, which, slice_depth, n_pixels):
-    """A mask keeping, of the entries that share a pixel, the one of the nearest slice (the
-    first of equals)."""
-    rank = np.empty(len(slice_depth), dtype=np.int64)
-    rank[np.argsort(slice_depth, kind="stable")] = np.arange(len(slice_depth))
-    mine = rank[which]
-    best = np.full(n_pixels, len(slice_depth), dtype=np.int64)
-    np.minimum.at(best, pixel, mine)
-    return best[pixel] == mine
+_NOTHING = Overlay(np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64), None)
 
 
 class OverlayLayers:
@@ -135,99 +77,129 @@ class OverlayLayers:
         return values
 
     def view_rows(self, colour_columns, names):
-        """The base layers' ``view_rows`` with the overlay (None when they have none)."""
-        own = getattr(self.base, "view_rows", None)
-        return None if own is None else own(colour_columns, names, self.overlay)
+        return self.base.view_rows(colour_columns, names, self.overlay)
 
     def __getattr__(self, name):
         return getattr(self.base, name)
 
 
-def draw_masked(view, state, tables, walk, piece_keys, make_drawsegs, colour_columns,
-                resources=None, light=True):
-    """Draw the things of the walk's leaves and the masked walls of its pieces over the
-    frame; return ``(Overlay, stats)`` (``things_considered``: things of the visited
-    leaves; ``things_drawn``: those with a column not wholly hidden;
-    ``masked_columns``: masked-wall columns drawn).  ``make_drawsegs()`` gives the walk's
-    ``DrawSegs``.  With the kernels on, ``overlaycompiled`` draws them."""
-    atlas = atlas_for(resources)
-    if kernels_enabled():
-        pixel, which, reports, stats = compiled_overlay(view, state, tables, walk, piece_keys,
-                                                        make_drawsegs, atlas, colour_columns,
-                                                        light)
-        return (_NOTHING if reports is None else Overlay(pixel, which, reports)), stats
-    drawsegs = make_drawsegs()
-    things = state.things
-    ids = things.things_in_leaves(walk.leaves)
-    parts, stats = [], {"things_considered": len(ids), "things_drawn": 0, "masked_columns": 0}
-    if len(ids):
-        clip = ClipWindows(drawsegs, tables.key_near[piece_keys], tables.key_far[piece_keys],
-                           view, state.floor, state.ceiling)
-        sprites, drawn = sprite_slices(view, state, things, ids, clip, atlas, light)
-        stats["things_drawn"] = drawn
-        if sprites is not None:
-            parts.append(sprites)
-    walls = masked_slices(view, state, tables, piece_keys, drawsegs, atlas, light)
-    if walls is not None:
-        stats["masked_columns"] = len(walls)
-        parts.append(walls)
-    if not parts or not sum(len(p) for p in parts):
-        return _NOTHING, stats
-    slices = parts[0] if len(parts) == 1 else Slices.join(parts)
-    overlay = composite(slices, atlas, colour_columns, view.height)
-    return overlay, stats
-
-
-_NOTHING = Overlay(np.zeros(0, dtype=np.int64), np.zeros(0, dtype=np.int64), None)
 _BOXES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
 
 
-def walk_boxes(state):
-    """Node boxes for the front-to-back walk grown to hold the drawn things
-    (``Things.subtree_boxes``), as the Python walk's lists; None when no thing is drawn."""
-    cached = _drawn_things(state.things)
-    if cached[1] is not None and cached[3] is None:
-        cached[3] = cached[1].tolist()
-    return cached[3]
-
-
 def thing_boxes(state):
-    """``walk_boxes`` as the array the walk kernel takes (None when no thing is drawn)."""
+    """Node boxes for the front-to-back walk grown to hold the drawn things
+    (``Things.subtree_boxes``); None when no thing is drawn."""
     return _drawn_things(state.things)[1]
 
 
 def _drawn_things(things):
-    """``[version, boxes array or None, whether any thing is drawn, boxes as lists (made
-    when first asked for)]``, made once per version."""
+    """``(version, boxes or None, whether any thing is drawn)``, made once per version."""
     cached = _BOXES.get(things)
     if cached is None or cached[0] != things.version:
         drawn = bool((things.alive & things.drawn).any())
         boxes = np.ascontiguousarray(things.subtree_boxes()) if drawn else None
-        cached = _BOXES[things] = [things.version, boxes, drawn, None]
+        cached = _BOXES[things] = (things.version, boxes, drawn)
     return cached
 
 
-def draw_overlay(view, state, tables, heights, colour_columns, layers, stats, light=True,
+class _Choices:
+    """The pictures ``sprites.pictures`` chose, per thing and rotation, as arrays the kernel
+    reads: ``chosen[i, rotation - 1]`` is ``slot * 2 + mirrored`` (-1: not chosen yet) for
+    a thing of type ``kind[i]`` (-1: none)."""
+
+    def __init__(self):
+        self.kind = np.zeros(0, dtype=np.int64)
+        self.chosen = np.zeros((0, 8), dtype=np.int64)
+
+    def fit(self, n):
+        """Rows for ``n`` things (things are only ever added)."""
+        if len(self.kind) < n:
+            more = n - len(self.kind)
+            self.kind = np.concatenate([self.kind, np.full(more, -1, dtype=np.int64)])
+            self.chosen = np.concatenate([self.chosen, np.full((more, 8), -1, np.int64)])
+        return self
+
+    def choose(self, things, ids, view, atlas):
+        """Choose the pictures of things ``ids`` as the camera sees them now."""
+        changed = ids[self.kind[ids] != things.type[ids]]
+        self.chosen[changed] = -1
+        self.kind[changed] = things.type[changed]
+        rotation = rotations(view.x, view.y, things.x[ids], things.y[ids], things.angle[ids])
+        slot, mirrored = pictures(things, ids, rotation, atlas)
+        self.chosen[ids, rotation - 1] = 2 * slot + mirrored
+
+
+_CHOICES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+
+
+def _choices(atlas, things) -> _Choices:
+    per_atlas = _CHOICES.get(atlas)
+    if per_atlas is None:
+        per_atlas = _CHOICES[atlas] = weakref.WeakKeyDictionary()
+    table = per_atlas.get(things)
+    if table is None:
+        table = per_atlas[things] = _Choices()
+    return table.fit(len(things))
+
+
+def draw_masked(view, state, tables, scene, walk, piece_keys, drawsegs, atlas, colour_columns,
+                light=True):
+    """Draw the things of the walk's leaves and the masked walls of its pieces into
+    ``colour_columns``: ``(Overlay, stats)`` (``things_considered``: things of the visited
+    leaves; ``things_drawn``: those with a column not wholly hidden; ``masked_columns``:
+    masked-wall columns drawn)."""
+    things = state.things
+    keys = masked_keys(tables, state, atlas)
+    considered, ids, offsets, masked = visible_things(
+        walk.leaf_array, len(things.tree.leaf_sector), things.leaf, things.alive,
+        things.drawn, things.x, things.y, things.radius, view, piece_keys, keys.slot)
+    stats = {"things_considered": int(considered), "things_drawn": 0, "masked_columns": 0}
+    if not (len(ids) or masked):
+        return _NOTHING, stats
+    dx, dy, depth, along = offsets
+    wall_rows = _NO_WALLS
+    if masked:
+        wall_rows = masked_columns(drawsegs, piece_keys, keys.arrays, scene, atlas.arrays(),
+                                   bool(light), view)
+        stats["masked_columns"] = wall_rows[0].shape[1]
+    seen = Seen(ids, depth, along, np.degrees(np.arctan2(dy, dx)))
+    clip = Clip(drawsegs.col, drawsegs.w, drawsegs.open_top, drawsegs.open_bottom,
+                drawsegs.piece, piece_keys, tables.key_near, tables.key_far)
+    table = _choices(atlas, things)
+    for _ in range(2):                       # again once the missing choices are made
+        arrays = ThingArrays(things.angle, things.type, things.sector, things.flags,
+                             things.height, things.z, things.bright, table.kind, table.chosen)
+        kind, index, slice_depth, pixel, which, drawn = draw_things(
+            seen, arrays, atlas.arrays(), scene, bool(light), view, clip, *wall_rows,
+            colour_columns)
+        if drawn >= 0:
+            break
+        table.choose(things, ids, view, atlas)
+    stats["things_drawn"] = int(drawn)
+    if not len(pixel):
+        return _NOTHING, stats
+    return Overlay(pixel, which, Reports(kind, index, slice_depth)), stats
+
+
+def draw_overlay(view, state, tables, heights, scene, colour_columns, layers, stats, light=True,
                  front=None, textures=True):
     """The masked pass of a frame: ``front`` is the front-to-back ``(walk, each piece's
-    side key, a function giving the walk's DrawSegs)`` (the painter passes None, and a
-    front-to-back walk is made for the windows it clips against).  Pictures come from the
-    level's resources; with ``textures=False`` things are flat-colour boxes and masked
-    walls are not drawn.  Adds the pass's counts to ``stats`` and returns the frame's
-    layers (the overlay written over ``layers``)."""
+    side key, the walk's DrawSegs)`` (the painter passes None, and a front-to-back walk is
+    made for the windows it clips against).  Pictures come from the level's resources;
+    with ``textures=False`` things are flat-colour boxes and masked walls are not drawn.
+    Adds the pass's counts to ``stats`` and returns the frame's layers (the overlay written
+    over ``layers``)."""
     resources = level_resources(state.tree) if textures else None
-    if not _drawn_things(state.things)[2] and not has_masked_walls(
-            tables, state, atlas_for(resources)):
+    atlas = atlas_for(resources)
+    if not _drawn_things(state.things)[2] and not masked_keys(tables, state, atlas).any:
         stats.update(things_considered=0, things_drawn=0, masked_columns=0)
         return layers
     if front is None:
-        walk = walk_front_to_back(tables, heights.key_solid, view, walk_boxes(state))
-        entries = Entries(tables, heights, view, walk.pieces)
-        zeros = np.zeros(len(entries.col), dtype=np.int64)
-        windows = front_to_back_runs(tables, view, entries, (zeros, zeros))[1]
-        front = (walk, entries.keys, lambda: drawsegs(entries, windows))
-    walk, piece_keys, make_drawsegs = front
-    overlay, counts = draw_masked(view, state, tables, walk, piece_keys, make_drawsegs,
-                                  colour_columns, resources, light)
+        walk = walk_front_to_back(tables, heights, view, thing_boxes(state))
+        _, drawsegs, piece_keys = entries_of(walk.pieces, view, heights)
+        front = (walk, piece_keys, drawsegs)
+    walk, piece_keys, drawsegs = front
+    overlay, counts = draw_masked(view, state, tables, scene, walk, piece_keys, drawsegs, atlas,
+                                  colour_columns, light)
     stats.update(counts)
     return OverlayLayers(layers, overlay) if len(overlay.pixel) else layers

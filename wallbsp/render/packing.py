@@ -14,12 +14,11 @@ from typing import NamedTuple
 
 import numpy as np
 
-from wallbsp.render.shading import LIGHT_LEVELS, hex_rgb, lit_palette, pack_rgb, scaled_rgb
+from wallbsp.render.shading import LIGHT_LEVELS, UNLIT, hex_rgb, lit_palette, pack_rgb, scaled_rgb
 
 __all__ = ["Packer", "PackedPicture", "UNLIT", "PAD", "lit_columns", "packed_picture",
            "picture_cache"]
 
-UNLIT = LIGHT_LEVELS          # lut row of a texel's own colour
 PAD = 256                     # texels a wall column is repeated beyond its height, so rows
                               # of a part up to this tall need no wrapping
 

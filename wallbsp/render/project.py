@@ -1,4 +1,5 @@
-"""Projecting segs and node boxes to columns (SPEC §4), for both walks.
+"""The view as the kernels read it, and projecting segs, node boxes and the sky to columns
+(SPEC §4).
 
 Column ``c`` sees a seg iff the ray through its centre does, i.e. ``u_c = (c - x0) / f``
 lies in the seg's half-open projected interval ``[u_left, u_right)``, so neighbouring segs
@@ -8,36 +9,73 @@ depth) are clipped to it.
 from __future__ import annotations
 
 import math
+from typing import NamedTuple
 
-from wallbsp.camera import Projection
-from wallbsp.jit import jitable
+import numpy as np
 
-__all__ = ["NEAR", "make_projector", "make_box_check", "project_seg", "view_numbers"]
+from wallbsp.camera import Projection, column_angles
+from wallbsp.jit import step_kernel
+
+__all__ = ["NEAR", "View", "view_of", "project_seg", "box_columns", "sky_columns",
+           "FLAT_OFFSET"]
 
 NEAR = 1e-3                    # map units: the near plane for seg ends
+SKY_COLUMNS = 1024             # sky texture columns in a full turn (DOOM's ANGLETOSKYSHIFT)
+SKY_ROW = 100.0                # the sky row at the horizon, and rows per unit of v
+SKY_ROWS_PER_V = 160.0
+FLAT_OFFSET = float(1 << 30)   # added to flat coordinates (a multiple of 64), so that
+                               # truncation is floor
 
 
-@jitable
+class View(NamedTuple):
+    """A ``camera.Projection`` as every kernel takes it: the eye ``x, y, z``, the forward
+    and right vectors, ``f``, the centre ``x0, y0``, the frame size, each column's ``u``;
+    the sky's texture rows ``t0 + t1*row``; the flats' offset eye ``x, -y``."""
+    x: float
+    y: float
+    z: float
+    f: float
+    fx: float
+    fy: float
+    rx: float
+    ry: float
+    x0: float
+    y0: float
+    width: int
+    height: int
+    u: np.ndarray
+    sky_t0: float
+    sky_t1: float
+    flat_x: float
+    flat_y: float
+
+
+def view_of(view: Projection) -> View:
+    """The kernels' ``View`` of a projection."""
+    return View(view.x, view.y, view.z, view.f, view.fx, view.fy, view.rx, view.ry, view.x0,
+                view.y0, view.width, view.height, view.u,
+                SKY_ROW - SKY_ROWS_PER_V * view.y0 / view.f, SKY_ROWS_PER_V / view.f,
+                view.x + FLAT_OFFSET, FLAT_OFFSET - view.y)
+
+
+@step_kernel
 def project_seg(view, x1, y1, x2, y2, out):
     """A seg seen with ``(x1, y1)`` on the left, into ``out``: columns ``[c1, c2)`` and
-    ``1/depth = A + B*u`` as ``(c1, c2, A, B)``; False when it covers no column.  ``view``
-    holds the eye ``x, y``, the forward and right vectors, ``f``, ``x0`` and the width.
-    One source for the Python walks and the walk kernel (``jitable``)."""
-    ex, ey, fx, fy, rx, ry = view[0], view[1], view[2], view[3], view[4], view[5]
-    f, x0, width = view[6], view[7], view[8]
-    ax = x1 - ex
-    ay = y1 - ey
-    bx = x2 - ex
-    by = y2 - ey
-    d1 = ax * fx + ay * fy
-    d2 = bx * fx + by * fy
+    ``1/depth = A + B*u`` as ``(c1, c2, A, B)``; False when it covers no column."""
+    ax = x1 - view.x
+    ay = y1 - view.y
+    bx = x2 - view.x
+    by = y2 - view.y
+    d1 = ax * view.fx + ay * view.fy
+    d2 = bx * view.fx + by * view.fy
     if d1 < NEAR and d2 < NEAR:
         return False
-    r1 = ax * rx + ay * ry
-    r2 = bx * rx + by * ry
+    r1 = ax * view.rx + ay * view.ry
+    r2 = bx * view.rx + by * view.ry
     k = r2 * d1 - d2 * r1              # > 0 when seen from the front, left end first
     if k <= 0.0:
         return False
+    f, x0 = view.f, view.x0
     if d1 < NEAR:
         c1 = math.ceil(x0 + f * (r1 + (NEAR - d1) / (d2 - d1) * (r2 - r1)) / NEAR)
     else:
@@ -47,65 +85,49 @@ def project_seg(view, x1, y1, x2, y2, out):
     else:
         c2 = math.ceil(x0 + f * r2 / d2)
     c1 = c1 if c1 > 0 else 0
-    c2 = c2 if c2 < width else int(width)
+    c2 = c2 if c2 < view.width else view.width
     if c1 >= c2:
         return False
     out[0], out[1], out[2], out[3] = c1, c2, (r2 - r1) / k, (d1 - d2) / k
     return True
 
 
-def view_numbers(view: Projection) -> tuple:
-    """The projection's numbers as ``project_seg`` reads them."""
-    return (view.x, view.y, view.fx, view.fy, view.rx, view.ry, view.f, view.x0, view.width)
+@step_kernel
+def box_columns(view, box, span):
+    """A column range ``[lo, hi)`` into ``span`` that holds every column any seg inside the
+    box can cover (DOOM's ``R_CheckBBox``); False when there is none.  The box's silhouette
+    is bounded by a left corner p and a right corner q, chosen by the eye's region (row
+    above/inside/below, column left/inside/right of the box)."""
+    ex, ey, width = view.x, view.y, view.width
+    minx, miny, maxx, maxy = box[0], box[1], box[2], box[3]
+    col = 0 if ex < minx else (2 if ex > maxx else 1)
+    row = 0 if ey > maxy else (2 if ey < miny else 1)
+    if row == 1 and col == 1:
+        span[0], span[1] = 0, width
+        return True
+    left = (3, 3, 2, 1, 0, 2, 1, 0, 0)[row * 3 + col]     # bit 1: max x, bit 0: max y
+    right = (0, 1, 1, 0, 0, 3, 2, 2, 3)[row * 3 + col]
+    px = (maxx if left & 2 else minx) - ex
+    py = (maxy if left & 1 else miny) - ey
+    qx = (maxx if right & 2 else minx) - ex
+    qy = (maxy if right & 1 else miny) - ey
+    dp = px * view.fx + py * view.fy
+    dq = qx * view.fx + qy * view.fy
+    if dp <= 0.0 and dq <= 0.0:
+        return False
+    lo = np.floor(view.x0 + view.f * (px * view.rx + py * view.ry) / dp) if dp > 1e-9 else 0.0
+    hi = np.floor(view.x0 + view.f * (qx * view.rx + qy * view.ry) / dq) + 2 if dq > 1e-9 \
+        else float(width)
+    lo = lo if lo > 0 else 0.0
+    hi = hi if hi < width else float(width)
+    if lo >= hi:
+        return False
+    span[0], span[1] = int(lo), int(hi)
+    return True
 
 
-def make_projector(view: Projection):
-    """``project(xl, yl, xr, yr)``: a seg seen with (xl, yl) on the left, as
-    ``(c1, c2, A, B)`` (columns ``[c1, c2)`` and ``1/depth = A + B*u``) or None."""
-    numbers, out = view_numbers(view), [0, 0, 0.0, 0.0]
-
-    def project(x1, y1, x2, y2):
-        if not project_seg(numbers, x1, y1, x2, y2, out):
-            return None
-        return out[0], out[1], out[2], out[3]
-
-    return project
-
-
-# silhouette corners (left, right) of a box by the eye's region: row above/inside/below,
-# column left/inside/right; a corner is (use maxx?, use maxy?)
-_TR, _TL, _BR, _BL = (1, 1), (0, 1), (1, 0), (0, 0)
-_SILHOUETTE = [(_TR, _BL), (_TR, _TL), (_BR, _TL),
-               (_TL, _BL), None, (_BR, _TR),
-               (_TL, _BR), (_BL, _BR), (_BL, _TR)]
-
-
-def make_box_check(view: Projection):
-    """``box_columns(minx, miny, maxx, maxy)``: a column range ``[lo, hi)`` that holds every
-    column any seg inside the box can cover (DOOM's ``R_CheckBBox``), or None if none."""
-    ex, ey, fx, fy, rx, ry = view.x, view.y, view.fx, view.fy, view.rx, view.ry
-    f, x0, width, floor = view.f, view.x0, view.width, math.floor
-    table = [None if s is None else (s[0][0], s[0][1], s[1][0], s[1][1]) for s in _SILHOUETTE]
-
-    def box_columns(minx, miny, maxx, maxy):
-        col = 0 if ex < minx else (2 if ex > maxx else 1)
-        row = 0 if ey > maxy else (2 if ey < miny else 1)
-        corners = table[row * 3 + col]
-        if corners is None:
-            return 0, width
-        pmx, pmy, qmx, qmy = corners
-        px = (maxx if pmx else minx) - ex
-        py = (maxy if pmy else miny) - ey
-        qx = (maxx if qmx else minx) - ex
-        qy = (maxy if qmy else miny) - ey
-        dp = px * fx + py * fy
-        dq = qx * fx + qy * fy
-        if dp <= 0.0 and dq <= 0.0:
-            return None
-        lo = floor(x0 + f * (px * rx + py * ry) / dp) if dp > 1e-9 else 0
-        hi = floor(x0 + f * (qx * rx + qy * ry) / dq) + 2 if dq > 1e-9 else width
-        lo = lo if lo > 0 else 0
-        hi = hi if hi < width else width
-        return None if lo >= hi else (lo, hi)
-
-    return box_columns
+def sky_columns(view: Projection, width) -> np.ndarray:
+    """The column of a sky texture ``width`` wide that each screen column shows: by the
+    angle of the column's ray, ``SKY_COLUMNS`` texture columns a full turn."""
+    angle = view.angle - column_angles(view.width, view.f)
+    return np.floor(SKY_COLUMNS * angle / 360.0).astype(np.int64) % width

@@ -1,13 +1,15 @@
-"""Shading: DOOM's light diminishing in 32 levels, and the flat-colour tables.
+"""Shading: DOOM's light diminishing in 32 levels (the one place its formulas are written), and
+the colour tables.
 
 Far away a surface sinks to the level its sector's light gives, ``far = 31 - 4*(15 -
 light//16)`` (DOOM's ``startmap``), and it brightens in inverse proportion to depth:
 ``level = floor(far + bias + 1280/depth)`` clamped to ``[0, 31]`` (1280 = DOOM's 160-pixel
 projection × 16 scale steps / 2 per colormap, so it is independent of the resolution).
 Walls use the depth of their column and ``bias`` +1 for north–south walls, -1 for east–west
-ones (DOOM's fake contrast); floors and ceilings use the depth of each row,
-``d = f*(h - z) / (y0 - row)``.  A sky ceiling, and the upper part between two sky sectors,
-is always full bright.  Without light (``light=False``) every surface is at level 31.
+ones (DOOM's fake contrast: ``key_light``); floors and ceilings use the depth of each row,
+``d = f*(h - z) / (y0 - row)`` (``plane_level``).  A sky ceiling, and the upper part between
+two sky sectors, is always full bright.  Without light (``light=False``) every surface is at
+level 31 in flat colours, and textures show their own colours (lut row ``UNLIT``).
 
 A flat colour at level ``k`` is ``rgb * (k + 1) / 32``, rounded.
 """
@@ -15,34 +17,55 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["LIGHT_LEVELS", "LIGHT_DISTANCE", "FULL_BRIGHT", "far_level", "light_levels",
-           "plane_levels", "hex_rgb", "pack_rgb", "unpack_rgb", "scaled_rgb", "lit_palette",
-           "colour_table", "code_colours", "plane_stripes", "wall_codes"]
+from wallbsp.jit import kernel, step_kernel
+
+__all__ = ["LIGHT_LEVELS", "LIGHT_DISTANCE", "FULL_BRIGHT", "UNLIT", "far_level",
+           "light_level", "plane_level", "key_light", "hex_rgb", "pack_rgb",
+           "scaled_colour", "scaled_rgb", "lit_palette", "colour_table"]
 
 LIGHT_LEVELS = 32
 FULL_BRIGHT = LIGHT_LEVELS - 1
+UNLIT = LIGHT_LEVELS           # lut row of a texel's own colour (light=False, textured)
 LIGHT_DISTANCE = 1280.0        # levels gained = LIGHT_DISTANCE / depth (DOOM's scalelight)
+PLANE_NEAREST = 1e-9           # |f*(h - z)| floor: a plane at eye height is lit as near
 
 
+@step_kernel
 def far_level(light):
     """The level a sector's light leaves a surface at at infinite depth (DOOM's startmap)."""
     return LIGHT_LEVELS - 1 - 4.0 * (15 - np.floor(light / 16.0))
 
 
-def light_levels(far, inverse_depth):
-    """``floor(far + LIGHT_DISTANCE / depth)`` clamped to the 32 levels, int64."""
+@step_kernel
+def light_level(far, inverse_depth):
+    """``floor(far + LIGHT_DISTANCE / depth)`` clamped to the 32 levels."""
     level = np.floor(far + LIGHT_DISTANCE * inverse_depth)
-    return np.clip(level, 0, LIGHT_LEVELS - 1).astype(np.int64)
+    return int(min(max(level, 0.0), float(FULL_BRIGHT)))
 
 
-def plane_levels(view, floor, ceiling, light, sector, is_ceiling):
-    """``(planes, H)`` light levels of sector planes per screen row (DOOM lights flats by
-    row: one depth per row of a plane); ``is_ceiling`` picks each one's ceiling or floor."""
-    h = np.where(is_ceiling, ceiling[sector], floor[sector])
-    fz = np.abs(view.f * (h - view.z))
-    distance = np.abs(view.y0 - np.arange(view.height, dtype=np.float64))
-    inverse_depth = distance[None, :] / np.maximum(fz, 1e-9)[:, None]
-    return light_levels(far_level(light[sector])[:, None], inverse_depth)
+@step_kernel
+def plane_level(far, y0, row, fz):
+    """The level of a floor's or ceiling's row ``row`` (``fz = f*(h - z)``): DOOM lights
+    flats by row, one depth per row of a plane."""
+    return light_level(far, abs(y0 - row) / max(abs(fz), PLANE_NEAREST))
+
+
+@kernel
+def _key_light(light, near, bias, out):
+    for k in range(len(near)):
+        out[k] = far_level(light[near[k]]) + bias[k]
+
+
+def key_light(tables, state) -> np.ndarray:
+    """Per side key, the far light level of its wall (``far_level`` of N's light now, plus
+    the fake contrast), rebuilt only when a sector's light has changed."""
+    cached = tables.lights.get(state)
+    now = state.light.tobytes()
+    if cached is None or cached[0] != now:           # flickering lights: most tics
+        per_key = np.empty(len(tables.key_near), dtype=np.float64)
+        _key_light(state.light, tables.key_near, tables.key_bias, per_key)
+        cached = tables.lights[state] = (now, per_key)
+    return cached[1]
 
 
 def hex_rgb(color: str):
@@ -56,16 +79,30 @@ def pack_rgb(rgb) -> np.ndarray:
     return (rgb[..., 0] | (rgb[..., 1] << 8) | (rgb[..., 2] << 16)).astype("<u4")
 
 
-def unpack_rgb(packed) -> np.ndarray:
-    """Packed colours as ``(..., 3)`` uint32 r, g, b."""
-    packed = np.asarray(packed, dtype=np.uint32)
-    return np.stack([packed & 255, (packed >> 8) & 255, (packed >> 16) & 255], axis=-1)
+@step_kernel
+def scaled_colour(packed, level):
+    """A packed colour at light level ``level``: ``rgb * (level + 1) / 32``, rounded."""
+    scale = (level + 1.0) / LIGHT_LEVELS
+    r = np.uint32(np.rint((packed & 255) * scale))
+    g = np.uint32(np.rint(((packed >> 8) & 255) * scale))
+    b = np.uint32(np.rint(((packed >> 16) & 255) * scale))
+    return np.uint32(r | (g << 8) | (b << 16))
+
+
+@kernel
+def _scaled_colours(packed, level, out):
+    for k in range(out.shape[0]):
+        out[k] = scaled_colour(packed[k], level[k])
 
 
 def scaled_rgb(packed, level) -> np.ndarray:
-    """Packed colours at light level ``k`` (broadcast): ``rgb * (k + 1) / 32``, rounded."""
-    scale = (np.asarray(level, dtype=np.float64) + 1.0) / LIGHT_LEVELS
-    return pack_rgb(np.rint(unpack_rgb(packed) * scale[..., None]).astype(np.uint32))
+    """Packed colours at light levels ``level`` (broadcast; ``scaled_colour``)."""
+    packed, level = np.broadcast_arrays(np.asarray(packed, dtype=np.uint32),
+                                        np.asarray(level, dtype=np.int64))
+    out = np.empty(packed.shape, dtype="<u4")
+    _scaled_colours(np.ascontiguousarray(packed).reshape(-1),
+                    np.ascontiguousarray(level).reshape(-1), out.reshape(-1))
+    return out
 
 
 def lit_palette(palette, colormap) -> np.ndarray:
@@ -93,46 +130,3 @@ def colour_table(walls, sectors) -> tuple[np.ndarray, np.ndarray]:
     packed = pack_rgb(np.array([hex_rgb(c) for c in rows], dtype=np.uint32).reshape(-1, 3))
     lit = scaled_rgb(packed[:, None], np.arange(LIGHT_LEVELS)[None, :])
     return lit, np.array(colour, dtype=np.int32)
-
-
-def code_colours(tables, codes) -> np.ndarray:
-    """Packed rgb of colour codes ``32*surface + level`` (``colour_table``)."""
-    surface, level = np.divmod(codes, LIGHT_LEVELS)
-    return tables.lit_colours[tables.surface_colour[surface], level]
-
-
-def plane_stripes(tables, state, view, keys, light=True):
-    """Colour stripes for the distinct run keys: ``(stripes (n, H) packed rgb, inverse)``.
-    A wall key (a colour code) is one colour down the stripe; a plane key (``plane_key_base
-    + 2*sector + is_ceiling``) is shaded per row; the "nothing" key is black."""
-    uniq, inverse = np.unique(keys, return_inverse=True)
-    height = view.height
-    stripes = np.zeros((len(uniq), height), dtype="<u4")
-    walls = uniq < tables.n_codes
-    stripes[walls] = code_colours(tables, uniq[walls])[:, None]
-    planes = (uniq >= tables.plane_key_base) & (uniq < tables.nothing_key)
-    if planes.any():
-        plane = uniq[planes] - tables.plane_key_base
-        sector = plane >> 1
-        if light:
-            is_ceiling = (plane & 1).astype(bool)
-            level = plane_levels(view, state.floor, state.ceiling, state.light, sector,
-                                 is_ceiling)
-            level[is_ceiling & tables.sector_sky[sector]] = FULL_BRIGHT
-        else:
-            level = np.full((len(plane), height), FULL_BRIGHT, dtype=np.int64)
-        codes = (tables.plane_base_surface + plane)[:, None] * LIGHT_LEVELS + level
-        stripes[planes] = code_colours(tables, codes)
-    return stripes, inverse.reshape(-1)
-
-
-def wall_codes(tables, key_light, entries, light=True):
-    """Colour codes ``(upper, lower)`` of every entry's wall parts at its column's level
-    (a one-sided wall's middle is both); ``key_light``: the far level of every key."""
-    if light:
-        level = light_levels(entries.piece_values(key_light), entries.w)
-        upper_level = np.where(entries.piece_values(tables.key_upper_sky), FULL_BRIGHT, level)
-    else:
-        level = upper_level = FULL_BRIGHT
-    return (entries.piece_values(tables.key_upper_surface) + upper_level,
-            entries.piece_values(tables.key_lower_surface) + level)

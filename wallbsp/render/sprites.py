@@ -11,20 +11,65 @@ forward depth ``d >= MIN_DEPTH`` (DOOM's MINZ):
 - it covers the columns whose ``u`` lies in ``[(l - left)/d, (l - left + w)/d)`` and the
   heights ``[g + top - h, g + top]`` (``l``: its offset along R, ``g``: its feet);
 - it is lit by its sector's light and its depth as walls are, full-bright frames unlit;
-- every column is clipped to the window the walk left open at that depth (``clipping``).
+- every column is clipped to the window the walk left open at that depth (``_window``).
 
-The result is ``Slices``, drawn with the masked walls, far to near (``overlay``).
+The sprite columns are drawn with the masked walls' columns, far to near (``composite``).
+Pictures are chosen in Python (``pictures``; the kernels read a table of the choices made,
+per thing and rotation); the angle to a thing is numpy's ``arctan2``, a compiled ``atan2``
+need not share its last bit.
 """
 from __future__ import annotations
 
+from typing import NamedTuple
+
 import numpy as np
 
-from wallbsp.sim.thingtypes import COUNTKILL, SPECIAL
-from wallbsp.render.clipping import Slices, clipped, texture_rows
-from wallbsp.render.frame import KIND_THING
-from wallbsp.render.shading import FULL_BRIGHT, far_level, light_levels
+from wallbsp.jit import kernel, step_kernel
+from wallbsp.sim.thingtypes import COUNTKILL, SPAWNCEILING, SPECIAL
+from wallbsp.render.shading import FULL_BRIGHT, far_level, light_level
 
-__all__ = ["MIN_DEPTH", "rotations", "pictures", "sprite_slices"]
+__all__ = ["MIN_DEPTH", "rotations", "pictures", "ThingArrays", "Seen", "Clip",
+           "visible_things", "sprite_columns", "SLICE_INTS", "SLICE_FLOATS"]
+
+# a slice (a column of a picture to draw) is a column of two arrays: ints (column, top row,
+# bottom row, slot, texture column, light level, index) and floats (t0, tstep, depth); the
+# texture row of frame row r is floor(t0 + r*tstep)
+SLICE_INTS, SLICE_FLOATS = 7, 3
+
+
+class ThingArrays(NamedTuple):
+    """The things' columns the sprite kernels read (``sim.things.Things``)."""
+    angle: np.ndarray
+    type: np.ndarray
+    sector: np.ndarray
+    flags: np.ndarray
+    height: np.ndarray
+    z: np.ndarray
+    bright: np.ndarray
+    chosen_kind: np.ndarray      # the type each row of ``chosen`` was chosen for (-1: none)
+    chosen: np.ndarray           # (things, 8): slot * 2 + mirrored per rotation (-1: none)
+
+
+class Seen(NamedTuple):
+    """The things ``visible_things`` kept: ids, forward depth, offset along the view's
+    right vector, and the degrees of their direction from the eye."""
+    ids: np.ndarray
+    depth: np.ndarray
+    along: np.ndarray
+    seen: np.ndarray
+
+
+class Clip(NamedTuple):
+    """What clips a picture's column: the walk's drawsegs, each piece's side key, and per
+    key its near and far sector."""
+    col: np.ndarray
+    w: np.ndarray
+    open_top: np.ndarray
+    open_bottom: np.ndarray
+    piece: np.ndarray
+    piece_keys: np.ndarray
+    key_near: np.ndarray
+    key_far: np.ndarray
 
 MIN_DEPTH = 4.0                 # DOOM's MINZ: a thing nearer than this is not drawn
 # flat colours of things with no picture, by what they are
@@ -73,57 +118,176 @@ def _picture(info, rotation, atlas):
     return found
 
 
-def sprite_slices(view, state, things, ids, clip, atlas, light=True):
-    """``(Slices or None, drawn)``: the sprite columns of things ``ids`` (gathered from the
-    visited leaves) in front of the camera and not wholly hidden, and how many things have
-    one."""
-    dx, dy = things.x[ids] - view.x, things.y[ids] - view.y
-    depth = dx * view.fx + dy * view.fy
-    ahead = depth >= MIN_DEPTH
-    ids, dx, dy, depth = ids[ahead], dx[ahead], dy[ahead], depth[ahead]
-    if not len(ids):
-        return None, 0
-    along = dx * view.rx + dy * view.ry
-    # DOOM's R_ProjectSprite gives up on a thing four times further aside than ahead;
-    # here, on one whose widest likely picture (four radii and 64) is outside the view
-    aside = np.abs(along) - 4.0 * things.radius[ids] - 64.0 <= depth * (view.x0 + 1) / view.f
-    if not aside.all():
-        ids, depth, along = ids[aside], depth[aside], along[aside]
-        if not len(ids):
-            return None, 0
-    rotation = rotations(view.x, view.y, things.x[ids], things.y[ids], things.angle[ids])
-    slot, mirrored = pictures(things, ids, rotation, atlas)
-    _, _, _, width, height, left, top, _ = atlas.arrays()
-    width, height, left, top = width[slot], height[slot], left[slot], top[slot]
-    scale = view.f / depth
-    # np.maximum/np.minimum rather than np.clip: a fraction of its call cost
-    c1 = np.maximum(np.ceil(view.x0 + (along - left) * scale), 0).astype(np.int64)
-    c2 = np.minimum(np.ceil(view.x0 + (along - left + width) * scale), view.width)
-    counts = np.maximum(c2.astype(np.int64) - c1, 0)
-    if not counts.any():                      # all between columns or off the sides
-        return None, 0
-    feet = things.feet(ids, state.floor, state.ceiling)
-    r1, r2, t0, tstep = texture_rows(view, feet + top, height, depth)
-    if light:
-        sector = np.maximum(things.sector[ids], 0)
-        level = light_levels(far_level(state.light[sector]), 1.0 / depth)
-        level[things.bright[ids]] = FULL_BRIGHT
-    else:
-        level = np.full(len(ids), FULL_BRIGHT, dtype=np.int64)
-    # one entry per (thing, column)
-    sprite = np.arange(len(ids)).repeat(counts)
-    col = np.arange(len(sprite), dtype=np.int64) - (counts.cumsum() - counts - c1).repeat(counts)
-    d = depth[sprite]
-    tx = np.floor(view.u[col] * d - (along - left)[sprite]).astype(np.int64)
-    tx = np.minimum(np.maximum(tx, 0), width[sprite] - 1)
-    tx = np.where(mirrored[sprite], width[sprite] - 1 - tx, tx)
-    win_top, win_bottom = clip.windows(col, d, things.sector[ids][sprite])
-    row1, row2 = clipped(r1[sprite], r2[sprite], win_top, win_bottom)
-    seen = row2 > row1
-    sprite, col, tx, row1, row2 = sprite[seen], col[seen], tx[seen], row1[seen], row2[seen]
-    drawn = int(np.count_nonzero(np.diff(sprite))) + 1 if len(sprite) else 0
-    slices = Slices(col, row1, row2, slot[sprite], tx, t0[sprite], tstep[sprite],
-                    level[sprite], np.full(len(col), KIND_THING, np.uint8), ids[sprite],
-                    depth[sprite])
-    return slices, drawn
+@kernel
+def visible_things(leaves, n_leaves, leaf, alive, drawn, x, y, radius, view, piece_keys,
+                   masked_slot):
+    """``(considered, ids, (dx, dy, depth, along), masked)``: how many drawn things the
+    ``leaves`` hold (leaf by leaf, as ``Things.things_in_leaves`` orders them), and those
+    at forward depth >= MIN_DEPTH whose widest likely picture (four radii and 64) reaches
+    the view (DOOM's R_ProjectSprite gives up on a thing four times further aside than
+    ahead), with their offsets from the eye as the rows of one array; and whether a
+    piece's side key has a masked middle (``masked_slot`` >= 0)."""
+    masked = False
+    for k in range(piece_keys.shape[0]):
+        if masked_slot[piece_keys[k]] >= 0:
+            masked = True
+            break
+    n = leaf.shape[0]
+    head = np.full(n_leaves, -1, dtype=np.int64)      # per leaf its lowest thing, then
+    after = np.empty(n, dtype=np.int64)                # the next higher one of its leaf
+    for i in range(n - 1, -1, -1):
+        if alive[i] and drawn[i] and 0 <= leaf[i] < n_leaves:
+            after[i] = head[leaf[i]]
+            head[leaf[i]] = i
+    considered = 0
+    for k in range(leaves.shape[0]):
+        i = head[leaves[k]] if 0 <= leaves[k] < n_leaves else -1
+        while i >= 0:
+            considered += 1
+            i = after[i]
+    ids = np.empty(considered, dtype=np.int64)
+    out = np.empty((4, considered), dtype=np.float64)  # dx, dy, depth, along
+    kept = 0
+    for k in range(leaves.shape[0]):
+        i = head[leaves[k]] if 0 <= leaves[k] < n_leaves else -1
+        while i >= 0:
+            dx = x[i] - view.x
+            dy = y[i] - view.y
+            depth = dx * view.fx + dy * view.fy
+            if depth >= MIN_DEPTH:
+                along = dx * view.rx + dy * view.ry
+                if abs(along) - 4.0 * radius[i] - 64.0 <= depth * (view.x0 + 1.0) / view.f:
+                    ids[kept] = i
+                    out[0, kept], out[1, kept], out[2, kept], out[3, kept] = dx, dy, depth, along
+                    kept += 1
+            i = after[i]
+    return considered, ids[:kept], out[:, :kept], masked
 
+
+@step_kernel
+def _window(col, lo, fraction, scale, own, clip, keys, scene, view):
+    """Rows ``(top, bottom)`` of column ``col`` through which something of sector ``own``
+    at depth ``d`` is seen (``fraction``: ``d / (1 + d)``; ``scale``: ``f / d``; ``lo``:
+    the column's first drawseg, if it has one).
+
+    Along one column the walk met the drawn pieces in order of depth, and each left a
+    window of rows open behind it: something at depth ``d`` is seen only through the
+    window of the last piece nearer than ``d``.  Beyond that piece the ray is in the
+    piece's far sector X; when X is not the thing's own sector, X's floor and ceiling
+    between the piece and ``d`` are nearer too and close the window further; the own
+    sector never does (DOOM lets a sprite's feet reach below its floor).  The column's
+    drawsegs are searched by the key ``col + 1/(1 + w)`` (running max), which ``keys``
+    keeps once made (NaN before)."""
+    height = view.height
+    if lo == clip.col.shape[0] or clip.col[lo] != col:   # no piece: out of the map
+        top, bottom, beyond = 0, height, -1
+    else:
+        q = col + fraction
+        last, key = lo - 1, -np.inf
+        while last + 1 < clip.col.shape[0] and clip.col[last + 1] == col:
+            if np.isnan(keys[last + 1]):
+                keys[last + 1] = 1.0 / (1.0 + clip.w[last + 1])
+            key = max(key, col + keys[last + 1])
+            if not key < q:
+                break
+            last += 1
+        if last >= lo:                                # a nearer piece in the column
+            top, bottom = clip.open_top[last], clip.open_bottom[last]
+            beyond = clip.key_far[clip.piece_keys[clip.piece[last]]]
+        else:                                         # the column's ray starts here
+            top, bottom, beyond = 0, height, clip.key_near[clip.piece_keys[clip.piece[lo]]]
+    if beyond >= 0 and beyond != own:
+        floor_row = np.ceil(view.y0 - (scene.floor[beyond] - view.z) * scale)
+        ceiling_row = np.ceil(view.y0 - (scene.ceiling[beyond] - view.z) * scale)
+        bottom = int(min(float(bottom), floor_row))
+        top = int(max(float(top), ceiling_row))
+    return top, bottom
+
+
+@kernel
+def _chosen_pictures(seen, things):
+    """Each thing's picture ``slot * 2 + mirrored`` at the rotation it is seen from (as
+    ``rotations``), as ``pictures`` chose it before; -1 where not chosen yet."""
+    picture = np.empty(seen.ids.shape[0], dtype=np.int64)
+    for k in range(seen.ids.shape[0]):
+        i = seen.ids[k]
+        facing = np.floor(things.angle[i] / 45.0) * 45.0
+        rotation = int(np.floor((seen.seen[k] - facing + 202.5) / 45.0)) % 8 + 1
+        picture[k] = things.chosen[i, rotation - 1] if things.chosen_kind[i] == things.type[i] \
+            else -1
+    return picture
+
+
+@kernel
+def sprite_columns(seen, things, pictures, scene, lit, view, clip, wall_ints, wall_floats):
+    """``(ints, floats, sprites, drawn)``: the slices of the things ``visible_things`` kept,
+    clipped to the windows, then the masked walls' (``wall_ints``, ``wall_floats``); how
+    many of them are sprites', and how many things have one.  ``drawn`` is -1 (and nothing
+    is made) when a thing's picture is not chosen yet."""
+    m = seen.ids.shape[0]
+    picture = _chosen_pictures(seen, things)
+    first = np.empty(m, dtype=np.int64)
+    counts = np.empty(m, dtype=np.int64)
+    total = 0
+    for s in range(m):
+        if picture[s] < 0:
+            return (np.empty((SLICE_INTS, 0), np.int64), np.empty((SLICE_FLOATS, 0)), 0, -1)
+        w, lft = pictures.width[picture[s] >> 1], pictures.left[picture[s] >> 1]
+        scale = view.f / seen.depth[s]
+        c1 = int(max(np.ceil(view.x0 + (seen.along[s] - lft) * scale), 0.0))
+        c2 = min(np.ceil(view.x0 + (seen.along[s] - lft + w) * scale), float(view.width))
+        first[s], counts[s] = c1, max(int(c2) - c1, 0)
+        total += counts[s]
+    walls = wall_ints.shape[1]
+    ints = np.empty((SLICE_INTS, total + walls), dtype=np.int64)
+    floats = np.empty((SLICE_FLOATS, total + walls), dtype=np.float64)
+    keys = np.full(clip.col.shape[0], np.nan)
+    n, drawn = 0, 0
+    for s in range(m):
+        if counts[s] == 0:
+            continue
+        i, d, p = seen.ids[s], seen.depth[s], picture[s] >> 1
+        w, h, lft = pictures.width[p], pictures.height[p], pictures.left[p]
+        home = max(things.sector[i], 0)
+        if np.isnan(things.z[i]):
+            feet = scene.ceiling[home] - things.height[i] if things.flags[i] & SPAWNCEILING \
+                else scene.floor[home]
+        else:
+            feet = things.z[i]
+        top_height = feet + pictures.top[p]
+        scale = view.f / d
+        r1 = int(np.ceil(view.y0 - (top_height - view.z) * scale))
+        r2 = int(np.ceil(view.y0 - (top_height - h - view.z) * scale))
+        tstep = d / view.f
+        t0 = top_height - view.z - view.y0 * tstep
+        level = FULL_BRIGHT
+        if lit and not things.bright[i]:
+            level = light_level(far_level(scene.sector_light[home]), 1.0 / d)
+        if min(r2, view.height) <= max(r1, 0):        # above or below the frame
+            continue
+        before = n
+        lo = np.searchsorted(clip.col, first[s])       # the first column's first entry
+        fraction = d / (1.0 + d)
+        for col in range(first[s], first[s] + counts[s]):
+            while lo < clip.col.shape[0] and clip.col[lo] < col:
+                lo += 1
+            tx = int(np.floor(view.u[col] * d - (seen.along[s] - lft)))
+            tx = min(max(tx, 0), w - 1)
+            if picture[s] & 1:                            # mirrored
+                tx = w - 1 - tx
+            win_top, win_bottom = _window(col, lo, fraction, scale, things.sector[i], clip,
+                                          keys, scene, view)
+            row1 = max(r1, win_top)
+            row2 = max(min(r2, win_bottom), row1)
+            if row2 > row1:
+                ints[0, n], ints[1, n], ints[2, n], ints[3, n] = col, row1, row2, p
+                ints[4, n], ints[5, n], ints[6, n] = tx, level, i
+                floats[0, n], floats[1, n], floats[2, n] = t0, tstep, d
+                n += 1
+        drawn += n > before
+    for k in range(walls):                                # element by element: numba
+        for r in range(SLICE_INTS):                       # compiles a slice assignment
+            ints[r, n + k] = wall_ints[r, k]              # for seconds
+        for r in range(SLICE_FLOATS):
+            floats[r, n + k] = wall_floats[r, k]
+    return ints[:, :n + walls], floats[:, :n + walls], n, drawn

@@ -1,6 +1,6 @@
-"""What the renderer reads from a tree and from the world, in the form each loop wants it.
+"""What the renderer reads from a tree and from the world, in the form the kernels want it.
 
-``TreeTables`` holds what never changes for a tree — node and seg lists for the Python walks,
+``TreeTables`` holds what never changes for a tree — the node and seg arrays the walks read,
 numpy tables per *side key* — and is built once per tree.  ``HeightTables`` holds what follows
 from the current sector heights (the parts' heights per side key, and which two-sided walls
 are closed this frame, DOOM's ``R_AddLine``); it is rebuilt when the ``WorldState``'s
@@ -17,37 +17,26 @@ from functools import cached_property
 
 import numpy as np
 
-from wallbsp.jit import kernel, kernels_enabled
-from wallbsp.render.shading import LIGHT_LEVELS, colour_table, far_level
+from wallbsp.jit import kernel
+from wallbsp.render.shading import colour_table
 
-__all__ = ["TreeTables", "HeightTables", "per_tree", "tree_tables", "height_tables",
-           "key_light"]
-
-
-def _listed(array: str) -> cached_property:
-    """A property: the array attribute ``array`` as Python lists, made when first read."""
-    return cached_property(lambda tables: getattr(tables, array).tolist())
+__all__ = ["TreeTables", "HeightTables", "per_tree", "tree_tables", "height_tables"]
 
 
 class TreeTables:
-    """Per-tree constants: node and seg lists (Python lists, so per-node work never touches
-    numpy scalars; made on first use, the kernels read the same as arrays) and per-key
-    numpy tables."""
+    """Per-tree constants: node and seg arrays, and per-key numpy tables."""
 
     def __init__(self, tree):
         level = tree.level
         walls, sectors = level.walls, level.sectors
         self.root = int(tree.root)
         self.node_count = len(tree.node_line)
-        self._tree = _referent(tree)        # (a strong one would keep the cache's key alive)
         lines = np.asarray(tree.node_line, dtype=np.float64).reshape(-1, 3)
         self.node_line_array = lines
         self.node_kid_array = np.asarray(tree.node_child, dtype=np.int64).reshape(-1, 2)
         self.node_seg_array = np.asarray(tree.node_segs, dtype=np.int64).reshape(-1, 2)
         # the largest |a|, |b|, |c|: the side test's tolerance for float eyes
         self.line_max = tuple(np.abs(lines).max(axis=0, initial=0).tolist())
-        # the walk's tables as arrays (the kernels'); the Python walks' lists are made from
-        # them when first read (at 200,000 walls they are ~80 MB the kernels never need)
         self.node_box_array = np.asarray(tree.node_bbox, dtype=np.float64).reshape(-1, 4)
         self.leaf_inside_array = np.asarray(tree.leaf_sector) >= 0
         seg_wall = np.asarray(tree.seg_wall, dtype=np.int64)
@@ -62,10 +51,7 @@ class TreeTables:
         self.sector_sky = np.array([s.sky for s in sectors], dtype=bool)
         self._key_tables(level, seg_wall)
         self._surfaces = (walls, sectors)                        # for the flat colours
-        self.n_codes = LIGHT_LEVELS * (3 * len(walls) + 2 * len(sectors))   # 3 a wall, 2 a sector
-        self.plane_base_surface = 3 * len(walls)
-        self.plane_key_base = self.n_codes                       # run keys: codes, planes,
-        self.nothing_key = self.n_codes + 2 * len(sectors)       # then "nothing"
+        self.plane_base_surface = 3 * len(walls)                 # 3 a wall, then 2 a sector
         self.heights = weakref.WeakKeyDictionary()               # state -> HeightTables
         self.lights = weakref.WeakKeyDictionary()                # state -> (light, per key)
         self.textures = weakref.WeakKeyDictionary()              # state -> LevelTextures
@@ -86,28 +72,6 @@ class TreeTables:
     def surface_colour(self):
         return self.flat_colours[1]
 
-    @cached_property
-    def _node_lists(self) -> tuple:
-        return node_lists(self._tree())
-
-    @property
-    def node_lines(self) -> list:
-        return self._node_lists[0]
-
-    @property
-    def node_kids(self) -> list:
-        return self._node_lists[1]
-
-    @property
-    def node_segs(self) -> list:
-        return self._node_lists[2]
-
-    node_boxes = _listed("node_box_array")
-    leaf_inside = _listed("leaf_inside_array")
-    seg_ends = _listed("seg_xy")
-    seg_flip = _listed("seg_flip_array")
-    seg_one_sided = _listed("seg_one_sided_array")
-
     def _key_tables(self, level, seg_wall):
         wall = np.repeat(seg_wall, 2)
         back = np.tile(np.array([0, 1], dtype=np.int64), len(seg_wall))
@@ -124,9 +88,10 @@ class TreeTables:
         # DOOM leaves the upper part between two skies open: it shows sky, never dimmed
         self.key_upper_sky = (~one_sided & self.sector_sky[self.key_near]
                               & self.sector_sky[np.maximum(far, 0)])
-        # surfaces: wall w -> 3w (color), 3w+1 (upper), 3w+2 (lower); sector planes after
-        self.key_upper_surface = (3 * wall + np.where(one_sided, 0, 1)) * LIGHT_LEVELS
-        self.key_lower_surface = (3 * wall + np.where(one_sided, 0, 2)) * LIGHT_LEVELS
+        # surfaces (flat colours) of the upper and lower part: wall w -> 3w (color), 3w+1
+        # (upper), 3w+2 (lower; a one-sided wall's middle is both); sector planes after
+        self.key_surfaces = np.stack([3 * wall + np.where(one_sided, 0, 1),
+                                      3 * wall + np.where(one_sided, 0, 2)])
 
 
 class HeightTables:
@@ -134,38 +99,21 @@ class HeightTables:
     B.ceiling, B.floor)`` of its column (a one-sided wall's opening is empty: B's heights
     are N's ceiling), and whether the key closes its columns (DOOM's ``R_AddLine``: a
     one-sided wall, or a two-sided one whose opening is shut now, like a closed door):
-    ``key_closes`` (bool array), ``key_solid`` (the same as a list)."""
+    ``key_closes`` (a bool array)."""
 
     def __init__(self, tables: TreeTables, state):
         floor, ceil = state.floor, state.ceiling
         near, far = tables.key_near, tables.key_far
         self.version = state.version
         self.floor, self.ceiling = floor.copy(), ceil.copy()   # as they were for this version
-        if kernels_enabled():               # a world that moves rebuilds these every tic
-            self.key_heights = np.empty((4, len(near)))
-            self.key_closes = np.empty(len(near), dtype=np.bool_)
-            _key_heights(floor, ceil, near, far, self.key_heights, self.key_closes)
-        else:
-            one_sided = far < 0
-            far_c = np.where(one_sided, ceil[near], ceil[np.maximum(far, 0)])
-            far_f = np.where(one_sided, ceil[near], floor[np.maximum(far, 0)])
-            self.key_heights = np.stack([ceil[near], floor[near], far_c, far_f])  # (4, keys)
-            closed = (far_f >= far_c) | (far_c <= floor[near]) | (far_f >= ceil[near])
-            self.key_closes = one_sided | closed             # the kernels' form
-        self._solid = None
-
-    @property
-    def key_solid(self) -> list:
-        """``key_closes`` as a Python list (the Python walks' form), made when first read."""
-        if self._solid is None:
-            self._solid = self.key_closes.tolist()
-        return self._solid
+        self.key_heights = np.empty((4, len(near)))
+        self.key_closes = np.empty(len(near), dtype=np.bool_)
+        _key_heights(floor, ceil, near, far, self.key_heights, self.key_closes)
 
 
 @kernel
 def _key_heights(floor, ceil, near, far, heights, closes):
-    """``HeightTables``' two tables in one pass over the keys (the same selections and
-    comparisons as its numpy code: no arithmetic, so the same values)."""
+    """``HeightTables``' two tables in one pass over the keys."""
     for k in range(len(near)):
         n, b = near[k], far[k]
         far_c = ceil[n] if b < 0 else ceil[b]
@@ -173,27 +121,6 @@ def _key_heights(floor, ceil, near, far, heights, closes):
         heights[0, k], heights[1, k] = ceil[n], floor[n]
         heights[2, k], heights[3, k] = far_c, far_f
         closes[k] = b < 0 or far_f >= far_c or far_c <= floor[n] or far_f >= ceil[n]
-
-
-def _referent(tree):
-    """A function giving ``tree`` back: a weak reference, or a strong one for a stand-in
-    that takes none (it is never a cache's key: ``per_tree``)."""
-    try:
-        return weakref.ref(tree)
-    except TypeError:
-        return lambda: tree
-
-
-def node_lists(tree) -> tuple[list, list, list]:
-    """``(lines, children, seg ranges)`` per node as Python lists: a ``BSPTree``'s own
-    (``node_lists()``: its ``locate`` builds them anyway, so one copy serves both — at
-    200,000 walls each copy is ~75 MB), or built from the arrays of a stand-in tree."""
-    own = getattr(tree, "node_lists", None)
-    if own is not None:
-        lines, kids, segs, _ = own()
-        return lines, kids, segs
-    lines = np.asarray(tree.node_line, dtype=np.float64).reshape(-1, 3)
-    return lines.tolist(), np.asarray(tree.node_child).tolist(), np.asarray(tree.node_segs).tolist()
 
 
 _CACHE: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
@@ -222,25 +149,3 @@ def height_tables(tables: TreeTables, state) -> HeightTables:
     if cached is None or cached.version != state.version:
         cached = tables.heights[state] = HeightTables(tables, state)
     return cached
-
-
-def key_light(tables: TreeTables, state) -> np.ndarray:
-    """Per key, the far light level of its wall (``far_level`` of N's light now, plus the
-    fake contrast), rebuilt only when a sector's light has changed."""
-    cached = tables.lights.get(state)
-    now = state.light.tobytes()
-    if cached is None or cached[0] != now:           # flickering lights: most tics
-        if kernels_enabled():
-            per_key = np.empty(len(tables.key_near), dtype=np.float64)
-            _key_light(state.light, tables.key_near, tables.key_bias, per_key)
-        else:
-            per_key = far_level(state.light[tables.key_near]) + tables.key_bias
-        cached = tables.lights[state] = (now, per_key)
-    return cached[1]
-
-
-@kernel
-def _key_light(light, near, bias, out):
-    """``key_light``'s numpy arithmetic, operation for operation, in one pass."""
-    for k in range(len(near)):
-        out[k] = (LIGHT_LEVELS - 1 - 4.0 * (15 - np.floor(light[near[k]] / 16.0))) + bias[k]

@@ -30,10 +30,10 @@ import numpy as np
 
 from wallbsp.assets.naming import switched_name
 from wallbsp.assets.resources import shared_resources, sky_name
-from wallbsp.render.packing import UNLIT, Packer
+from wallbsp.render.packing import Packer
 from wallbsp.render.tables import per_tree
 
-__all__ = ["TexturePack", "LevelTextures", "UNLIT", "FLAT_SIDE", "side_geometry",
+__all__ = ["TexturePack", "LevelTextures", "FLAT_SIDE", "side_geometry",
            "switched_name", "level_textures", "level_resources"]
 
 FLAT_SIDE = 64

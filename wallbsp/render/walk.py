@@ -1,31 +1,63 @@
-"""The front-to-back walk: DOOM's ``R_RenderBSPNode`` with an explicit stack.
+"""The walks of the tree, as compiled kernels: front to back (DOOM's ``R_RenderBSPNode`` with
+an explicit stack, the default) and back to front (the painter's order).
 
-At each node: the eye's side first, then the node's segs, then the far side.  A subtree
-whose bounding box projects outside the view, or entirely inside one closed interval, is
-skipped (``R_CheckBBox``); a seg is projected to a column span (``R_AddLine``) and clipped
-against the closed-column list; a solid seg closes its columns (``R_ClipSolidWallSegment``),
-a portal does not (``R_ClipPassWallSegment``).  Whether a two-sided wall is solid is decided
-per frame from the current heights (``HeightTables.key_solid``).  The walk stops when every
-column is closed (Abrash's early out).
+Front to back, at each node: the eye's side first, then the node's segs, then the far side.
+A subtree whose bounding box projects outside the view, or entirely inside one closed
+interval, is skipped (``R_CheckBBox``); a seg is projected to a column span (``R_AddLine``)
+and clipped against the closed-column list, DOOM's ``solidsegs`` (Gordon & Chen's "dynamic
+screen" in one dimension: sorted, disjoint closed intervals, columns outside the screen
+closed by two sentinels); a solid seg closes its columns (``R_ClipSolidWallSegment``), a
+portal does not (``R_ClipPassWallSegment``).  Whether a two-sided wall is solid is decided
+per frame from the current heights (``HeightTables.key_closes``).  The walk stops when every
+column is closed (Abrash's early out).  It records the drawn *pieces* ``(side key, A, B,
+first column, end column)`` (``1/depth = A + B*u``) and the leaves it enters, in order
+(DOOM's ``R_Subsector``, where things are gathered).
+
+Back to front is the exact reverse order: far subtree, node segs (last first), near
+subtree; only subtrees outside the view are skipped, and every seg in view is a piece.
 
 The side of the eye at a node is exact (``geometry.side_tolerance`` / ``exact_side``, as the
-tree's own walk decides it): doubles where they are clearly right, rationals otherwise; an
-eye on a partition line counts as in front of it.
-
-The walk is the only Python per node and per seg.  It records the drawn *pieces* ``(side
-key, A, B, first column, end column)`` (``1/depth = A + B*u``) and the leaves it enters, in
-order (DOOM's ``R_Subsector``, where things will be gathered).
+tree's own walk decides it): doubles where they are clearly right; where they are not, the
+kernel stops and names the node, its side is taken in rationals and the walk runs again
+with it known.  An eye on a partition line counts as in front of it.
 """
 from __future__ import annotations
 
-from bisect import bisect_right
-from dataclasses import dataclass, field
+import weakref
+from typing import NamedTuple
+
+import numpy as np
 
 from wallbsp.geometry import exact_side, side_tolerance
-from wallbsp.render.columns import ClosedColumns
-from wallbsp.render.project import make_box_check, make_projector
+from wallbsp.jit import kernel, step_kernel
+from wallbsp.render.project import box_columns, project_seg
 
-__all__ = ["Walk", "walk_front_to_back", "eye_side", "eye_tolerance"]
+__all__ = ["Walk", "walk_front_to_back", "walk_back_to_front", "eye_tolerance", "open_spans",
+           "close_span", "FAR"]
+
+FAR = 1 << 62                  # the closed-column list's sentinels
+
+
+class WalkTables(NamedTuple):
+    """A tree's walk tables as the kernels read them (contiguous arrays)."""
+    lines: np.ndarray          # (nodes, 3) a, b, c
+    kids: np.ndarray           # (nodes, 2)
+    boxes: np.ndarray          # (nodes, 4)
+    seg_ranges: np.ndarray     # (nodes, 2)
+    inside: np.ndarray         # per leaf: inside the map
+    ends: np.ndarray           # (segs, 4)
+    flips: np.ndarray
+    one_sided: np.ndarray
+
+
+class Walk:
+    """What a walk hands to the fill: ``pieces`` ``(n, 5)``; ``leaves`` in the order entered
+    (only leaves inside the map; ``leaf_array`` the same as an array); ``stats`` (SPEC §5
+    names, without ``pixels_written``)."""
+
+    def __init__(self, pieces, stats, leaf_array):
+        self.pieces, self.stats, self.leaf_array = pieces, stats, leaf_array
+        self.leaves = leaf_array.tolist()
 
 
 def eye_tolerance(line_max, ex, ey) -> float:
@@ -39,102 +71,293 @@ def eye_tolerance(line_max, ex, ey) -> float:
     return side_tolerance(a, b, c, ex, ey)
 
 
-def eye_side(line, ex, ey, tol):
-    """The side of the eye of a node's line, by its sign: doubles when they are clearly
-    right (beyond ``tol``, ``geometry.side_tolerance``), rationals otherwise."""
-    a, b, c = line
-    s = a * ex + b * ey + c
-    if not (s < -tol or s > tol):                     # too close to call in doubles
-        s = exact_side(a, b, c, ex, ey)
+@step_kernel
+def _eye_side(tree, node, view, tol, known):
+    """The side of the eye of ``node``'s line by its sign; NaN when doubles cannot tell
+    and ``known`` (rows ``node, side``: the rationals' answers so far) does not say."""
+    s = tree.lines[node, 0] * view.x + tree.lines[node, 1] * view.y + tree.lines[node, 2]
+    if not (s < -tol or s > tol):
+        s = np.nan
+        for k in range(known.shape[0]):
+            if known[k, 0] == node:
+                s = known[k, 1]
     return s
 
 
-@dataclass
-class Walk:
-    """What a walk hands to the batch: ``pieces`` flat, five numbers a piece; ``leaves`` in
-    the order entered (only leaves inside the map); ``stats`` (SPEC §5 names, without
-    ``pixels_written``)."""
-    pieces: list
-    stats: dict
-    leaves: list = field(default_factory=list)
-    leaf_array: object = None          # the same as an int64 array, when the kernel walked
+@step_kernel
+def _bisect_right(values, count, x):
+    lo, hi = 0, count
+    while lo < hi:
+        mid = (lo + hi) // 2
+        if x < values[mid]:
+            hi = mid
+        else:
+            lo = mid + 1
+    return lo
 
 
-def walk_front_to_back(tables, solid, view, boxes=None) -> Walk:
-    """Near subtree, node segs, far subtree; every subtree's box is checked when it is
-    reached, against the columns closed so far.  Stack items: a node ``n`` (>= 0), a leaf
-    to enter ``n_nodes + leaf``, or a node's segs ``~(2*node + eye_behind)``."""
-    lines, kids = tables.node_lines, tables.node_kids
-    boxes = tables.node_boxes if boxes is None else boxes    # the things' grown boxes
-    seg_ranges, inside, n_nodes = tables.node_segs, tables.leaf_inside, tables.node_count
-    ends, flips, one_sided = tables.seg_ends, tables.seg_flip, tables.seg_one_sided
-    project, box_columns = make_projector(view), make_box_check(view)
-    closed = ClosedColumns(view.width)
-    starts, stops, clip = closed.starts, closed.ends, closed.clip
-    ex, ey = view.x, view.y
-    tol = eye_tolerance(tables.line_max, ex, ey)
-    pieces, leaves = [], []
-    add, enter = pieces.extend, leaves.append
+@step_kernel
+def _bisect_left(values, count, x):
+    lo, hi = 0, count
+    while lo < hi:
+        mid = (lo + hi) // 2
+        if values[mid] < x:
+            lo = mid + 1
+        else:
+            hi = mid
+    return lo
+
+
+@step_kernel
+def close_span(starts, ends, count, c1, c2):
+    """Merge the closed span ``[c1, c2)`` into the list (the eight cases of Gordon & Chen's
+    Fig. 9 in one); the new count."""
+    lo = _bisect_left(ends, count, c1)             # first interval ending at or after c1
+    hi = _bisect_right(starts, count, c2) - 1      # last interval starting at or before c2
+    if lo > hi:
+        for k in range(count, lo, -1):
+            starts[k], ends[k] = starts[k - 1], ends[k - 1]
+        starts[lo], ends[lo] = c1, c2
+        return count + 1
+    start, end = min(c1, starts[lo]), max(c2, ends[hi])
+    gone = hi - lo
+    starts[lo], ends[lo] = start, end
+    for k in range(lo + 1, count - gone):
+        starts[k], ends[k] = starts[k + gone], ends[k + gone]
+    return count - gone
+
+
+@step_kernel
+def open_spans(starts, ends, count, c1, c2, spans):
+    """The still-open parts of ``[c1, c2)``, left to right, into ``spans``; how many."""
+    i = _bisect_right(starts, count, c1) - 1
+    if ends[i] > c1:
+        c1 = ends[i]
+    n = 0
+    while c1 < c2:
+        i += 1
+        spans[n, 0], spans[n, 1] = c1, min(starts[i], c2)
+        n += 1
+        c1 = ends[i]
+    return n
+
+
+@step_kernel
+def _seen(view, tree, i, back, out):
+    """Project seg ``i`` as seen from its front or ``back`` into ``out``."""
+    e = tree.ends
+    if back:
+        return project_seg(view, e[i, 2], e[i, 3], e[i, 0], e[i, 1], out)
+    return project_seg(view, e[i, 0], e[i, 1], e[i, 2], e[i, 3], out)
+
+
+@step_kernel
+def _add_piece(pieces, n, key, seen, c1, c2):
+    """Piece ``n`` into ``pieces``, doubled when full: ``(pieces, n + 1)``."""
+    if n == pieces.shape[0]:
+        grown = np.empty((2 * n, 5), dtype=np.float64)
+        for k in range(n):                 # a loop: a slice copy compiles a shape check
+            for j in range(5):
+                grown[k, j] = pieces[k, j]
+        pieces = grown
+    pieces[n, 0], pieces[n, 1], pieces[n, 2] = key, seen[2], seen[3]
+    pieces[n, 3], pieces[n, 4] = c1, c2
+    return pieces, n + 1
+
+
+@step_kernel
+def _append(values, n, x):
+    """``values[n] = x`` in a buffer doubled when full: ``(buffer, n + 1)``."""
+    if n == len(values):
+        grown = np.empty(2 * n, dtype=values.dtype)
+        for k in range(n):
+            grown[k] = values[k]
+        values = grown
+    values[n] = x
+    return values, n + 1
+
+
+@kernel
+def front_to_back(view, tol, root, tree, boxes, solid, known):
+    """``(unsure node or -1, pieces (n, 5), leaves, nodes visited, segs drawn, early
+    exit)``: the walk, or the first node whose side it needs in rationals (nothing else
+    is then meaningful)."""
+    n_nodes = tree.lines.shape[0]
+    width = view.width
+    starts = np.empty(width + 4, dtype=np.int64)
+    stops = np.empty(width + 4, dtype=np.int64)
+    starts[0], stops[0], starts[1], stops[1] = -FAR, 0, width, FAR
+    count = 2
+    stack = np.empty(3 * n_nodes + 4, dtype=np.int64)
+    top = 0
+    if root >= 0:
+        stack[0] = root
+        top = 1
+    pieces = np.empty((64, 5), dtype=np.float64)
+    n_pieces = 0
+    leaves = np.empty(64, dtype=np.int64)
+    n_leaves = 0
+    spans = np.empty((width + 2, 2), dtype=np.int64)
+    seen = np.empty(4, dtype=np.float64)
+    span = np.empty(2, dtype=np.int64)
     visited = segs_drawn = 0
     early_exit = False
-    stack = [tables.root] if tables.root >= 0 else []
-    pop, push = stack.pop, stack.append
-    while stack:
-        item = pop()
+    while top > 0:
+        top -= 1
+        item = stack[top]
         if item >= n_nodes:
-            enter(item - n_nodes)
+            leaves, n_leaves = _append(leaves, n_leaves, item - n_nodes)
             continue
         if item >= 0:
-            span = box_columns(*boxes[item])
-            if span is None:
+            if not box_columns(view, boxes[item], span):
                 continue
-            lo, hi = span
-            if stops[bisect_right(starts, lo) - 1] >= hi:
-                continue                              # hidden behind one closed interval
+            if stops[_bisect_right(starts, count, span[0]) - 1] >= span[1]:
+                continue                          # hidden behind one closed interval
             visited += 1
-            a, b, c = lines[item]
-            s = a * ex + b * ey + c                   # eye_side, inline: the hot path
-            if not (s < -tol or s > tol):
-                s = exact_side(a, b, c, ex, ey)
-            k0, k1 = kids[item]
-            if s <= 0:                                # on the line counts as in front
-                near, far = k0, k1
-                show_segs = s < 0                     # on the line: its segs are edge on
+            s = _eye_side(tree, item, view, tol, known)
+            if np.isnan(s):
+                return item, pieces[:0], leaves[:0], visited, segs_drawn, early_exit
+            k0, k1 = tree.kids[item, 0], tree.kids[item, 1]
+            if s <= 0:                            # on the line counts as in front
+                near, far, show_segs = k0, k1, s < 0     # on it: its segs are edge on
             else:
-                near, far = k1, k0
-                show_segs = True
+                near, far, show_segs = k1, k0, True
             if far >= 0:
-                push(far)
-            elif inside[~far]:
-                push(n_nodes + ~far)
+                stack[top] = far
+                top += 1
+            elif tree.inside[~far]:
+                stack[top] = n_nodes + ~far
+                top += 1
             if show_segs:
-                push(~((item << 1) | (s > 0)))
+                stack[top] = ~((item << 1) | (1 if s > 0 else 0))
+                top += 1
             if near >= 0:
-                push(near)
-            elif inside[~near]:
-                enter(~near)                          # it would be popped next
+                stack[top] = near
+                top += 1
+            elif tree.inside[~near]:
+                leaves, n_leaves = _append(leaves, n_leaves, ~near)   # it would be next
             continue
         code = ~item
         eye_back = code & 1
-        first, last = seg_ranges[code >> 1]
-        for i in range(first, last):
-            back = eye_back ^ flips[i]
-            if back and one_sided[i]:
+        node = code >> 1
+        for i in range(tree.seg_ranges[node, 0], tree.seg_ranges[node, 1]):
+            back = eye_back ^ tree.flips[i]
+            if back and tree.one_sided[i]:
                 continue
-            x1, y1, x2, y2 = ends[i]
-            seen = project(x2, y2, x1, y1) if back else project(x1, y1, x2, y2)
-            if seen is None:
+            if not _seen(view, tree, i, back, seen):
                 continue
-            c1, c2, wa, wb = seen
+            c1, c2 = int(seen[0]), int(seen[1])
             key = (i << 1) | back
-            spans = clip(c1, c2, solid[key])
-            if spans:
+            n = open_spans(starts, stops, count, c1, c2, spans)
+            if n:
                 segs_drawn += 1
-                for s1, s2 in spans:
-                    add((key, wa, wb, s1, s2))
-        if len(starts) == 1:
+                if solid[key]:
+                    count = close_span(starts, stops, count, c1, c2)
+                for j in range(n):
+                    pieces, n_pieces = _add_piece(pieces, n_pieces, key, seen, spans[j, 0],
+                                                  spans[j, 1])
+        if count == 1:
             early_exit = True
             break
-    stats = {"nodes_visited": visited, "segs_drawn": segs_drawn, "early_exit": early_exit,
-             "pieces": len(pieces) // 5, "nodes": tables.node_count}
+    return -1, pieces[:n_pieces], leaves[:n_leaves], visited, segs_drawn, early_exit
+
+
+@kernel
+def back_to_front(view, tol, root, tree, known):
+    """``(unsure node or -1, pieces (n, 5), nodes visited)``: the painter's walk."""
+    n_nodes = tree.lines.shape[0]
+    stack = np.empty(3 * n_nodes + 4, dtype=np.int64)
+    top = 0
+    if root >= 0:
+        stack[0] = root
+        top = 1
+    pieces = np.empty((64, 5), dtype=np.float64)
+    n_pieces = 0
+    seen = np.empty(4, dtype=np.float64)
+    span = np.empty(2, dtype=np.int64)
+    visited = 0
+    while top > 0:
+        top -= 1
+        item = stack[top]
+        if item < 0:
+            code = ~item
+            eye_back = code & 1
+            node = code >> 1
+            for i in range(tree.seg_ranges[node, 1] - 1, tree.seg_ranges[node, 0] - 1, -1):
+                back = eye_back ^ tree.flips[i]
+                if back and tree.one_sided[i]:
+                    continue
+                if _seen(view, tree, i, back, seen):
+                    pieces, n_pieces = _add_piece(pieces, n_pieces, (i << 1) | back, seen,
+                                                  int(seen[0]), int(seen[1]))
+        elif box_columns(view, tree.boxes[item], span):
+            visited += 1
+            s = _eye_side(tree, item, view, tol, known)
+            if np.isnan(s):
+                return item, pieces[:0], visited
+            k0, k1 = tree.kids[item, 0], tree.kids[item, 1]
+            near, far = (k0, k1) if s <= 0 else (k1, k0)
+            if near >= 0:
+                stack[top] = near
+                top += 1
+            if s != 0:                            # on the line: its segs are edge on
+                stack[top] = ~((item << 1) | (1 if s > 0 else 0))
+                top += 1
+            if far >= 0:
+                stack[top] = far
+                top += 1
+    return -1, pieces[:n_pieces], visited
+
+
+_TABLES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+NONE_KNOWN = np.zeros((0, 2), dtype=np.float64)
+
+
+def walk_tables(tables) -> WalkTables:
+    """The ``WalkTables`` of a tree's ``TreeTables``, made once."""
+    found = _TABLES.get(tables)
+    if found is None:
+        found = _TABLES[tables] = WalkTables(*(np.ascontiguousarray(a) for a in (
+            tables.node_line_array, tables.node_kid_array, tables.node_box_array,
+            tables.node_seg_array, tables.leaf_inside_array.astype(np.bool_), tables.seg_xy,
+            tables.seg_flip_array, tables.seg_one_sided_array)))
+    return found
+
+
+def _walked(run, tables, view):
+    """``run(known)`` again with each node's side in rationals that doubles could not
+    tell, until the walk needs no more."""
+    known = NONE_KNOWN
+    while True:
+        found = run(known)
+        if found[0] < 0:
+            return found[1:]
+        a, b, c = tables.node_line_array[found[0]].tolist()
+        side = exact_side(a, b, c, view.x, view.y)
+        known = np.concatenate([known, np.array([[found[0], side]], dtype=np.float64)])
+
+
+def walk_front_to_back(tables, heights, view, boxes=None) -> Walk:
+    """The front-to-back walk of ``view`` (a ``View``); ``boxes``: the node boxes grown to
+    hold the drawn things (an array) or None."""
+    tree = walk_tables(tables)
+    tol = eye_tolerance(tables.line_max, view.x, view.y)
+    boxes = tree.boxes if boxes is None else boxes
+    pieces, leaves, visited, segs_drawn, early_exit = _walked(
+        lambda known: front_to_back(view, tol, tables.root, tree, boxes, heights.key_closes,
+                                    known), tables, view)
+    stats = {"nodes_visited": int(visited), "segs_drawn": int(segs_drawn),
+             "early_exit": bool(early_exit), "pieces": len(pieces),
+             "nodes": tables.node_count}
     return Walk(pieces, stats, leaves)
+
+
+def walk_back_to_front(tables, view) -> Walk:
+    """The painter's walk of ``view`` (a ``View``)."""
+    tree = walk_tables(tables)
+    tol = eye_tolerance(tables.line_max, view.x, view.y)
+    pieces, visited = _walked(lambda known: back_to_front(view, tol, tables.root, tree, known),
+                              tables, view)
+    stats = {"nodes_visited": int(visited), "segs_drawn": len(pieces), "early_exit": False,
+             "pieces": len(pieces), "nodes": tables.node_count}
+    return Walk(pieces, stats, np.zeros(0, dtype=np.int64))

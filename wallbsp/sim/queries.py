@@ -68,12 +68,11 @@ from typing import NamedTuple
 
 import numpy as np
 
-from wallbsp.jit import kernels_enabled
 from wallbsp.geometry import direction
 from wallbsp.sim.querytables import Tables
 from wallbsp.sim import collision as segments
-from wallbsp.sim.collision import (LOCATE, MEET, MOVE, STAND, UNSURE, meet, move_steps,
-    opening, segs_near as search, surroundings_at, wall_side, walls_met)
+from wallbsp.sim.collision import (LOCATE, MEET, MOVE, STAND, UNSURE, meet, opening,
+    segs_near as search, wall_side)
 from wallbsp.sim.state import state_of
 
 __all__ = ["PLAYER_RADIUS", "MAX_STEP", "PLAYER_HEIGHT", "MAX_COORDINATE", "move",
@@ -201,18 +200,11 @@ def move(source, x, y, dx, dy, z_floor, radius=PLAYER_RADIUS, step=MAX_STEP,
         dx, dy, length = dx * limit / length, dy * limit / length, limit
     pieces = max(1, math.ceil(length / radius))   # no sub-step longer than the radius
     rules = (float(z_floor), float(radius), float(step), float(headroom))
-    things = state.things
-    if kernels_enabled():
-        nx, ny, around, met = segments.KERNEL(
-            tables.arrays, *cache.arrays, things.solid_boxes(), MOVE, float(x), float(y),
-            dx / pieces, dy / pieces, pieces, rules, LOCATE)
-        cache.moved((x, y, nx, ny), radius, around, met)
-        return nx, ny
-    # the solid things any sub-step may reach (each sweeps at most its length, twice that
-    # when it slides along both axes): the same boxes pass each sub-step's own test
-    boxes = things.solid_boxes_near(x, y, 3 * length + radius + 1) if len(things) else []
-    return move_steps(tables.lists, *cache.lists(), boxes, x, y, dx / pieces, dy / pieces,
-                      pieces, rules)
+    nx, ny, around, met = segments.KERNEL(
+        tables.arrays, *cache.arrays, state.things.solid_boxes(), MOVE, float(x), float(y),
+        dx / pieces, dy / pieces, pieces, rules, LOCATE)
+    cache.moved((x, y, nx, ny), radius, around, met)
+    return nx, ny
 
 
 # -- where a player stands ------------------------------------------------------------------------
@@ -254,9 +246,7 @@ def _surroundings(found) -> Surroundings:
 
 
 def _surroundings_at(cache, x, y, radius, sector):
-    if kernels_enabled():
-        return _ask(cache, STAND, x, y, x, y, radius, sector)[2]
-    return surroundings_at(cache.tables.lists, *cache.lists(), x, y, radius, sector)
+    return _ask(cache, STAND, x, y, x, y, radius, sector)[2]
 
 
 def _ask(cache, question, x, y, u, v, radius=PLAYER_RADIUS, sector=LOCATE):
@@ -326,9 +316,7 @@ def _walls_met(cache, ax, ay, bx, by):
     """``[(t, wall), ...]`` of the walls the segment a-b meets, by t along it."""
     if cache.met is not None and cache.met[0] == (ax, ay, bx, by):
         return sorted(cache.met[1])
-    if kernels_enabled():
-        return sorted(_ask(cache, MEET, ax, ay, bx, by)[3])
-    return sorted(walls_met(cache.tables.lists, ax, ay, bx, by))
+    return sorted(_ask(cache, MEET, ax, ay, bx, by)[3])
 
 
 def walls_crossed(source, a, b) -> list:
