@@ -594,12 +594,9 @@ def test_every_action_of_p_enemy_has_its_cname_method():
 # says how they and their traces in tests/oracle/monsters-*.trace.gz were made).
 
 MONSTER_ORACLE = Path(__file__).resolve().parent / "oracle"
-# scenario -> tics known to be in sync when less than the whole trace.  zoo-map02 tic 1419:
-# a lost soul launched by a pain elemental slams into the elemental, whose P_DamageMobj ->
-# A_Chase -> P_Move -> P_TryMove sets p_map.c's global tmthing to the elemental; C's
-# PIT_CheckThing then stops *tmthing* (the elemental: momentum 0, spawn state) and not the
-# soul, but collide.py's pit_check_thing keeps the soul in a local variable.
-MONSTER_SYNCED = {"zoo-map02": 1418}
+# scenario -> tics known to be in sync when less than the whole trace (none today; zoo-map02
+# found that PIT_CheckThing's skull slam must read the global tmthing again, as C does)
+MONSTER_SYNCED = {}
 
 
 @pytest.mark.parametrize("name", __import__("playsim_monster_scenarios").SCENARIOS)

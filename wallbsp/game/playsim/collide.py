@@ -187,6 +187,9 @@ class Collide:
             # a skull slamming into things
             damage = ((self.rng.p_random() % 8) + 1) * tmthing.info.damage
             self.p_damage_mobj(thing, tmthing, tmthing, damage)
+            # C reads the global again: the victim's reaction (A_Chase → P_TryMove) may
+            # have made itself tmthing, and then it, not the skull, stops here
+            tmthing = self.tmthing
             tmthing.flags &= ~info.MF_SKULLFLY
             tmthing.momx = tmthing.momy = tmthing.momz = 0
             self.p_set_mobj_state(tmthing, tmthing.info.spawnstate)
