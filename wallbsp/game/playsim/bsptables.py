@@ -1,4 +1,5 @@
-"""Flat copies of a level's BSP for the hot loops (no DOOM source of its own).
+"""``r_main.c``'s R_PointOnSide and R_PointInSubsector, and flat copies of a level's BSP
+for the hot loops.
 
 ``R_PointInSubsector`` runs for every move tried and ``P_CheckSight`` walks dozens of nodes
 for every monster looking: thousands of node visits a tic.  Unpacking a tuple is quicker
@@ -7,12 +8,15 @@ They are built on first use after a level loads (by whichever loader made the ma
 mapload's WAD lumps or a level of our own) and keyed by the identity of the lists they
 copy.  What they copy never changes during a level: DOOM moves no vertex, node or seg.
 
-``BspTables`` is a base of the mixins that read the tables (``MapLoad``, ``Sight``), so
-either composes without the other.
+``BspTables`` is a base of the mixins that use them (``MapLoad``, ``Sight``), so either
+composes without the other.
 """
-from wallbsp.sim.fixed import wrap32
+import numpy as np
 
-FRACBITS = 16
+from wallbsp.sim.fixed import FRACBITS, fixed_mul, wrap32
+
+NF_SUBSECTOR = 0x8000
+ML_TWOSIDED = 4
 
 
 class BspTables:
@@ -21,6 +25,59 @@ class BspTables:
     # (the list copied, its rows); an instance's own pair replaces these on first use
     nodetable = (None, ())
     sighttable = (None, ())
+    sightarrays = (None, None)
+
+    # ---- r_main.c's walk down the nodes --------------------------------------------------
+
+    def r_point_on_side(self, x, y, node):
+        """R_PointOnSide: 0 (front) or 1 (back) of the node's partition line."""
+        if not node.dx:
+            if x <= node.x:
+                return int(node.dy > 0)
+            return int(node.dy < 0)
+        if not node.dy:
+            if y <= node.y:
+                return int(node.dx < 0)
+            return int(node.dx > 0)
+        dx = wrap32(x - node.x)
+        dy = wrap32(y - node.y)
+        # the sign bits decide quickly when the products' signs differ
+        if (node.dy ^ node.dx ^ dx ^ dy) & 0x80000000:
+            return 1 if (node.dy ^ dx) & 0x80000000 else 0
+        left = fixed_mul(node.dy >> FRACBITS, dx)
+        right = fixed_mul(dy, node.dx >> FRACBITS)
+        return 0 if right < left else 1
+
+    def r_point_in_subsector(self, x, y):
+        """R_PointInSubsector: the subsector holding (x, y), down the map's nodes.
+
+        R_PointOnSide inlined over the node table (bsptables): it runs for every move."""
+        nodes = self.node_table()
+        if not nodes:
+            return self.subsectors[0]          # a single subsector is a special case
+        nodenum = len(nodes) - 1
+        while not nodenum & NF_SUBSECTOR:
+            nx, ny, ndx, ndy, ndxhi, ndyhi, child0, child1 = nodes[nodenum]
+            if not ndx:
+                back = ndy > 0 if x <= nx else ndy < 0
+            elif not ndy:
+                back = ndx < 0 if y <= ny else ndx > 0
+            else:
+                dx = x - nx
+                if not -0x80000000 <= dx <= 0x7FFFFFFF:
+                    dx = wrap32(dx)
+                dy = y - ny
+                if not -0x80000000 <= dy <= 0x7FFFFFFF:
+                    dy = wrap32(dy)
+                if (ndy ^ ndx ^ dx ^ dy) < 0:
+                    back = (ndy ^ dx) < 0       # the products' signs differ
+                else:
+                    # FixedMul of a 16-bit half and a 32-bit value: fits, no wrap
+                    back = (dy * ndxhi) >> FRACBITS >= (ndyhi * dx) >> FRACBITS
+            nodenum = child1 if back else child0
+        return self.subsectors[nodenum & ~NF_SUBSECTOR]
+
+    # ---- the tables ---------------------------------------------------------------------
 
     def node_table(self):
         """Each node as ``(x, y, dx, dy, dx >> 16, dy >> 16, child 0, child 1)``."""
@@ -52,3 +109,30 @@ class BspTables:
             rows.append(tuple(entries))
         self.sighttable = (self.subsectors, rows)
         return rows
+
+    def sight_arrays(self):
+        """``(nodes, subsectors, segs, marks, out, far, sectors)``: the arrays of
+        ``sim.sightwalk.cross_bsp`` (its docstring), a scratch ``out`` with a row per
+        line, and each seg's ``(frontsector, backsector)``."""
+        key, arrays = self.sightarrays
+        if key is self.segs:
+            return arrays
+        nodes = np.array([(n.x, n.y, n.dx, n.dy, n.children[0], n.children[1])
+                          for n in self.nodes], dtype=np.int64).reshape(-1, 6)
+        subsectors = np.array([(s.firstline, s.numlines) for s in self.subsectors],
+                              dtype=np.int64).reshape(-1, 2)
+        rows = []
+        for seg in self.segs:
+            line = seg.linedef
+            v1, v2 = line.v1, line.v2
+            blocks = line.backsector is None or not line.flags & ML_TWOSIDED
+            rows.append((line.id, v1.x, v1.y, v2.x, v2.y, wrap32(v2.x - v1.x),
+                         wrap32(v2.y - v1.y), int(blocks)))
+        segs = np.array(rows, dtype=np.int64).reshape(-1, 8)
+        nlines = max((line.id for line in self.lines), default=-1) + 1
+        arrays = (nodes, subsectors, segs, np.zeros(nlines, dtype=np.int64),
+                  np.zeros((nlines + 1, 2), dtype=np.int64),
+                  np.zeros(len(self.nodes) + 1, dtype=np.int64),
+                  [(seg.frontsector, seg.backsector) for seg in self.segs])
+        self.sightarrays = (self.segs, arrays)
+        return arrays

@@ -1,7 +1,8 @@
 """``p_setup.c``: a map's lumps from a WAD into DOOM's structures (vertexes, sectors,
 sides, lines, subsectors, nodes, segs, the blockmap and the reject matrix, then
-P_GroupLines), the map's things handed to P_SpawnMapThing, and ``r_main.c``'s
-R_PointOnSide / R_PointInSubsector, which walk the WAD's own BSP nodes.
+P_GroupLines) and the map's things handed to P_SpawnMapThing.  ``r_main.c``'s
+R_PointOnSide / R_PointInSubsector, which walk the map's own BSP nodes, are in the base
+class ``BspTables`` (``bsptables.py``).
 
 Per-level state (``init_mapload``, C's globals of p_setup.c): ``vertexes``, ``sectors``,
 ``sides``, ``lines``, ``subsectors``, ``nodes``, ``segs`` (lists of ``structs`` objects,
@@ -19,14 +20,13 @@ R_FlatNumForName compare names case-insensitively).
 import struct
 
 from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACBITS, MAXINT, MININT, c_div, fixed_div, fixed_mul, wrap32
+from wallbsp.sim.fixed import FRACBITS, MAXINT, MININT, c_div, fixed_div, wrap32
 
 from .bsptables import BspTables
 from .structs import (COMMERCIAL, ST_HORIZONTAL, ST_NEGATIVE, ST_POSITIVE, ST_VERTICAL, Line,
                       MapThing, Node, Sector, Seg, Side, Subsector, Vertex)
 
 BOXTOP, BOXBOTTOM, BOXLEFT, BOXRIGHT = range(4)
-NF_SUBSECTOR = 0x8000
 MAXRADIUS = 32 << FRACBITS
 MAPBLOCKSHIFT = FRACBITS + 7
 MAXPLAYERS = 4
@@ -349,56 +349,6 @@ class MapLoad(BspTables):
                     raise MapLoadError(f"P_LoadThings: Player {i + 1} start missing "
                                        f"(vanilla crashes here)")
                 self.playerstartsingame[i] = False
-
-    # ---- the BSP ------------------------------------------------------------------------
-
-    def r_point_on_side(self, x, y, node):
-        """R_PointOnSide: 0 (front) or 1 (back) of the node's partition line."""
-        if not node.dx:
-            if x <= node.x:
-                return int(node.dy > 0)
-            return int(node.dy < 0)
-        if not node.dy:
-            if y <= node.y:
-                return int(node.dx < 0)
-            return int(node.dx > 0)
-        dx = wrap32(x - node.x)
-        dy = wrap32(y - node.y)
-        # the sign bits decide quickly when the products' signs differ
-        if (node.dy ^ node.dx ^ dx ^ dy) & 0x80000000:
-            return 1 if (node.dy ^ dx) & 0x80000000 else 0
-        left = fixed_mul(node.dy >> FRACBITS, dx)
-        right = fixed_mul(dy, node.dx >> FRACBITS)
-        return 0 if right < left else 1
-
-    def r_point_in_subsector(self, x, y):
-        """R_PointInSubsector: the subsector holding (x, y), down the WAD's nodes.
-
-        R_PointOnSide inlined over the node table (bsptables): it runs for every move."""
-        nodes = self.node_table()
-        if not nodes:
-            return self.subsectors[0]          # a single subsector is a special case
-        nodenum = len(nodes) - 1
-        while not nodenum & NF_SUBSECTOR:
-            nx, ny, ndx, ndy, ndxhi, ndyhi, child0, child1 = nodes[nodenum]
-            if not ndx:
-                back = ndy > 0 if x <= nx else ndy < 0
-            elif not ndy:
-                back = ndx < 0 if y <= ny else ndx > 0
-            else:
-                dx = x - nx
-                if not -0x80000000 <= dx <= 0x7FFFFFFF:
-                    dx = wrap32(dx)
-                dy = y - ny
-                if not -0x80000000 <= dy <= 0x7FFFFFFF:
-                    dy = wrap32(dy)
-                if (ndy ^ ndx ^ dx ^ dy) < 0:
-                    back = (ndy ^ dx) < 0       # the products' signs differ
-                else:
-                    # FixedMul of a 16-bit half and a 32-bit value: fits, no wrap
-                    back = (dy * ndxhi) >> FRACBITS >= (ndyhi * dx) >> FRACBITS
-            nodenum = child1 if back else child0
-        return self.subsectors[nodenum & ~NF_SUBSECTOR]
 
 
 def _add_to_box(box, x, y):

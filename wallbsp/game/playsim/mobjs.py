@@ -21,18 +21,21 @@ TICRATE = 35
 CF_NOMOMENTUM = 4              # d_player.h's cheat flag: no sliding at all
 MOBJ_CYCLE_LIMIT = 1000000     # Chocolate Doom's guard against endless zero-tic cycles
 SKYFLATNAME = "F_SKY1"         # skyflatnum: flats are held by name
+S_NULL, MF_SKULLFLY, MF_COUNTKILL = info.S_NULL, info.MF_SKULLFLY, info.MF_COUNTKILL
 
-# A state's action function name as a method name, resolved once per state.
-_ACTION_NAMES = {}
+# Each state as (tics, sprite, frame, nextstate, its action's method name or None): the
+# names resolved by cname once, not at every state change.  Remade when info.STATES is
+# rebound (game.set_fast_monsters).
+_STATE_ROWS = [None, ()]
 
 
-def _action_name(statenum):
-    try:
-        return _ACTION_NAMES[statenum]
-    except KeyError:
-        action = info.STATES[statenum].action
-        name = _ACTION_NAMES[statenum] = cname(action) if action else None
-        return name
+def _state_rows():
+    if _STATE_ROWS[0] is not info.STATES:
+        _STATE_ROWS[1] = tuple((st.tics, st.sprite, st.frame, st.nextstate,
+                                cname(st.action) if st.action else None)
+                               for st in info.STATES)
+        _STATE_ROWS[0] = info.STATES
+    return _STATE_ROWS[1]
 
 
 def _cdiv(a, b):
@@ -46,22 +49,21 @@ class Mobjs(MobjSpawn):
     def p_set_mobj_state(self, mobj, state):
         """Enter ``state`` and every zero-tic state after it, calling each one's action;
         False when the mobj removed itself (reached S_NULL)."""
-        states = info.STATES
+        rows = _state_rows()
         cycles = 0
         while True:
-            if state == info.S_NULL:
-                mobj.state = info.S_NULL
+            if state == S_NULL:
+                mobj.state = S_NULL
                 self.p_remove_mobj(mobj)
                 return False
-            st = states[state]
+            tics, sprite, frame, nextstate, action = rows[state]
             mobj.state = state
-            mobj.tics = st.tics
-            mobj.sprite = st.sprite
-            mobj.frame = st.frame
-            name = _action_name(state)
-            if name is not None:
-                getattr(self, name)(mobj)
-            state = st.nextstate
+            mobj.tics = tics
+            mobj.sprite = sprite
+            mobj.frame = frame
+            if action is not None:
+                getattr(self, action)(mobj)
+            state = nextstate
             if cycles > MOBJ_CYCLE_LIMIT:
                 raise RuntimeError("P_SetMobjState: Infinite state cycle detected!")
             cycles += 1
@@ -220,8 +222,9 @@ class Mobjs(MobjSpawn):
         self.p_remove_mobj(mobj)
 
     def p_mobj_thinker(self, mobj):
+        # (the ticker runs a thing at rest itself: see ticker.p_run_thinkers)
         # momentum movement
-        if mobj.momx or mobj.momy or mobj.flags & info.MF_SKULLFLY:
+        if mobj.momx or mobj.momy or mobj.flags & MF_SKULLFLY:
             self.p_xy_movement(mobj)
             if mobj.func is None:
                 return                  # mobj was removed
@@ -233,10 +236,10 @@ class Mobjs(MobjSpawn):
         if mobj.tics != -1:
             mobj.tics -= 1
             if not mobj.tics:
-                self.p_set_mobj_state(mobj, info.STATES[mobj.state].nextstate)
+                self.p_set_mobj_state(mobj, _state_rows()[mobj.state][3])
             return
         # check for nightmare respawn
-        if not (mobj.flags & info.MF_COUNTKILL):
+        if not (mobj.flags & MF_COUNTKILL):
             return
         if not self.respawnmonsters:
             return
@@ -248,4 +251,3 @@ class Mobjs(MobjSpawn):
         if self.rng.p_random() > 4:
             return
         self.p_nightmare_respawn(mobj)
-

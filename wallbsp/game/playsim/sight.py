@@ -4,11 +4,18 @@ walking the BSP tree along the line between them and narrowing the vertical wind
 line crossed.  DOOM 1.2 and earlier traced through the blockmap instead
 (PTR_SightTraverse), as Chocolate Doom does for those versions.
 
+The walk runs compiled where numba is (``sim.sightwalk``: which lines are crossed depends on
+the map and the two positions only, and the heights are then applied here in DOOM's order);
+``p_cross_bsp_node``/``p_cross_subsector`` are the same walk over the map objects, the
+reference, and what runs without numba (``WALLBSP_KERNELS=numpy``).
+
 State (``init_sight``, set once: C never resets these globals between levels):
 ``sightzstart``, ``topslope``, ``bottomslope``, ``strace`` (the divline from looker to
 target), ``t2x``, ``t2y``, ``sightcounts``.
 """
+from wallbsp.jit import kernels_enabled
 from wallbsp.sim.fixed import FRACBITS, fixed_div, fixed_mul, wrap32
+from wallbsp.sim.sightwalk import cross_bsp
 
 from .bsptables import BspTables
 from .structs import EXE_DOOM_1_2
@@ -111,12 +118,25 @@ class Sight(BspTables):
         strace = self.strace
         sx, sy, sdx, sdy = strace.x, strace.y, strace.dx, strace.dy
         t2x, t2y = self.t2x, self.t2y
+        sdxhi, sdyhi = sdx >> FRACBITS, sdy >> FRACBITS
+        slanted = sdx and sdy
         validcount = self.validcount
         for line, x1, y1, x2, y2, ldx, ldy, front, back in self.sight_table()[num]:
             if line.validcount == validcount:
                 continue                # already checked the other side
             line.validcount = validcount
-            if divline_side(x1, y1, sx, sy, sdx, sdy) == \
+            if slanted:
+                # divline_side of both ends inlined: the sign of right - left is the side
+                # (-1 front, 0 on, 1 back)
+                dx1, dy1, dx2, dy2 = x1 - sx, y1 - sy, x2 - sx, y2 - sy
+                if not (_I32_MIN <= dx1 <= _I32_MAX and _I32_MIN <= dy1 <= _I32_MAX
+                        and _I32_MIN <= dx2 <= _I32_MAX and _I32_MIN <= dy2 <= _I32_MAX):
+                    dx1, dy1, dx2, dy2 = wrap32(dx1), wrap32(dy1), wrap32(dx2), wrap32(dy2)
+                c1 = (dy1 >> FRACBITS) * sdxhi - sdyhi * (dx1 >> FRACBITS)
+                c2 = (dy2 >> FRACBITS) * sdxhi - sdyhi * (dx2 >> FRACBITS)
+                if (c1 > 0) - (c1 < 0) == (c2 > 0) - (c2 < 0):
+                    continue            # line isn't crossed
+            elif divline_side(x1, y1, sx, sy, sdx, sdy) == \
                     divline_side(x2, y2, sx, sy, sdx, sdy):
                 continue                # line isn't crossed
             if divline_side(sx, sy, x1, y1, ldx, ldy) == \
@@ -127,24 +147,9 @@ class Sight(BspTables):
                 return False
             if not line.flags & ML_TWOSIDED:
                 return False            # not two sided anyway
-            ffloor, fceil = front.floorheight, front.ceilingheight
-            bfloor, bceil = back.floorheight, back.ceilingheight
-            if ffloor == bfloor and fceil == bceil:
-                continue                # no wall to block sight with
-            opentop = fceil if fceil < bceil else bceil
-            openbottom = ffloor if ffloor > bfloor else bfloor
-            if openbottom >= opentop:
-                return False            # quick test for totally closed doors
+            # (the fraction is pure: taking it before the heights' tests changes nothing)
             frac = intercept_vector2(sx, sy, sdx, sdy, x1, y1, ldx, ldy)
-            if ffloor != bfloor:
-                slope = fixed_div(_w(openbottom - self.sightzstart), frac)
-                if slope > self.bottomslope:
-                    self.bottomslope = slope
-            if fceil != bceil:
-                slope = fixed_div(_w(opentop - self.sightzstart), frac)
-                if slope < self.topslope:
-                    self.topslope = slope
-            if self.topslope <= self.bottomslope:
+            if not self._narrow_window(front, back, frac):
                 return False
         return True                     # passed the subsector ok
 
@@ -175,12 +180,15 @@ class Sight(BspTables):
                     left = dyhi * (ddx >> FRACBITS)
                     right = (ddy >> FRACBITS) * dxhi
                     t2side = 0 if right < left else 2 if right == left else 1
+                elif not dx:
+                    # a vertical partition: the side of x, by the direction's sign (an
+                    # "on" crosses both sides, the front one first: side 0)
+                    side = 0 if sx == x else dy > 0 if sx < x else dy < 0
+                    t2side = 2 if tx == x else dy > 0 if tx < x else dy < 0
                 else:
-                    side = divline_side(sx, sy, x, y, dx, dy)
-                    t2side = divline_side(tx, ty, x, y, dx, dy)
-                # an "on" should cross both sides (as the front side first)
-                if side == 2:
-                    side = 0
+                    # a horizontal one (DOOM's "on" test compares x with y, sic)
+                    side = 0 if sx == y else dx < 0 if sy <= y else dx > 0
+                    t2side = 2 if tx == y else dx < 0 if ty <= y else dx > 0
                 if side != t2side:
                     far.append(child0 if side else child1)
                 bspnum = child1 if side else child0
@@ -213,5 +221,42 @@ class Sight(BspTables):
         self.t2y = t2.y
         strace.dx = _w(t2.x - t1.x)
         strace.dy = _w(t2.y - t1.y)
+        if self.nodes and kernels_enabled():
+            return self._cross_compiled()
         # the head node is the last node output
         return self.p_cross_bsp_node(len(self.nodes) - 1)
+
+    def _cross_compiled(self):
+        """P_CrossBSPNode from the head node by ``sim.sightwalk``'s compiled walk: the
+        lines crossed come back in DOOM's order, and their heights narrow the window here
+        as P_CrossSubsector narrows it (the lines' validcount marks are the walk's)."""
+        nodes, subsectors, segs, marks, out, far, sectors = self.sight_arrays()
+        strace = self.strace
+        n = cross_bsp(nodes, subsectors, segs, marks, self.validcount, strace.x, strace.y,
+                      self.t2x, self.t2y, out, far)
+        blocked = n < 0
+        for seg, frac in out[:-n - 1 if blocked else n].tolist():
+            if not self._narrow_window(*sectors[seg], frac):
+                return False
+        return not blocked
+
+    def _narrow_window(self, front, back, frac):
+        """P_CrossSubsector's heights at a crossed two-sided line; False if they close
+        the view."""
+        ffloor, fceil = front.floorheight, front.ceilingheight
+        bfloor, bceil = back.floorheight, back.ceilingheight
+        if ffloor == bfloor and fceil == bceil:
+            return True                 # no wall to block sight with
+        opentop = fceil if fceil < bceil else bceil
+        openbottom = ffloor if ffloor > bfloor else bfloor
+        if openbottom >= opentop:
+            return False                # quick test for totally closed doors
+        if ffloor != bfloor:
+            slope = fixed_div(_w(openbottom - self.sightzstart), frac)
+            if slope > self.bottomslope:
+                self.bottomslope = slope
+        if fceil != bceil:
+            slope = fixed_div(_w(opentop - self.sightzstart), frac)
+            if slope < self.topslope:
+                self.topslope = slope
+        return self.topslope > self.bottomslope

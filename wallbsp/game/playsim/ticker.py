@@ -12,7 +12,11 @@ the list and does nothing.
 
 Per-level state: ``init_ticker()`` (the empty list; ``p_init_thinkers`` empties it again).
 """
+from wallbsp.sim import info
+
 from .structs import Thinker
+
+MF_SKULLFLY, MF_COUNTKILL = info.MF_SKULLFLY, info.MF_COUNTKILL
 
 
 class Ticker:
@@ -48,6 +52,7 @@ class Ticker:
 
     def p_run_thinkers(self):
         cap = self.thinkercap
+        mobj_thinker = getattr(type(self), "p_mobj_thinker", None)
         current = cap.next
         while current is not cap:
             func = current.func
@@ -56,12 +61,23 @@ class Ticker:
                 following = current.next
                 current.next.prev = current.prev
                 current.prev.next = current.next
-            else:
-                if func:
-                    func(self, current)
-                # read after the call: the thinker may have added others behind itself
-                following = current.next
-            current = following
+                current = following
+                continue
+            if func is mobj_thinker and not (current.momx or current.momy or current.momz
+                                             or current.flags & MF_SKULLFLY) \
+                    and current.z == current.floorz:
+                # P_MobjThinker of a thing at rest (most things, every tic) inlined: no
+                # movement to make, only its state's clock runs
+                if current.tics != -1:
+                    current.tics -= 1
+                    if not current.tics:
+                        self.p_set_mobj_state(current, info.STATES[current.state].nextstate)
+                elif current.flags & MF_COUNTKILL and self.respawnmonsters:
+                    func(self, current)         # the nightmare respawn's count
+            elif func:
+                func(self, current)
+            # read after the call: the thinker may have added others behind itself
+            current = current.next
 
     # -- the tic ----------------------------------------------------------------------------
     def p_ticker(self):
