@@ -145,3 +145,20 @@ def test_compare_interleaved_refuses_a_baseline_that_imports_itself_by_name(tmp_
                           capture_output=True, text=True, timeout=300, cwd=ROOT)
     assert done.returncode == 2 and done.stdout == ""
     assert "sub.py: imports wallbsp by name" in done.stderr
+
+
+def test_playsim_quick_plays_two_demos_in_sync():
+    result = run_quick("playsim")
+    if not FREEDOOM_BOTH:
+        assert "missing" in result
+        return
+    assert {"machine", "demos", "median_tics_per_second", "median_cpu_tics_per_second",
+            "all_in_sync", "target_tics_per_second", "meets_target", "chocolate_doom",
+            "compiled_sight_walk", "warmup_seconds"} <= result.keys()
+    assert len(result["demos"]) == 2 and result["all_in_sync"]
+    for row in result["demos"]:
+        assert {"wad", "demo", "map", "tics", "seconds", "tics_per_second", "in_sync",
+                "cpu_tics_per_second", "trace_seconds", "first_difference"} <= row.keys()
+        assert row["tics"] == 300 and row["in_sync"] and row["first_difference"] is None
+        assert row["tics_per_second"] > 0
+    assert result["chocolate_doom"] is None            # --quick leaves Chocolate Doom out
