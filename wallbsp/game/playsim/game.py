@@ -86,14 +86,15 @@ class Game:
         self.wad_entries, self.wad_entry_files = [], []
         for path in ((wad_path,) if wad_path is not None else ()) + self.wad_files:
             found = wad_entries(path)
+            if path is wad_path:
+                # the IWAD alone decides the game (as Chocolate Doom identifies it)
+                iwad_names = {entry[0] for entry in found}
             self.wad_entries += found
             self.wad_entry_files += [path] * len(found)
         # name -> index of the last lump of that name (W_GetNumForName)
         self.wad_dir = {entry[0]: i for i, entry in enumerate(self.wad_entries)}
-        # the IWAD alone decides the game (as Chocolate Doom identifies it)
-        iwad = self.wad_entries[:len(self.wad_entries) - sum(
-            1 for f in self.wad_entry_files if f is not wad_path)]
-        self.gamemode, self.gameversion = game_mode({e[0] for e in iwad}, wad_path or "")
+        self.gamemode, self.gameversion = game_mode(iwad_names if wad_path is not None
+                                                    else (), wad_path or "")
         self.rng = Random()
         self.players = [Player() for _ in range(MAXPLAYERS)]
         self.playeringame = [False] * MAXPLAYERS
