@@ -327,10 +327,32 @@ def test_infos_of_every_kind_and_nested_spaces_match_sync(workers, no_leak):
 
 
 def test_workers_started_by_spawn(no_leak):
-    envs = make_vec("wallbsp/Explore-v0", 2, workers=1, context="spawn", **SMALL)
+    envs = make_vec(InfoEnv, 2, workers=1, context="spawn")
     try:
         obs, _ = envs.reset(seed=0)
-        assert obs["rgb"].shape == (2, 24, 32, 3)
-        envs.step(np.array([1, 1]))
+        assert obs["x"].shape == (2, 3)
+        assert envs.step(np.ones((2, 2), np.int64))[4]["_t"].all()
+    finally:
+        envs.close()
+
+
+def test_copy_true_batches_stay_as_handed_out(no_leak):
+    """Kept observations are never overwritten; a batch nothing holds is written again."""
+    envs = make_vec("wallbsp/Explore-v0", 2, workers=1, **SMALL)
+    try:
+        kept = [envs.reset(seed=0)[0]]
+        saved = [{k: v.copy() for k, v in kept[0].items()}]
+        for t in range(6):                            # more batches kept than banks
+            kept.append(envs.step(np.array([t % 14, 1]))[0])
+            saved.append({k: v.copy() for k, v in kept[-1].items()})
+        for obs, copy in zip(kept, saved):
+            assert_same(obs, copy)
+        del kept, saved, obs, copy
+        addresses = set()
+        for t in range(6):                            # nothing kept: the banks in turn
+            obs = envs.step(np.array([1, 1]))[0]
+            addresses.add(obs["rgb"].__array_interface__["data"][0])
+            del obs
+        assert len(addresses) <= 3
     finally:
         envs.close()

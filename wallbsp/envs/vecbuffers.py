@@ -12,13 +12,15 @@ action, reward and info live, in one block of memory that the workers share (or,
 """
 from __future__ import annotations
 
+import os
 import pickle
+from multiprocessing import shared_memory
 
 import numpy as np
 from gymnasium import spaces
 
-__all__ = ["leaves", "leaf_array", "assemble", "values_at", "Layout", "InfoSchema",
-           "add_info", "OVERFLOW_BYTES", "MAX_INFO_KEYS"]
+__all__ = ["leaves", "leaf_array", "assemble", "values_at", "Layout", "SharedBlock",
+           "InfoSchema", "add_info", "OVERFLOW_BYTES", "MAX_INFO_KEYS"]
 
 OVERFLOW_BYTES = 8192          # a pickled info that does not fit the schema, per env
 MAX_INFO_KEYS = 32
@@ -45,17 +47,19 @@ def leaf_array(space) -> tuple[tuple, np.dtype]:
     return tuple(space.shape), np.dtype(space.dtype)
 
 
-def assemble(space, arrays: list, path=()):
+def assemble(space, arrays: list):
     """The value of ``space`` made of its leaves' ``arrays`` (in ``leaves`` order)."""
-    it = iter(arrays)
+    return _build(space, iter(arrays))
 
-    def build(sub):
-        if isinstance(sub, spaces.Dict):
-            return {key: build(s) for key, s in sub.spaces.items()}
-        if isinstance(sub, spaces.Tuple):
-            return tuple(build(s) for s in sub.spaces)
-        return next(it)
-    return build(space)
+
+def _build(space, it):
+    # no closure: a recursive one is a reference cycle, and would keep the arrays alive
+    # until the garbage collector runs (the vector env counts references to its batches)
+    if isinstance(space, spaces.Dict):
+        return {key: _build(sub, it) for key, sub in space.spaces.items()}
+    if isinstance(space, spaces.Tuple):
+        return tuple(_build(sub, it) for sub in space.spaces)
+    return next(it)
 
 
 def values_at(value, paths) -> list:
@@ -71,7 +75,9 @@ def values_at(value, paths) -> list:
 
 class Layout:
     """Named arrays at 64-byte boundaries in one buffer: ``add(name, shape, dtype)``, then
-    ``nbytes`` to allocate and ``views(buffer)`` for ``{name: ndarray}``."""
+    ``nbytes`` to allocate and ``views(buffer)`` for ``{name: ndarray}``.  (numpy keeps
+    the buffer's exporter, e.g. the mmap, as each array's base, so the memory lives as
+    long as any array on it.)"""
 
     def __init__(self):
         self.entries, self.nbytes = [], 0
@@ -85,6 +91,19 @@ class Layout:
     def views(self, buffer) -> dict:
         return {name: np.ndarray(shape, np.dtype(dtype), buffer, offset)
                 for name, shape, dtype, offset in self.entries}
+
+
+class SharedBlock(shared_memory.SharedMemory):
+    """A ``multiprocessing.shared_memory`` block whose mapping is never unmapped by hand:
+    numpy keeps the block's mmap as the base of every array on it, and unmapping under an
+    array a caller still holds would crash the process.  ``close`` closes the file
+    descriptor only; the mapping goes with the last array on it."""
+
+    def close(self):
+        fd = getattr(self, "_fd", -1)
+        if fd >= 0:
+            os.close(fd)
+            self._fd = -1
 
 
 def _kind_of(value):

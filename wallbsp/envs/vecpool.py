@@ -25,13 +25,13 @@ import time
 
 import numpy as np
 
+from wallbsp.envs.vecbuffers import SharedBlock
 from wallbsp.envs.workers import FAILED, HEAD, TAIL, WAITING, WANT, WorkerError, run_worker
 
 __all__ = ["ProcessPool"]
 
 CHECK_S = 0.05           # a waiting caller looks at its workers' health this often
 CLOSE_S = 5.0            # how long close() waits for workers to stop by themselves
-_LINGERING = []          # mappings still viewed by arrays a caller kept (already unlinked)
 SEGMENTS = collections.deque(maxlen=256)    # the names this process created, newest last
 
 
@@ -71,8 +71,7 @@ class ProcessPool:
                 [space for reply in replies for space in reply[5]])
 
     def attach(self, layout, observation_space, action_space) -> dict:
-        from multiprocessing import shared_memory
-        self.memory = shared_memory.SharedMemory(create=True, size=max(layout.nbytes, 1))
+        self.memory = SharedBlock(create=True, size=max(layout.nbytes, 1))
         SEGMENTS.append(self.memory.name)
         arrays = self.arrays = layout.views(self.memory.buf)
         arrays["seed"][:] = -1
@@ -250,13 +249,7 @@ class ProcessPool:
                 memory.unlink()
             except FileNotFoundError:
                 pass
-        _LINGERING.append(memory)
-        for kept in list(_LINGERING):
-            try:
-                kept.close()
-                _LINGERING.remove(kept)
-            except BufferError:                  # a caller still holds arrays on it
-                pass
+        memory.close()            # the mapping goes with the last array a caller holds
 
 
 def _seed(seed) -> str:

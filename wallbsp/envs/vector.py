@@ -27,6 +27,7 @@ the info encoding in ``vecbuffers``.
 from __future__ import annotations
 
 import os
+import sys
 
 import numpy as np
 from gymnasium.vector import AutoresetMode, VectorEnv
@@ -35,9 +36,11 @@ from gymnasium.vector.utils import batch_space
 from wallbsp.envs.vecbuffers import (MAX_INFO_KEYS, OVERFLOW_BYTES, InfoSchema, Layout,
     add_info, assemble, leaf_array, leaves, read_overflow, values_at)
 from wallbsp.envs.vecpool import ProcessPool
-from wallbsp.envs.workers import LocalPool, WorkerError
+from wallbsp.envs.workers import BANK, LocalPool, WorkerError
 
 __all__ = ["make_vec", "WallbspVectorEnv", "WorkerError"]
+
+BANKS = 3        # copy=True: batches handed out in turn, each reused once nothing holds it
 
 
 def make_vec(env_id, num_envs: int = 1, workers=None, batch_size=None, copy: bool = True,
@@ -81,18 +84,25 @@ class WallbspVectorEnv(VectorEnv):
             self.action_space = batch_space(act_space, num_envs)
             self.metadata = {**metadata, "autoreset_mode": AutoresetMode.NEXT_STEP}
             self.render_mode = render_mode
-            self.arrays = self.pool.attach(_layout(obs_space, act_space, num_envs,
-                                                   max(workers, 1)), obs_space, act_space)
+            self.nbanks = BANKS + 1 if self.copy else 1       # + one never handed out
+            self.arrays = self.pool.attach(
+                _layout(obs_space, act_space, num_envs, max(workers, 1), self.nbanks),
+                obs_space, act_space)
         except BaseException:
             self.pool.close(terminate=True)
             raise
         self.closed = False
-        self.obs_leaves = [self.arrays[f"obs{i}"] for i in range(len(leaves(obs_space)))]
+        count = len(leaves(obs_space))
+        self.banks = [[self.arrays[f"obs{i}.{b}"] for i in range(count)]
+                      for b in range(self.nbanks)]
+        self.spare = self.nbanks - 1          # where async steps and unlucky batches go
+        self.bank = 0                         # the bank of the latest whole batch
         self.act_paths = [p for p, _ in leaves(act_space)]
         self.act_leaves = [self.arrays[f"act{i}"] for i in range(len(self.act_paths))]
         self.in_flight = np.zeros(num_envs, dtype=np.bool_)
         self.schema = None
         self.all = np.arange(num_envs, dtype=np.int64)
+        self.held = [self._holds(b) for b in range(self.nbanks)]
 
     # -- the gymnasium API ------------------------------------------------------------
     def reset(self, *, seed=None, options=None):
@@ -112,10 +122,16 @@ class WallbspVectorEnv(VectorEnv):
             ids = self.all[_reset_mask(options.pop("reset_mask"), self.num_envs)]
         with self._guard():
             self._drain()
+            last = self.bank
+            bank = self._free_bank()
+            if len(ids) < self.num_envs and bank != last:
+                others = np.setdiff1d(self.all, ids)
+                for new, old in zip(self.banks[bank], self.banks[last]):
+                    new[others] = old[others]
             self.pool.send_resets({int(e): seeds[e] for e in ids}, options)
             self.pool.wait(len(ids))
             infos = self._infos(ids, self.num_envs, positions=ids)
-        return self._observations(), infos
+        return self._observations(bank), infos
 
     def step(self, actions):
         self._usable()
@@ -125,11 +141,12 @@ class WallbspVectorEnv(VectorEnv):
         for leaf, value in zip(self.act_leaves, values_at(actions, self.act_paths)):
             leaf[...] = value
         with self._guard():
+            bank = self._free_bank()
             self.pool.send_steps(None)
             self.pool.wait(self.num_envs)
             infos = self._infos(None, self.num_envs)
         a = self.arrays
-        return (self._observations(), a["reward"].copy(), a["terminated"].copy(),
+        return (self._observations(bank), a["reward"].copy(), a["terminated"].copy(),
                 a["truncated"].copy(), infos)
 
     def send(self, actions, env_id=None) -> None:
@@ -147,6 +164,7 @@ class WallbspVectorEnv(VectorEnv):
         for leaf, value in zip(self.act_leaves, values_at(actions, self.act_paths)):
             leaf[ids] = value
         self.in_flight[ids] = True
+        self.arrays["counters"][BANK] = self.bank = self.spare
         with self._guard():
             self.pool.send_steps(None if env_id is None else ids)
 
@@ -163,7 +181,8 @@ class WallbspVectorEnv(VectorEnv):
             infos = self._infos(ids, self.batch_size)
         self.in_flight[ids] = False
         a = self.arrays
-        obs = assemble(self.single_observation_space, [leaf[ids] for leaf in self.obs_leaves])
+        obs = assemble(self.single_observation_space,
+                       [leaf[ids] for leaf in self.banks[self.spare]])
         infos["env_id"] = ids.astype(np.int32)
         infos["_env_id"] = np.ones(len(ids), dtype=np.bool_)
         return obs, a["reward"][ids], a["terminated"][ids], a["truncated"][ids], infos
@@ -177,6 +196,7 @@ class WallbspVectorEnv(VectorEnv):
                  if isinstance(seed, (int, np.integer)) else list(seed))
         with self._guard():
             self._drain()
+            self.arrays["counters"][BANK] = self.bank = self.spare
             self.pool.send_resets(dict(enumerate(seeds)), options)
         self.in_flight[:] = True
 
@@ -216,7 +236,7 @@ class WallbspVectorEnv(VectorEnv):
         return self.get_attr("np_random")
 
     def close_extras(self, terminate: bool = False, **kwargs) -> None:
-        self.arrays = self.obs_leaves = self.act_leaves = None    # views of the memory
+        self.arrays = self.banks = self.act_leaves = None         # views of the memory
         self.pool.close(terminate=terminate)
 
     def __del__(self):
@@ -240,9 +260,30 @@ class WallbspVectorEnv(VectorEnv):
             self.pool.wait(running)
             self.in_flight[:] = False
 
-    def _observations(self):
-        leaves_ = [leaf.copy() for leaf in self.obs_leaves] if self.copy else self.obs_leaves
-        return assemble(self.single_observation_space, leaves_)
+    def _free_bank(self) -> int:
+        """The bank the next whole batch goes to (told to the workers): with ``copy=True``
+        the next one nothing outside holds an array of, else the spare (copied out)."""
+        bank = 0
+        if self.copy:
+            bank = self.spare
+            for k in range(1, self.spare + 1):
+                b = (self.bank + k) % self.spare
+                if self._holds(b) == self.held[b]:
+                    bank = b
+                    break
+        self.arrays["counters"][BANK] = self.bank = bank
+        return bank
+
+    def _holds(self, bank: int) -> int:
+        """References to the bank's arrays: a view handed out (and any view of it: numpy
+        makes the bank's array their base) adds one."""
+        return sum(sys.getrefcount(leaf) for leaf in self.banks[bank])
+
+    def _observations(self, bank: int):
+        arrays = self.banks[bank]
+        if self.copy:
+            arrays = [leaf.copy() if bank == self.spare else leaf[...] for leaf in arrays]
+        return assemble(self.single_observation_space, arrays)
 
     def _infos(self, rows, size: int, positions=None) -> dict:
         """gymnasium's infos of the environments ``rows`` (None: all, in order), at
@@ -294,11 +335,12 @@ def _reset_mask(mask, num_envs: int) -> np.ndarray:
     return mask
 
 
-def _layout(obs_space, act_space, n: int, workers: int) -> Layout:
+def _layout(obs_space, act_space, n: int, workers: int, banks: int) -> Layout:
     layout = Layout()
-    for i, (_, space) in enumerate(leaves(obs_space)):
-        shape, dtype = leaf_array(space)
-        layout.add(f"obs{i}", (n, *shape), dtype)
+    for b in range(banks):
+        for i, (_, space) in enumerate(leaves(obs_space)):
+            shape, dtype = leaf_array(space)
+            layout.add(f"obs{i}.{b}", (n, *shape), dtype)
     for i, (_, space) in enumerate(leaves(act_space)):
         shape, dtype = leaf_array(space)
         layout.add(f"act{i}", (n, *shape), dtype)

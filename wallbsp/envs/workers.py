@@ -23,12 +23,12 @@ import traceback
 
 import numpy as np
 
-from wallbsp.envs.vecbuffers import assemble, leaves, values_at, write_overflow
+from wallbsp.envs.vecbuffers import SharedBlock, assemble, leaves, values_at, write_overflow
 
 __all__ = ["Stepper", "LocalPool", "WorkerError", "run_worker", "make_env", "TAIL", "HEAD",
-           "WANT", "WAITING", "FAILED"]
+           "WANT", "WAITING", "FAILED", "BANK"]
 
-TAIL, HEAD, WANT, WAITING, FAILED = range(5)      # the "counters" array
+TAIL, HEAD, WANT, WAITING, FAILED, BANK = range(6)     # the "counters" array
 POLL_S = 1.0                                      # an idle worker checks its parent this often
 
 
@@ -64,7 +64,10 @@ class Stepper:
                  local: bool = False):
         self.envs = envs
         self.obs_paths = [p for p, _ in leaves(observation_space)]
-        self.obs = [arrays[f"obs{i}"] for i in range(len(self.obs_paths))]
+        banks = sum(1 for name in arrays if name.startswith("obs0."))
+        self.banks = [[arrays[f"obs{i}.{b}"] for i in range(len(self.obs_paths))]
+                      for b in range(banks)]
+        self.counters = arrays["counters"]
         self.act_space = action_space
         act_leaves = leaves(action_space)
         self.acts = [arrays[f"act{i}"] for i in range(len(act_leaves))]
@@ -102,7 +105,7 @@ class Stepper:
         self.write(e, obs, 0.0, False, False, info)
 
     def write(self, e, obs, reward, terminated, truncated, info) -> None:
-        for array, value in zip(self.obs, values_at(obs, self.obs_paths)):
+        for array, value in zip(self.banks[self.counters[BANK]], values_at(obs, self.obs_paths)):
             array[e] = value
         self.reward[e], self.terminated[e], self.truncated[e] = reward, terminated, truncated
         if self.local:
@@ -223,16 +226,12 @@ def run_worker(index: int, env_ids, maker, options, conn, wake, ready, lock, par
         if message[0] != "attach":
             return
         _, name, layout, observation_space, action_space = message
-        from multiprocessing import shared_memory
-        memory = shared_memory.SharedMemory(name=name)
+        memory = SharedBlock(name=name)
         try:
             _serve(index, envs, layout.views(memory.buf), observation_space, action_space,
                    conn, wake, ready, lock, parent)
         finally:
-            try:
-                memory.close()
-            except BufferError:
-                pass
+            memory.close()
     except (EOFError, BrokenPipeError, KeyboardInterrupt):
         pass                                    # the caller went away: nothing to say
     finally:
