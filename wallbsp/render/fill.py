@@ -24,6 +24,7 @@ import numpy as np
 from wallbsp.jit import kernel, step_kernel
 from wallbsp.render.frame import KIND_CEILING, KIND_WALL
 from wallbsp.render.shading import FULL_BRIGHT, UNLIT, far_level, light_level, plane_level
+from wallbsp.render.textures import FLAT_SIDE
 
 __all__ = ["paint_textured", "paint_flat", "part_rows", "FIX"]
 
@@ -31,7 +32,7 @@ FIX = 19                       # fraction bits of texture rows in int32 fixed po
 FIX_ONE = float(1 << FIX)
 FIX_LIMIT = float(1 << (31 - FIX))     # leaving rows (and steps) below 4096 texels
 INT32_MIN = -(1 << 31)
-FLAT_MASK = 63                 # flats are 64 × 64
+FLAT_MASK = FLAT_SIDE - 1      # a flat's texel (x, y) is at x * 64 + y
 
 
 @step_kernel

@@ -14,7 +14,7 @@ from typing import NamedTuple
 import numpy as np
 
 from wallbsp.camera import Projection, column_angles
-from wallbsp.jit import step_kernel
+from wallbsp.jit import kernel, step_kernel
 
 __all__ = ["NEAR", "View", "view_of", "project_seg", "box_columns", "sky_columns",
            "FLAT_OFFSET"]
@@ -58,7 +58,7 @@ def view_of(view: Projection) -> View:
                 view.x + FLAT_OFFSET, FLAT_OFFSET - view.y)
 
 
-@step_kernel
+@kernel
 def project_seg(view, x1, y1, x2, y2, out):
     """A seg seen with ``(x1, y1)`` on the left, into ``out``: columns ``[c1, c2)`` and
     ``1/depth = A + B*u`` as ``(c1, c2, A, B)``; False when it covers no column."""

@@ -17,13 +17,13 @@ from __future__ import annotations
 
 import numpy as np
 
+from wallbsp.assets.pictures import LIGHT_LEVELS
 from wallbsp.jit import kernel, step_kernel
 
 __all__ = ["LIGHT_LEVELS", "LIGHT_DISTANCE", "FULL_BRIGHT", "UNLIT", "far_level",
            "light_level", "plane_level", "key_light", "hex_rgb", "pack_rgb",
            "scaled_colour", "scaled_rgb", "lit_palette", "colour_table"]
 
-LIGHT_LEVELS = 32
 FULL_BRIGHT = LIGHT_LEVELS - 1
 UNLIT = LIGHT_LEVELS           # lut row of a texel's own colour (light=False, textured)
 LIGHT_DISTANCE = 1280.0        # levels gained = LIGHT_DISTANCE / depth (DOOM's scalelight)

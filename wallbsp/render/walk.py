@@ -85,26 +85,16 @@ def _eye_side(tree, node, view, tol, known):
 
 
 @step_kernel
-def _bisect_right(values, count, x):
+def _bisect(values, count, x, right):
+    """Where ``x`` goes in the sorted ``values[:count]``: after its equals (``right``) or
+    before them."""
     lo, hi = 0, count
     while lo < hi:
         mid = (lo + hi) // 2
-        if x < values[mid]:
+        if x < values[mid] or (not right and x == values[mid]):
             hi = mid
         else:
             lo = mid + 1
-    return lo
-
-
-@step_kernel
-def _bisect_left(values, count, x):
-    lo, hi = 0, count
-    while lo < hi:
-        mid = (lo + hi) // 2
-        if values[mid] < x:
-            lo = mid + 1
-        else:
-            hi = mid
     return lo
 
 
@@ -112,8 +102,8 @@ def _bisect_left(values, count, x):
 def close_span(starts, ends, count, c1, c2):
     """Merge the closed span ``[c1, c2)`` into the list (the eight cases of Gordon & Chen's
     Fig. 9 in one); the new count."""
-    lo = _bisect_left(ends, count, c1)             # first interval ending at or after c1
-    hi = _bisect_right(starts, count, c2) - 1      # last interval starting at or before c2
+    lo = _bisect(ends, count, c1, False)             # first interval ending at or after c1
+    hi = _bisect(starts, count, c2, True) - 1      # last interval starting at or before c2
     if lo > hi:
         for k in range(count, lo, -1):
             starts[k], ends[k] = starts[k - 1], ends[k - 1]
@@ -130,7 +120,7 @@ def close_span(starts, ends, count, c1, c2):
 @step_kernel
 def open_spans(starts, ends, count, c1, c2, spans):
     """The still-open parts of ``[c1, c2)``, left to right, into ``spans``; how many."""
-    i = _bisect_right(starts, count, c1) - 1
+    i = _bisect(starts, count, c1, True) - 1
     if ends[i] > c1:
         c1 = ends[i]
     n = 0
@@ -177,6 +167,15 @@ def _append(values, n, x):
     return values, n + 1
 
 
+@step_kernel
+def _stack(n_nodes, root):
+    """The walk's stack with the root on it (a tree may have no node): ``(stack, how many
+    items are on it)``."""
+    stack = np.empty(3 * n_nodes + 4, dtype=np.int64)
+    stack[0] = root
+    return stack, 1 if root >= 0 else 0
+
+
 @kernel
 def front_to_back(view, tol, root, tree, boxes, solid, known):
     """``(unsure node or -1, pieces (n, 5), leaves, nodes visited, segs drawn, early
@@ -188,11 +187,7 @@ def front_to_back(view, tol, root, tree, boxes, solid, known):
     stops = np.empty(width + 4, dtype=np.int64)
     starts[0], stops[0], starts[1], stops[1] = -FAR, 0, width, FAR
     count = 2
-    stack = np.empty(3 * n_nodes + 4, dtype=np.int64)
-    top = 0
-    if root >= 0:
-        stack[0] = root
-        top = 1
+    stack, top = _stack(n_nodes, root)
     pieces = np.empty((64, 5), dtype=np.float64)
     n_pieces = 0
     leaves = np.empty(64, dtype=np.int64)
@@ -211,7 +206,7 @@ def front_to_back(view, tol, root, tree, boxes, solid, known):
         if item >= 0:
             if not box_columns(view, boxes[item], span):
                 continue
-            if stops[_bisect_right(starts, count, span[0]) - 1] >= span[1]:
+            if stops[_bisect(starts, count, span[0], True) - 1] >= span[1]:
                 continue                          # hidden behind one closed interval
             visited += 1
             s = _eye_side(tree, item, view, tol, known)
@@ -266,11 +261,7 @@ def front_to_back(view, tol, root, tree, boxes, solid, known):
 def back_to_front(view, tol, root, tree, known):
     """``(unsure node or -1, pieces (n, 5), nodes visited)``: the painter's walk."""
     n_nodes = tree.lines.shape[0]
-    stack = np.empty(3 * n_nodes + 4, dtype=np.int64)
-    top = 0
-    if root >= 0:
-        stack[0] = root
-        top = 1
+    stack, top = _stack(n_nodes, root)
     pieces = np.empty((64, 5), dtype=np.float64)
     n_pieces = 0
     seen = np.empty(4, dtype=np.float64)
