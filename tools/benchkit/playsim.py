@@ -11,8 +11,8 @@ work on the machine does not lower).  After each tic, untimed, the trace line
 compared with Chocolate Doom's in ``tests/oracle/``: a demo is in sync when every line
 matches to the last one; the trace's own time is reported apart.  A demo's rate is the median
 over the runs; the target (issue 20) is a median over the 8 demos of ≥ 2,000 tics/s.  Before
-timing, 35 tics of freedoom1's DEMO1 are played once, untimed: numba loads the compiled sight
-walk (``wallbsp.sim.sightwalk``) on its first call in a process.
+timing, 35 tics of freedoom1's DEMO1 are played once, untimed: numba loads the compiled node
+walks (``wallbsp.sim.nodewalks``) on their first call in a process.
 
 Chocolate Doom (when ``chocolate-doom`` is installed, not with --quick): ``-timedemo demoN``
 with SDL's dummy video and audio drivers and HOME a temporary folder; it prints "timed N

@@ -13,6 +13,8 @@ composes without the other.
 """
 import numpy as np
 
+from wallbsp.jit import kernels_enabled
+from wallbsp.sim import nodewalks
 from wallbsp.sim.fixed import FRACBITS, fixed_mul, wrap32
 
 NF_SUBSECTOR = 0x8000
@@ -25,7 +27,8 @@ class BspTables:
     # (the list copied, its rows); an instance's own pair replaces these on first use
     nodetable = (None, ())
     sighttable = (None, ())
-    sightarrays = (None, None)
+    nodearray = (None, None)
+    sightarrays = ((None, None, None), None)
 
     # ---- r_main.c's walk down the nodes --------------------------------------------------
 
@@ -51,10 +54,13 @@ class BspTables:
     def r_point_in_subsector(self, x, y):
         """R_PointInSubsector: the subsector holding (x, y), down the map's nodes.
 
-        R_PointOnSide inlined over the node table (bsptables): it runs for every move."""
-        nodes = self.node_table()
-        if not nodes:
+        R_PointOnSide inlined over the node table: it runs for every move.  Compiled where
+        numba is (``sim.nodewalks``)."""
+        if not self.nodes:
             return self.subsectors[0]          # a single subsector is a special case
+        if kernels_enabled():
+            return self.subsectors[nodewalks.point_in_subsector(self.node_array(), x, y)]
+        nodes = self.node_table()
         nodenum = len(nodes) - 1
         while not nodenum & NF_SUBSECTOR:
             nx, ny, ndx, ndy, ndxhi, ndyhi, child0, child1 = nodes[nodenum]
@@ -110,15 +116,25 @@ class BspTables:
         self.sighttable = (self.subsectors, rows)
         return rows
 
+    def node_array(self):
+        """The nodes as ``sim.nodewalks`` reads them: ``(x, y, dx, dy, child 0, child 1)``
+        rows of int64."""
+        nodes, array = self.nodearray
+        if nodes is self.nodes:
+            return array
+        array = np.array([(n.x, n.y, n.dx, n.dy, n.children[0], n.children[1])
+                          for n in self.nodes], dtype=np.int64).reshape(-1, 6)
+        self.nodearray = (self.nodes, array)
+        return array
+
     def sight_arrays(self):
         """``(nodes, subsectors, segs, marks, out, far, sectors)``: the arrays of
-        ``sim.sightwalk.cross_bsp`` (its docstring), a scratch ``out`` with a row per
+        ``sim.nodewalks.cross_bsp`` (its docstring), a scratch ``out`` with a row per
         line, and each seg's ``(frontsector, backsector)``."""
-        key, arrays = self.sightarrays
-        if key is self.segs:
+        (nodes, subsectors, segs), arrays = self.sightarrays
+        if nodes is self.nodes and subsectors is self.subsectors and segs is self.segs:
             return arrays
-        nodes = np.array([(n.x, n.y, n.dx, n.dy, n.children[0], n.children[1])
-                          for n in self.nodes], dtype=np.int64).reshape(-1, 6)
+        nodes = self.node_array()
         subsectors = np.array([(s.firstline, s.numlines) for s in self.subsectors],
                               dtype=np.int64).reshape(-1, 2)
         rows = []
@@ -134,5 +150,5 @@ class BspTables:
                   np.zeros((nlines + 1, 2), dtype=np.int64),
                   np.zeros(len(self.nodes) + 1, dtype=np.int64),
                   [(seg.frontsector, seg.backsector) for seg in self.segs])
-        self.sightarrays = (self.segs, arrays)
+        self.sightarrays = ((self.nodes, self.subsectors, self.segs), arrays)
         return arrays

@@ -81,10 +81,17 @@ class Collide:
         xh = (box[BOXRIGHT] - self.bmaporgx + MAXRADIUS) >> MAPBLOCKSHIFT
         yl = (box[BOXBOTTOM] - self.bmaporgy - MAXRADIUS) >> MAPBLOCKSHIFT
         yh = (box[BOXTOP] - self.bmaporgy + MAXRADIUS) >> MAPBLOCKSHIFT
+        links = self.blocklinks
         for bx in range(xl, xh + 1):
             for by in range(yl, yh + 1):
-                if not self.p_block_things_iterator(bx, by, func):
-                    return False
+                # P_BlockThingsIterator inlined (the next link is read after the call)
+                if bx < 0 or by < 0 or bx >= self.bmapwidth or by >= self.bmapheight:
+                    continue
+                mobj = links[by * self.bmapwidth + bx]
+                while mobj:
+                    if not func(mobj):
+                        return False
+                    mobj = mobj.bnext
         return True
 
     # ---- teleport move ------------------------------------------------------------------
@@ -243,12 +250,39 @@ class Collide:
         xh = (box[BOXRIGHT] - self.bmaporgx) >> MAPBLOCKSHIFT
         yl = (box[BOXBOTTOM] - self.bmaporgy) >> MAPBLOCKSHIFT
         yh = (box[BOXTOP] - self.bmaporgy) >> MAPBLOCKSHIFT
-        check_line = self.pit_check_line
         for bx in range(xl, xh + 1):
             for by in range(yl, yh + 1):
-                if not self.p_block_lines_iterator(bx, by, check_line):
+                if not self._check_block_lines(bx, by):
                     return False
         return True
+
+    def _check_block_lines(self, x, y):
+        """P_BlockLinesIterator(x, y, PIT_CheckLine) with PIT_CheckLine's first test (the
+        line's box does not touch tmbbox: keep going) made here, before the call: most
+        lines of a block are nowhere near the thing.  tmbbox is read for every line, as C
+        reads it (the spechit overrun can write it)."""
+        if x < 0 or y < 0 or x >= self.bmapwidth or y >= self.bmapheight:
+            return True
+        box = self.tmbbox
+        lump = self.blockmaplump
+        lines = self.lines
+        validcount = self.validcount
+        i = lump[self.blockmap + y * self.bmapwidth + x]
+        while True:
+            num = lump[i]
+            if num == -1:
+                return True
+            i += 1
+            ld = lines[num]
+            if ld.validcount == validcount:
+                continue                # already checked
+            ld.validcount = validcount
+            top, bottom, left, right = ld.bbox
+            if (box[BOXRIGHT] <= left or box[BOXLEFT] >= right
+                    or box[BOXTOP] <= bottom or box[BOXBOTTOM] >= top):
+                continue
+            if not self.pit_check_line(ld):
+                return False
 
     def p_try_move(self, thing, x, y):
         """Moves the thing to x, y if it fits, crossing special lines unless

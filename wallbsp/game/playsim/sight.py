@@ -4,7 +4,7 @@ walking the BSP tree along the line between them and narrowing the vertical wind
 line crossed.  DOOM 1.2 and earlier traced through the blockmap instead
 (PTR_SightTraverse), as Chocolate Doom does for those versions.
 
-The walk runs compiled where numba is (``sim.sightwalk``: which lines are crossed depends on
+The walk runs compiled where numba is (``sim.nodewalks``: which lines are crossed depends on
 the map and the two positions only, and the heights are then applied here in DOOM's order);
 ``p_cross_bsp_node``/``p_cross_subsector`` are the same walk over the map objects, the
 reference, and what runs without numba (``WALLBSP_KERNELS=numpy``).
@@ -15,7 +15,7 @@ target), ``t2x``, ``t2y``, ``sightcounts``.
 """
 from wallbsp.jit import kernels_enabled
 from wallbsp.sim.fixed import FRACBITS, fixed_div, fixed_mul, wrap32
-from wallbsp.sim.sightwalk import cross_bsp
+from wallbsp.sim import nodewalks
 
 from .bsptables import BspTables
 from .structs import EXE_DOOM_1_2
@@ -227,13 +227,14 @@ class Sight(BspTables):
         return self.p_cross_bsp_node(len(self.nodes) - 1)
 
     def _cross_compiled(self):
-        """P_CrossBSPNode from the head node by ``sim.sightwalk``'s compiled walk: the
+        """P_CrossBSPNode from the head node by ``sim.nodewalks``'s compiled walk: the
         lines crossed come back in DOOM's order, and their heights narrow the window here
         as P_CrossSubsector narrows it (the lines' validcount marks are the walk's)."""
         nodes, subsectors, segs, marks, out, far, sectors = self.sight_arrays()
         strace = self.strace
-        n = cross_bsp(nodes, subsectors, segs, marks, self.validcount, strace.x, strace.y,
-                      self.t2x, self.t2y, out, far)
+        # (read from the module each time: numba puts the compiled walk there on first use)
+        n = nodewalks.cross_bsp(nodes, subsectors, segs, marks, self.validcount, strace.x,
+                                strace.y, self.t2x, self.t2y, out, far)
         blocked = n < 0
         for seg, frac in out[:-n - 1 if blocked else n].tolist():
             if not self._narrow_window(*sectors[seg], frac):

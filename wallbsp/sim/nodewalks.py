@@ -1,6 +1,7 @@
-"""The geometric half of DOOM's ``P_CheckSight`` (``p_sight.c``: ``P_CrossBSPNode`` and
-``P_CrossSubsector``) compiled: which lines the sight line from the looker to the target
-crosses, in the order DOOM meets them, and where (the ``frac`` of ``P_InterceptVector2``).
+"""DOOM's walks down a map's BSP nodes, compiled: ``R_PointInSubsector`` (``r_main.c``), and
+the geometric half of ``P_CheckSight`` (``p_sight.c``: ``P_CrossBSPNode`` and
+``P_CrossSubsector``): which lines the sight line from the looker to the target crosses, in
+the order DOOM meets them, and where (the ``frac`` of ``P_InterceptVector2``).
 
 Which lines DOOM's walk crosses depends on the map's nodes, segs and lines and on the two
 positions only; the sectors' heights (which move) matter only once a line is crossed, to
@@ -22,7 +23,8 @@ The arrays (made by ``game.playsim.bsptables``, all int64):
 
 Fixed-point arithmetic as ``sim.fixed`` (FixedMul, FixedDiv with vanilla's overflow rule,
 C's 32-bit wrap-around), in int64.  The interpreter runs the same code where numba is absent,
-but ``sight.py``'s own walk over the map objects is the reference used then.
+but ``sight.py``'s and ``bsptables.py``'s own walks over the map objects are the reference
+used then.
 """
 from __future__ import annotations
 
@@ -88,6 +90,28 @@ def _intercept_frac(sx, sy, sdx, sdy, x1, y1, ldx, ldy):
     num = _wrap32(_fixed_mul(_wrap32(x1 - sx) >> 8, ldy)
                   + _fixed_mul(_wrap32(sy - y1) >> 8, ldx))
     return _fixed_div(num, den)
+
+
+@kernel
+def point_in_subsector(nodes, x, y):
+    """R_PointInSubsector: the number of the subsector holding (x, y) (R_PointOnSide at
+    each node, its quick sign test included; the nodes must not be empty)."""
+    nodenum = nodes.shape[0] - 1
+    while not nodenum & NF_SUBSECTOR:
+        nx, ny, ndx, ndy = nodes[nodenum, 0], nodes[nodenum, 1], nodes[nodenum, 2], nodes[nodenum, 3]
+        if ndx == 0:
+            back = ndy > 0 if x <= nx else ndy < 0
+        elif ndy == 0:
+            back = ndx < 0 if y <= ny else ndx > 0
+        else:
+            dx = _wrap32(x - nx)
+            dy = _wrap32(y - ny)
+            if (ndy ^ ndx ^ dx ^ dy) < 0:
+                back = (ndy ^ dx) < 0   # the products' signs differ
+            else:
+                back = _fixed_mul(dy, ndx >> 16) >= _fixed_mul(ndy >> 16, dx)
+        nodenum = nodes[nodenum, 5 if back else 4]
+    return nodenum & ~NF_SUBSECTOR
 
 
 @kernel
