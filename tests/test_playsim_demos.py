@@ -28,9 +28,9 @@ SYNCED_TICS = {
     ("freedoom2", 3): 2593,
     ("freedoom2", 4): 1842,
 }
-# the suite plays at most this many tics of a demo (the whole demos take ~25 s of CPU);
+# the suite plays at most this many tics of a demo (all of every demo takes ~25 s of CPU);
 # WALLBSP_FULL_DEMOS=1 plays every synced tic
-TEST_TICS = None if os.environ.get("WALLBSP_FULL_DEMOS") else 2000
+TEST_TICS = None if os.environ.get("WALLBSP_FULL_DEMOS") else 1200
 # demos (skills, maps) and tic counts of the traces: see shared/oracle/README.md
 TRACE_TICS = {("freedoom1", 1): 1531, ("freedoom1", 2): 2763, ("freedoom1", 3): 1241,
               ("freedoom1", 4): 6467, ("freedoom2", 1): 1415, ("freedoom2", 2): 4785,
