@@ -53,8 +53,9 @@ class MapUtil:
             return int(ldx > 0)
         dx = _w(x - v1.x)
         dy = _w(y - v1.y)
-        left = fixed_mul(ldy >> FRACBITS, dx)
-        right = fixed_mul(dy, ldx >> FRACBITS)
+        # FixedMul of a 16-bit half and a 32-bit value: the product fits, no wrap
+        left = ((ldy >> FRACBITS) * dx) >> FRACBITS
+        right = (dy * (ldx >> FRACBITS)) >> FRACBITS
         return 0 if right < left else 1
 
     def p_box_on_line_side(self, tmbox, ld):
@@ -99,8 +100,9 @@ class MapUtil:
         # negative exactly when C's sign bit test is set)
         if (ldy ^ ldx ^ dx ^ dy) < 0:
             return 1 if (ldy ^ dx) < 0 else 0       # (left is negative)
-        left = fixed_mul(ldy >> 8, dx >> 8)
-        right = fixed_mul(dy >> 8, ldx >> 8)
+        # FixedMul of two 24-bit values: the product fits, no wrap
+        left = ((ldy >> 8) * (dx >> 8)) >> FRACBITS
+        right = ((dy >> 8) * (ldx >> 8)) >> FRACBITS
         return 0 if right < left else 1
 
     def p_make_divline(self, li, dl):
