@@ -10,7 +10,8 @@ calls: the WAD, its game mode and executable version, the players, the random nu
 The intermission's and the finale's timing (how many tics of a demo they consume, and the
 buttons they latch into ``attackdown``/``usedown``) are in ``intermission.py``.
 
-Sounds are not played: ``s_start_sound``/``s_stop_sound`` only count calls.
+Sounds: ``s_start_sound``/``s_stop_sound`` count calls and forward them to ``self.sound``, a
+``wallbsp.sound.SoundSystem`` when one is attached (None by default: no sound, no cost).
 """
 import os
 import struct
@@ -164,12 +165,18 @@ class Game:
         last = len(names) - 1 - names[::-1].index("F_END")
         return names[first:last]
 
-    # -- sound: not played ----------------------------------------------------------------
+    # -- sound: wallbsp.sound's SoundSystem when one is attached (``sound.attach(play)``) ----
+    sound = None
+
     def s_start_sound(self, origin, sfx_id):
         self.sounds_started += 1
+        if self.sound is not None:
+            self.sound.start_sound(origin, sfx_id)
 
     def s_stop_sound(self, origin):
         self.sounds_stopped += 1
+        if self.sound is not None:
+            self.sound.stop_sound(origin)
 
     # -- textures ------------------------------------------------------------------------
     def texture_height(self, name):

@@ -173,13 +173,13 @@ class Specials:
                 side = sides[line.sidenum[0]]
                 side.textureoffset = wrap32(side.textureoffset + FRACUNIT)
 
-        for button in self.buttonlist:
+        for i, button in enumerate(self.buttonlist):
             if button.btimer:
                 button.btimer -= 1
                 if not button.btimer:
-                    self._button_back(button)
+                    self._button_back(button, i)
 
-    def _button_back(self, button):
+    def _button_back(self, button, i):
         side = self.sides[button.line.sidenum[0]]
         if button.where == TOP:
             side.toptexture = button.btexture
@@ -188,7 +188,7 @@ class Specials:
         elif button.where == BOTTOM:
             side.bottomtexture = button.btexture
         # C passes &buttonlist[i].soundorg (the field's address): only the sound's origin
-        self.s_start_sound(button.soundorg, info.sfx_swtchn)
+        self.s_start_sound(ButtonSoundOrigin(self, i), info.sfx_swtchn)
         button.clear()
 
     # -- the donut ---------------------------------------------------------------------------
@@ -307,3 +307,20 @@ class Specials:
         elif special == 17:                         # fire flicker, from the v1.4 beta on
             if self.gameversion > EXE_DOOM_1_2:
                 self.p_spawn_fire_flicker(sector)
+
+
+class ButtonSoundOrigin:
+    """What ``S_StartSound(&buttonlist[i].soundorg, sfx_swtchn)`` hears when a switch flips
+    back: the address of slot ``i``'s ``soundorg`` field read as a ``mobj_t``.  In Chocolate
+    Doom on a 64-bit machine (the traces' engine) its ``x`` is the next slot's ``btimer`` and
+    its ``y`` that slot's zeroed padding, so the sound comes from near the map's origin (on
+    DOS, ``btexture`` and ``btimer`` of the next slot).  Sound only: nothing reads it."""
+    __slots__ = ("buttons", "i")
+    y = 0
+
+    def __init__(self, play, i):
+        self.buttons, self.i = play.buttonlist, i
+
+    @property
+    def x(self):
+        return self.buttons[self.i + 1].btimer if self.i + 1 < len(self.buttons) else 0
