@@ -356,3 +356,15 @@ def test_copy_true_batches_stay_as_handed_out(no_leak):
         assert len(addresses) <= 3
     finally:
         envs.close()
+
+
+def test_gymnasium_make_vec_makes_it(no_leak):
+    envs = gym.make_vec("wallbsp/Explore-v0", 2, workers=1, **SMALL)
+    try:
+        assert isinstance(envs.unwrapped, wallbsp.envs.vector.WallbspVectorEnv)
+        assert envs.reset(seed=0)[0]["rgb"].shape == (2, 24, 32, 3)
+    finally:
+        envs.close()
+    envs = gym.make_vec("wallbsp/Explore-v0", 2, vectorization_mode="sync", **SMALL)
+    assert isinstance(envs, gym.vector.SyncVectorEnv)
+    envs.close()

@@ -14,7 +14,9 @@ taking turns round by round (a busy machine only takes speed away):
 2. ``make_vec`` with 8 environments on 2 workers (``copy=True``, the default, and
    ``copy=False``), and the same driven asynchronously (``send``/``recv``, batch 4);
 3. gymnasium's ``AsyncVectorEnv`` with 2 environments;
-4. ``make_vec`` with ``workers=0`` and 8 environments.
+4. ``make_vec`` with ``workers=0`` and 8 environments;
+5. ``make_vec`` with 2 environments on 2 workers (one each: the protocol without several
+   environments taking turns in one process's caches).
 
 Beside them: the same environment in 2 plain processes at once (what the cores give),
 and the round trip of the wake-ups a worker could sleep on (a pipe byte, a POSIX
@@ -90,6 +92,8 @@ def throughput(level, steps: int, rounds: int) -> tuple[dict, dict, float]:
             [lambda: gym.make("wallbsp/Exit-v0", **options) for _ in range(2)])),
         "make_vec 8 envs, workers=0": lambda: RandomDriver(
             make_vec("wallbsp/Exit-v0", ENVS, workers=0, **options)),
+        "make_vec 2 envs, 2 workers": lambda: RandomDriver(
+            make_vec("wallbsp/Exit-v0", 2, workers=WORKERS, **options)),
     }
     drivers = {name: build() for name, build in make.items()}
     try:
@@ -228,6 +232,10 @@ def run(args) -> dict:
         "make_vec_8x2_over_async_2": round(rates["make_vec 8 envs, 2 workers"]
                                            / rates["gymnasium AsyncVectorEnv 2"], 2),
         "workers0_8_over_one": round(rates["make_vec 8 envs, workers=0"] / one, 2),
+        "make_vec_2x2_over_one": round(rates["make_vec 2 envs, 2 workers"] / one, 2),
+        "cpu_efficiency_make_vec_8x2": round(cpu["make_vec 8 envs, 2 workers"]
+                                             / cpu["one env"], 2),
+        "cpu_efficiency_workers0_8": round(cpu["make_vec 8 envs, workers=0"] / cpu["one env"], 2),
         "two_plain_processes_over_one": round(plain / one, 2),
     }
     reset = resets(args.quick)

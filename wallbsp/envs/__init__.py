@@ -22,6 +22,8 @@ The tasks are in ``tasks``, the options every environment takes in ``base``, the
 tables in ``actions``, the observation keys in ``observations``.  gymnasium is imported
 here and below only: ``import wallbsp`` does not need it.
 """
+from functools import partial
+
 from gymnasium.envs.registration import register, registry
 
 from wallbsp.envs.actions import DISCRETE_ACTIONS, TURN_DEGREES, Buttons
@@ -40,4 +42,6 @@ ENV_IDS = {"wallbsp/Exit-v0": "wallbsp.envs.tasks:ExitEnv",
 
 for _id, _entry in ENV_IDS.items():
     if _id not in registry:              # a second import (e.g. a reload) registers nothing
-        register(id=_id, entry_point=_entry)
+        # gymnasium.make_vec(id, n) (and RLlib's gym_env_vectorize_mode="vector_entry_point")
+        # makes make_vec's vector env; vectorization_mode="sync"/"async" gymnasium's own
+        register(id=_id, entry_point=_entry, vector_entry_point=partial(make_vec, _id))

@@ -25,7 +25,7 @@ import numpy as np
 from wallbsp.render.rows import rows_of
 
 __all__ = ["OBSERVATIONS", "VIEW_KEYS", "observation_space", "check_observations", "Automap",
-           "pose_of", "view_observation"]
+           "pose_of", "view_observation", "drawn_into"]
 
 OBSERVATIONS = ("rgb", "depth", "labels", "automap", "pose")
 VIEW_KEYS = frozenset({"rgb", "depth", "labels"})
@@ -59,10 +59,32 @@ def observation_space(keys, width: int, height: int):
     return spaces.Dict({k: made[k] for k in keys})
 
 
+_INTO: list = []              # drawn_into's arrays, innermost last
+
+
+class drawn_into:
+    """``with drawn_into({"rgb": slot, ...}): env.step(a)``: the view observations made
+    inside are drawn into these arrays (a vector env's batch slots, ``wallbsp.envs.vector``)
+    where they fit, instead of new ones, so the env's observation is the slot itself."""
+
+    def __init__(self, arrays: dict):
+        self.arrays = arrays
+
+    def __enter__(self):
+        _INTO.append(self.arrays)
+        return self.arrays
+
+    def __exit__(self, *exc):
+        _INTO.pop()
+        return False
+
+
 def view_observation(frame, keys) -> dict:
     """The view buffers of a rendered ``frame`` among ``keys`` (new C-ordered arrays: a
-    vector env copies them on, and only a C-ordered array copies at memory speed)."""
-    return frame.view_rows([name for name in ("rgb", "depth", "labels") if name in keys])
+    vector env copies them on, and only a C-ordered array copies at memory speed; or the
+    arrays of an enclosing ``drawn_into``)."""
+    names = [name for name in ("rgb", "depth", "labels") if name in keys]
+    return frame.view_rows(names, out=_INTO[-1]) if _INTO else frame.view_rows(names)
 
 
 def pose_of(player) -> np.ndarray:

@@ -20,9 +20,11 @@ from __future__ import annotations
 import collections
 import os
 import traceback
+import warnings
 
 import numpy as np
 
+from wallbsp.envs.observations import drawn_into
 from wallbsp.envs.vecbuffers import SharedBlock, assemble, leaves, values_at, write_overflow
 
 __all__ = ["Stepper", "LocalPool", "WorkerError", "run_worker", "make_env", "TAIL", "HEAD",
@@ -68,6 +70,10 @@ class Stepper:
         self.banks = [[arrays[f"obs{i}.{b}"] for i in range(len(self.obs_paths))]
                       for b in range(banks)]
         self.counters = arrays["counters"]
+        # each env's slots by observation key: a wallbsp env draws its view straight there
+        self.slots = [{e: {path[0]: array[e] for path, array in zip(self.obs_paths, bank)
+                           if len(path) == 1 and isinstance(path[0], str)} for e in envs}
+                      for bank in self.banks]
         self.act_space = action_space
         act_leaves = leaves(action_space)
         self.acts = [arrays[f"act{i}"] for i in range(len(act_leaves))]
@@ -75,6 +81,7 @@ class Stepper:
         self.reward, self.terminated = arrays["reward"], arrays["terminated"]
         self.truncated, self.seeds = arrays["truncated"], arrays["seed"]
         self.autoreset = {e: False for e in envs}
+        self.stepped = set()
         self.local, self.schema, self.infos = local, None, {}
         if not local:
             present, values = arrays["present"], arrays["values"]
@@ -88,25 +95,36 @@ class Stepper:
         return assemble(self.act_space, [a[e].copy() for a in self.acts])
 
     def step(self, e: int) -> None:
-        env = self.envs[e]
-        if self.autoreset[e]:
-            obs, info = env.reset()
-            self.note_seed(e)
-            reward, terminated, truncated = 0.0, False, False
-        else:
-            obs, reward, terminated, truncated, info = env.step(self.action(e))
+        env, bank = self.envs[e], int(self.counters[BANK])
+        if e not in self.stepped:               # gymnasium's checker looks at the first step
+            self.stepped.add(e)
+            with warnings.catch_warnings():     # its slot may be the reset's: no surprise
+                warnings.filterwarnings("ignore", message=".*share an object")
+                return self.step(e)
+        with drawn_into(self.slots[bank][e]):
+            if self.autoreset[e]:
+                obs, info = env.reset()
+                self.note_seed(e)
+                reward, terminated, truncated = 0.0, False, False
+            else:
+                obs, reward, terminated, truncated, info = env.step(self.action(e))
         self.autoreset[e] = bool(terminated or truncated)
-        self.write(e, obs, reward, terminated, truncated, info)
+        self.write(e, bank, obs, reward, terminated, truncated, info)
 
     def reset(self, e: int, seed=None, options=None) -> None:
-        obs, info = self.envs[e].reset(seed=seed, options=options)
+        bank = int(self.counters[BANK])
+        with drawn_into(self.slots[bank][e]):
+            obs, info = self.envs[e].reset(seed=seed, options=options)
         self.note_seed(e)
         self.autoreset[e] = False
-        self.write(e, obs, 0.0, False, False, info)
+        self.write(e, bank, obs, 0.0, False, False, info)
 
-    def write(self, e, obs, reward, terminated, truncated, info) -> None:
-        for array, value in zip(self.banks[self.counters[BANK]], values_at(obs, self.obs_paths)):
-            array[e] = value
+    def write(self, e, bank, obs, reward, terminated, truncated, info) -> None:
+        slots = self.slots[bank][e]
+        for path, array, value in zip(self.obs_paths, self.banks[bank],
+                                      values_at(obs, self.obs_paths)):
+            if not (path and slots.get(path[0]) is value):     # drawn there already
+                array[e] = value
         self.reward[e], self.terminated[e], self.truncated[e] = reward, terminated, truncated
         if self.local:
             self.infos[e] = info

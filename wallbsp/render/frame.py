@@ -79,12 +79,14 @@ class Frame:
             return rows_of(self._layer(name).T)
         raise KeyError(name)
 
-    def view_rows(self, names) -> dict:
+    def view_rows(self, names, out=None) -> dict:
         """``{name: self.rows(name)}`` for ``names`` among ``rgb``, ``depth`` and
         ``labels`` (an environment's observation): by one kernel call when the frame's
-        layers can (the compiled fill's), else name by name."""
+        layers can (the compiled fill's), else name by name.  ``out``: arrays to draw
+        them into where they fit (a vector env's batch slots), instead of new ones."""
         fast = getattr(self._layers, "view_rows", None)
-        rows = None if fast is None else fast(self.color_columns, names)
+        rows = None if fast is None else (fast(self.color_columns, names) if out is None
+                                          else fast(self.color_columns, names, out=out))
         return rows if rows is not None else {name: self.rows(name) for name in names}
 
     @property

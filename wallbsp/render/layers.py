@@ -131,19 +131,21 @@ class Layers:
     def drawsegs(self):
         return self._drawsegs
 
-    def view_rows(self, colour_columns, names, overlay=None):
+    def view_rows(self, colour_columns, names, overlay=None, out=None):
         """``Frame.view_rows``: ``{name: rows}`` for ``names`` among rgb, depth and labels
         in one kernel call, with ``overlay``'s pixels (``overlay.Overlay``) written over
-        the layers; None where the colour buffer is not the fill's own."""
+        the layers, into ``out``'s arrays where it has fitting ones; None where the
+        colour buffer is not the fill's own."""
         packed = (self.packed if colour_columns is self.colour_columns
                   else packed_pixels(colour_columns))
         if packed is None:
             return None
         view = self.view
         rows = (view.height, view.width)
-        out = {"rgb": _rows("rgb" in names, rows + (3,), np.uint8),
-               "depth": _rows("depth" in names, rows, np.float32),
-               "labels": _rows("labels" in names, rows + (2,), np.int32)}
+        given = out or {}
+        out = {"rgb": _rows("rgb" in names, rows + (3,), np.uint8, given.get("rgb")),
+               "depth": _rows("depth" in names, rows, np.float32, given.get("depth")),
+               "labels": _rows("labels" in names, rows + (2,), np.int32, given.get("labels"))}
         drawn = _NO_OVERLAY if overlay is None or overlay.slices is None else (
             overlay.pixel, overlay.which, *overlay.slices)
         observe_rows(self.entries, view, self.parts, self.scene, self.painter, drawn, packed,
@@ -151,6 +153,11 @@ class Layers:
         return {name: out[name] for name in names}
 
 
-def _rows(wanted, shape, dtype):
-    """A new output of ``shape``, or an empty one of the same rank when not ``wanted``."""
+def _rows(wanted, shape, dtype, given=None):
+    """``given`` when it is a C-ordered ``shape`` array of ``dtype`` (a vector env's
+    slot), else a new output of ``shape``, or an empty one of the same rank when not
+    ``wanted``."""
+    if (wanted and given is not None and given.shape == shape and given.dtype == dtype
+            and given.flags.c_contiguous and given.flags.writeable):
+        return given
     return np.empty(shape if wanted else (0,) * len(shape), dtype=dtype)

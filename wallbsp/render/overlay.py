@@ -76,8 +76,8 @@ class OverlayLayers:
             values.reshape(-1)[self.overlay.pixel] = getattr(self.overlay, name)
         return values
 
-    def view_rows(self, colour_columns, names):
-        return self.base.view_rows(colour_columns, names, self.overlay)
+    def view_rows(self, colour_columns, names, out=None):
+        return self.base.view_rows(colour_columns, names, self.overlay, out)
 
     def __getattr__(self, name):
         return getattr(self.base, name)
