@@ -161,3 +161,18 @@ def test_scenario_matches_chocolate_doom(name, tmp_path):
         set_fast_monsters(False)        # nightmare changed info's tables for the process
     diff = first_difference(ours, theirs)
     assert diff is None, f"{name}: desync at {diff}"
+
+
+def test_two_plays_side_by_side_stay_in_sync():
+    """Plays share nothing: two demos of two games, a tic of each in turn, both in sync."""
+    from wallbsp.game.playsim.trace import start_demo, trace_line
+    runs = []
+    for name in ("freedoom1", "freedoom2"):
+        play, demo = start_demo(wad_path(name), "DEMO1")
+        runs.append((play, demo.tics[:600], reference(name, 1)[:600], []))
+    for i in range(600):
+        for play, tics, _, lines in runs:
+            if play.g_ticker(tics[i]):
+                lines.append(trace_line(play))
+    for _, _, theirs, ours in runs:
+        assert first_difference(ours, theirs) is None
