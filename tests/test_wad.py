@@ -482,12 +482,8 @@ def test_bad_sector_index_is_an_error():
         import_wad(write_wad(m), "MAP01")
 
 
-def test_udmf_and_hexen_maps_are_refused():
-    udmf = Path("udmf.wad")
-    udmf.write_bytes(wad_bytes([("MAP01", b""), ("TEXTMAP", b"namespace=\"zdoom\";"),
-                                ("ENDMAP", b"")]))
-    with raises_one_line(r"udmf\.wad: MAP01: UDMF maps \(TEXTMAP\) are not supported"):
-        import_wad(udmf, "MAP01")
+def test_hexen_maps_are_refused():
+    # UDMF maps (TEXTMAP) are read: tests/test_udmf.py
     hexen = Path("hexen.wad")
     hexen.write_bytes(wad_bytes(Map().lumps() + [("BEHAVIOR", b"ACS\0")]))
     with raises_one_line(r"hexen\.wad: MAP01: Hexen-format maps"):

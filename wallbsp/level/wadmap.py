@@ -39,7 +39,8 @@ How a map becomes a version-2 level (DOOM's numbering is kept, SPEC §2b):
   the WAD lacks is grey, with a warning.
 - Errors (a truncated or malformed WAD, a missing map, a bad index) are one ``LevelError`` line:
   ``freedoom2.wad: directory: ...`` or ``freedoom2.wad: MAP01: LINEDEFS[12]: ...``.
-Hexen-format and UDMF maps are recognised and refused.
+UDMF maps (TEXTMAP ... ENDMAP) are read by ``udmfmap`` into the same records and go the same
+way; Hexen-format binary maps (BEHAVIOR) are recognised and refused.
 """
 from __future__ import annotations
 
@@ -51,6 +52,7 @@ import numpy as np
 from wallbsp.level.model import Level, LevelError, Sector
 from wallbsp.level.format import FORMAT
 from wallbsp.level.io import level_from_dict
+from wallbsp.level import udmfmap
 from wallbsp.assets.wad import Wad, lump_name, open_wad
 from wallbsp.assets.colours import (GREY, SKY_BLUE, SKY_FLAT, WadColours, name_colours,
     wad_colours)
@@ -98,7 +100,8 @@ def _describe_maps(maps: list[str]) -> str:
 
 
 def map_lump_indices(wad: Wad, map_name: str) -> dict[str, int]:
-    """The directory index of each lump of map ``map_name`` (THINGS ... BLOCKMAP), in order."""
+    """The directory index of each lump of map ``map_name`` (THINGS ... BLOCKMAP), in order
+    (DOOM-format maps only: ``import_wad`` reads UDMF maps through ``udmfmap``)."""
     names = wad.names
     marker = wad.index.get(map_name)
     following = names[marker + 1] if marker is not None and marker + 1 < len(names) else None
@@ -166,9 +169,12 @@ def import_wad(wad_path, map_name: str, *, warnings: list[str] | None = None) ->
     map_name = map_name.upper()
     with open_wad(wad_path) as wad:
         where = f"{wad.label}: {map_name}"
-        lumps = map_lump_indices(wad, map_name)
-        things, lines, sides, verts, sectors = (
-            _read_records(wad, where, lump, lumps[lump]) for lump in _NEEDED)
+        if udmfmap.is_udmf(wad, map_name):
+            things, lines, sides, verts, sectors = udmfmap.read_udmf_map(wad, map_name, notes)
+        else:
+            lumps = map_lump_indices(wad, map_name)
+            things, lines, sides, verts, sectors = (
+                _read_records(wad, where, lump, lumps[lump]) for lump in _NEEDED)
         _check_indices(where, lines, sides, len(verts), len(sectors))
         walls = _kept_walls(where, lines, verts, notes)
         vertices, v1, v2 = _renumber_vertices(verts, walls["v1"], walls["v2"])
@@ -223,7 +229,7 @@ def _renumber_vertices(verts: np.ndarray, v1: np.ndarray, v2: np.ndarray):
     """The distinct positions of the wall ends, in order of first use, and v1, v2 renumbered."""
     ends = np.stack([v1, v2], axis=1).ravel()
     x, y = verts["x"][ends].astype(np.int64), verts["y"][ends].astype(np.int64)
-    key = (x << 16) | (y & 0xFFFF)
+    key = (x << 32) | (y & 0xFFFFFFFF)       # UDMF maps may pass 16 bits (SPEC: 2**20)
     _, first, inverse = np.unique(key, return_index=True, return_inverse=True)
     order = np.argsort(first)
     rank = np.empty_like(order)
