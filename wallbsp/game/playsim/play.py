@@ -29,11 +29,16 @@ MODULE_MAP = {
 NOT_MIXINS = {"structs", "demos", "trace", "play", "spectypes"}
 
 
-def _is_mixin(cls, module_name):
-    return (isinstance(cls, type) and cls.__module__ == module_name
+def _is_mixin(cls, module_name=None):
+    """A plain class of methods: made by ``type``, no ``__init__`` or ``__slots__`` of its
+    own, not a structure or an exception, its bases plain too (``module_name``: defined
+    in that module)."""
+    return (isinstance(cls, type) and type(cls) is type
+            and (module_name is None or cls.__module__ == module_name)
             and not cls.__name__.startswith("_") and "__init__" not in cls.__dict__
             and "__slots__" not in cls.__dict__ and not issubclass(cls, structs.Thinker)
-            and not issubclass(cls, BaseException))
+            and not issubclass(cls, BaseException)
+            and all(base is object or _is_mixin(base) for base in cls.__bases__))
 
 
 def mixins(partial=False):
