@@ -20,11 +20,14 @@ PWAD_MAPS = {
     "freedoom2": (("MAP01", 52), ("MAP06", 52), ("MAP07", 52), ("MAP15", 124),
                   ("MAP31", 124), ("MAP32", 52)),
 }
-# name -> (IWAD, whether the PWAD is loaded, demo header patch or new map, tics)
+# name -> (IWAD, how the demo is made: ("run" or "items", skill, episode, map, tics) on
+# the PWAD, ("patch", lump, {offset: byte}) of a Freedoom demo, ("lmp",) stored)
 #   exits-*: run east, tap use every 20 tics, fire every 37: through the exits and the
 #   intermissions onto the IWAD's next map (MAP01 -> MAP02; MAP06 -> text -> MAP07 -> MAP08;
 #   MAP15 -> secret MAP31 -> MAP32 -> MAP16; E1M3 -> secret E1M9 -> E1M4; E1M7 -> E1M8 ->
-#   victory); the others: a Freedoom demo's own tics under another header
+#   victory); items-*: one test map (ITEM_THINGS) run over weapons, a key, armour and
+#   powers, then the IWAD's next map with weapon changes and fire; patched: a Freedoom
+#   demo's own tics under another header
 SCENARIOS = {
     "exits-map01": ("freedoom2", ("run", 2, 1, 1, 400)),
     "exits-map06": ("freedoom2", ("run", 2, 1, 6, 500)),
@@ -41,6 +44,8 @@ SCENARIOS = {
     # then player 1 leaves by the switch) and deathmatch (both aim and fire, come back at
     # random deathmatch starts; then player 1 leaves), each through the intermission's
     # net-game tally onto MAP02
+    "items-map01": ("freedoom2", ("items", 3, 1, 1, 500)),
+    "items-e1m1": ("freedoom1", ("items", 3, 1, 1, 500)),
     "coop-map01": ("freedoom2", ("lmp",)),
     "deathmatch-map01": ("freedoom2", ("lmp",)),
 }
@@ -48,7 +53,7 @@ TRACE_LINES = {"exits-map01": 216, "exits-map06": 232, "exits-map15": 248,
                "exits-e1m3": 232, "exits-e1m7": 32, "nightmare-f1demo1": 800,
                "fast-respawn-f1demo2": 800, "nightmare-f2demo1": 800,
                "nomonsters-f2demo3": 800, "baby-f2demo4": 800, "coop-map01": 500,
-               "deathmatch-map01": 821}
+               "deathmatch-map01": 821, "items-map01": 467, "items-e1m1": 459}
 
 
 # net-game maps: no imp, four player starts and four deathmatch starts; the middle line
@@ -56,6 +61,12 @@ TRACE_LINES = {"exits-map01": 216, "exits-map06": 232, "exits-map15": 248,
 NET_THINGS = ((64, 128, 0, 1, 7), (448, 128, 180, 2, 7), (64, 224, 0, 3, 7),
               (448, 32, 180, 4, 7), (64, 64, 0, 11, 7), (64, 192, 0, 11, 7),
               (448, 64, 180, 11, 7), (448, 192, 180, 11, 7))
+
+
+# an exit run over weapons, a key, armour and powers: what carries into the next map
+ITEM_THINGS = ((64, 128, 0, 1, 7), (96, 128, 0, 2001, 7), (120, 128, 0, 2002, 7),
+               (144, 128, 0, 5, 7), (168, 128, 0, 2018, 7), (192, 128, 0, 2024, 7),
+               (216, 128, 0, 2025, 7), (448, 160, 180, 3001, 7))
 
 
 def room_map(special, things=None, east_wall=0):
@@ -100,18 +111,35 @@ def room_map(special, things=None, east_wall=0):
             ("BLOCKMAP", struct.pack("<%dh" % len(words), *words))]
 
 
-def pwad_lumps(maps, net=False):
+def pwad_lumps(maps, net=False, items=False):
     lumps = []
     for name, special in maps:
         lumps.append((name, b""))
-        lumps += room_map(0, NET_THINGS, 11) if net else room_map(special)
+        if net:
+            lumps += room_map(0, NET_THINGS, 11)
+        else:
+            lumps += room_map(special, ITEM_THINGS if items else None)
     return lumps
 
 
-def write_pwad(path, maps, net=False):
+def scenario_pwad(name):
+    """(maps, net, items): what ``write_pwad`` needs for scenario ``name``'s PWAD, or None."""
+    iwad, (kind, *args) = SCENARIOS[name]
+    if kind == "run":
+        return PWAD_MAPS[iwad], False, False
+    if kind == "lmp":
+        return (("MAP01", 0),), True, False
+    if kind == "items":
+        _, episode, gamemap, _ = args
+        name = "MAP%02d" % gamemap if iwad == "freedoom2" else "E%dM%d" % (episode, gamemap)
+        return ((name, 52),), False, True
+    return None
+
+
+def write_pwad(path, maps, net=False, items=False):
     from wallbsp.game.playsim.demos import wad_image
     with open(path, "wb") as f:
-        f.write(wad_image(pwad_lumps(maps, net)))
+        f.write(wad_image(pwad_lumps(maps, net, items)))
 
 
 def scenario_demo(name, iwad_path):
@@ -131,6 +159,9 @@ def scenario_demo(name, iwad_path):
     tics = []
     for i in range(count):
         buttons = (2 if i % 20 == 10 else 0) | (1 if i % 37 == 5 else 0)
+        if kind == "items" and i > 150:
+            # hold fire in bursts and change weapons: 1 fist .. 4 chaingun, by turns
+            buttons = (1 if i % 50 < 20 else 0) | (4 | ((i // 60) % 4) << 3 if i % 60 == 0 else 0)
         turn = 2 if (i // 200) % 2 else 0
         tics.append(struct.pack("<bbBB", 50, 0, turn, buttons))
     header = bytes([109, skill, episode, gamemap, 0, 0, 0, 0, 0, 1, 0, 0, 0])

@@ -142,16 +142,16 @@ def test_first_difference_names_tic_and_field():
 
 @pytest.mark.parametrize("name", sorted(__import__("playsim_scenarios").SCENARIOS))
 def test_scenario_matches_chocolate_doom(name, tmp_path):
-    from playsim_scenarios import PWAD_MAPS, SCENARIOS, TRACE_LINES, scenario_demo, write_pwad
+    from playsim_scenarios import (SCENARIOS, TRACE_LINES, scenario_demo, scenario_pwad,
+                                   write_pwad)
     from wallbsp.game.playsim.game import set_fast_monsters
     from wallbsp.game.playsim.trace import play_demo
-    iwad, (kind, *_) = SCENARIOS[name]
-    wad = wad_path(iwad)
+    wad = wad_path(SCENARIOS[name][0])
     files = ()
-    if kind in ("run", "lmp"):
+    pwad = scenario_pwad(name)
+    if pwad is not None:
         files = (tmp_path / "test.wad",)
-        write_pwad(files[0], PWAD_MAPS[iwad] if kind == "run" else (("MAP01", 0),),
-                   net=kind == "lmp")
+        write_pwad(files[0], *pwad)
     demo = parse_demo(scenario_demo(name, wad), name)
     theirs = (ORACLE / f"scenario-{name}.trace").read_text().splitlines()
     assert len(theirs) == TRACE_LINES[name]
