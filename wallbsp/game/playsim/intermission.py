@@ -3,10 +3,13 @@ co-operative and deathmatch — and ``f_finale.c``'s text screens): nothing is d
 demo goes on reading tic commands while they show, and pressing fire or use to skip them
 latches the players' ``attackdown`` and ``usedown``, which the next level inherits.  So the
 number of tics they last and those two flags are simulated exactly; the counting itself
-is only what decides the timing.
+is only what decides the timing.  The tallies' sounds (S_StartSound with no origin) go to
+``s_start_sound(None, sfx)`` where DOOM starts them.
 
 State: ``init_intermission()`` (game-wide; called by ``Game.g_init``).
 """
+from wallbsp.sim import info
+
 from .game import GA_NOTHING, GA_WORLDDONE, GS_FINALE
 from .structs import BT_ATTACK, BT_USE, COMMERCIAL, MAXPLAYERS
 
@@ -112,9 +115,15 @@ class Intermission:
         total = sum(frags[i] for i in self._in_game() if i != playernum)
         return total - frags[playernum]
 
-    def _stats_done(self):
+    def _tick_sound(self):
+        """The pistol shot of a running count, every fourth tic."""
+        if not self.bcnt & 3:
+            self.s_start_sound(None, info.sfx_pistol)
+
+    def _stats_done(self, sfx):
         """The tally has been shown whole and a button was pressed: on to the next map."""
         if self.acceleratestage:
+            self.s_start_sound(None, sfx)
             if self.gamemode == COMMERCIAL:
                 self.wi_init_no_state()
             else:
@@ -136,24 +145,29 @@ class Intermission:
             self.acceleratestage = 0
             self.cnt_kills[0], self.cnt_items[0], self.cnt_secret[0] = kills, items, secrets
             self.cnt_time, self.cnt_par = stime, partime
+            self.s_start_sound(None, info.sfx_barexp)
             self.sp_state = 10
         counts = {2: (self.cnt_kills, kills), 4: (self.cnt_items, items),
                   6: (self.cnt_secret, secrets)}
         if self.sp_state in counts:
             cnt, target = counts[self.sp_state]
             cnt[0] += 2
+            self._tick_sound()
             if cnt[0] >= target:
                 cnt[0] = target
+                self.s_start_sound(None, info.sfx_barexp)
                 self.sp_state += 1
         elif self.sp_state == 8:
+            self._tick_sound()
             self.cnt_time = min(self.cnt_time + 3, stime)
             self.cnt_par += 3
             if self.cnt_par >= partime:
                 self.cnt_par = partime
                 if self.cnt_time >= stime:
+                    self.s_start_sound(None, info.sfx_barexp)
                     self.sp_state += 1
         elif self.sp_state == 10:
-            self._stats_done()
+            self._stats_done(info.sfx_sgcock)
         elif self.sp_state & 1:
             self.sp_state = self._pause(self.sp_state)
 
@@ -165,10 +179,12 @@ class Intermission:
                 self.cnt_kills[i], self.cnt_items[i], self.cnt_secret[i] = self._percents(i)
                 if self.dofrags:
                     self.cnt_frags[i] = self.wi_frag_sum(i)
+            self.s_start_sound(None, info.sfx_barexp)
             self.ng_state = 10
         counts = {2: (self.cnt_kills, 0), 4: (self.cnt_items, 1), 6: (self.cnt_secret, 2)}
         if self.ng_state in counts:
             cnt, which = counts[self.ng_state]
+            self._tick_sound()
             ticking = False
             for i in players:
                 cnt[i] += 2
@@ -178,8 +194,10 @@ class Intermission:
                 else:
                     ticking = True
             if not ticking:
+                self.s_start_sound(None, info.sfx_barexp)
                 self.ng_state += 1 if self.ng_state != 6 else 1 + 2 * (not self.dofrags)
         elif self.ng_state == 8:
+            self._tick_sound()
             ticking = False
             for i in players:
                 self.cnt_frags[i] += 1
@@ -189,9 +207,10 @@ class Intermission:
                 else:
                     ticking = True
             if not ticking:
+                self.s_start_sound(None, info.sfx_pldeth)
                 self.ng_state += 1
         elif self.ng_state == 10:
-            self._stats_done()
+            self._stats_done(info.sfx_sgcock)
         elif self.ng_state & 1:
             self.ng_state = self._pause(self.ng_state)
 
@@ -203,8 +222,10 @@ class Intermission:
                 for j in players:
                     self.dm_frags[i][j] = self.plrs[i]["frags"][j]
                 self.dm_totals[i] = self.wi_frag_sum(i)
+            self.s_start_sound(None, info.sfx_barexp)
             self.dm_state = 4
         if self.dm_state == 2:
+            self._tick_sound()
             ticking = False
             for i in players:
                 frags = self.plrs[i]["frags"]
@@ -215,9 +236,10 @@ class Intermission:
                         ticking = True
                 self.dm_totals[i] = max(-99, min(99, self.wi_frag_sum(i)))
             if not ticking:
+                self.s_start_sound(None, info.sfx_barexp)
                 self.dm_state += 1
         elif self.dm_state == 4:
-            self._stats_done()
+            self._stats_done(info.sfx_slop)
         elif self.dm_state & 1:
             self.dm_state = self._pause(self.dm_state)
 
