@@ -48,12 +48,16 @@ SCENARIOS = {
     "items-e1m1": ("freedoom1", ("items", 3, 1, 1, 500)),
     "coop-map01": ("freedoom2", ("lmp",)),
     "deathmatch-map01": ("freedoom2", ("lmp",)),
+    # deathmatch 2 on the net-game map with DM_ITEM_THINGS: the players take things, fight,
+    # and the things come back after 30 seconds (P_RespawnSpecials); then MAP02
+    "deathmatch2-items-map01": ("freedoom2", ("lmp", "items")),
 }
 TRACE_LINES = {"exits-map01": 216, "exits-map06": 232, "exits-map15": 248,
                "exits-e1m3": 232, "exits-e1m7": 32, "nightmare-f1demo1": 800,
                "fast-respawn-f1demo2": 800, "nightmare-f2demo1": 800,
                "nomonsters-f2demo3": 800, "baby-f2demo4": 800, "coop-map01": 500,
-               "deathmatch-map01": 821, "items-map01": 467, "items-e1m1": 459}
+               "deathmatch-map01": 821, "items-map01": 467, "items-e1m1": 459,
+               "deathmatch2-items-map01": 1900}
 
 
 # net-game maps: no imp, four player starts and four deathmatch starts; the middle line
@@ -62,6 +66,11 @@ NET_THINGS = ((64, 128, 0, 1, 7), (448, 128, 180, 2, 7), (64, 224, 0, 3, 7),
               (448, 32, 180, 4, 7), (64, 64, 0, 11, 7), (64, 192, 0, 11, 7),
               (448, 64, 180, 11, 7), (448, 192, 180, 11, 7))
 
+
+# deathmatch 2 (items come back after 30 seconds): the net-game map with things to take
+DM_ITEM_THINGS = NET_THINGS + ((160, 128, 0, 2001, 7), (352, 128, 0, 2011, 7),
+                               (256, 64, 0, 2014, 7), (256, 192, 0, 2008, 7),
+                               (160, 32, 0, 2048, 7), (352, 224, 0, 2012, 7))
 
 # an exit run over weapons, a key, armour and powers: what carries into the next map
 ITEM_THINGS = ((64, 128, 0, 1, 7), (96, 128, 0, 2001, 7), (120, 128, 0, 2002, 7),
@@ -116,7 +125,7 @@ def pwad_lumps(maps, net=False, items=False):
     for name, special in maps:
         lumps.append((name, b""))
         if net:
-            lumps += room_map(0, NET_THINGS, 11)
+            lumps += room_map(0, DM_ITEM_THINGS if items else NET_THINGS, 11)
         else:
             lumps += room_map(special, ITEM_THINGS if items else None)
     return lumps
@@ -128,7 +137,7 @@ def scenario_pwad(name):
     if kind == "run":
         return PWAD_MAPS[iwad], False, False
     if kind == "lmp":
-        return (("MAP01", 0),), True, False
+        return (("MAP01", 0),), True, bool(args)
     if kind == "items":
         _, episode, gamemap, _ = args
         name = "MAP%02d" % gamemap if iwad == "freedoom2" else "E%dM%d" % (episode, gamemap)
