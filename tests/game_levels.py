@@ -1,10 +1,7 @@
-"""Small purpose-made levels for the game rules' tests (test-only helpers)."""
+"""Small purpose-made levels for the world's tests (test-only helpers)."""
 from __future__ import annotations
 
-from wallbsp import compile_level
-from wallbsp.game.rules import Rules
-from wallbsp.level.model import Level, Sector, Side, Start, Thing, Wall
-from wallbsp.sim.state import WorldState
+from wallbsp.level.model import Level, Sector, Start, Wall
 
 WIDTH = 128      # the corridor's width (y from 0 to WIDTH)
 LENGTH = 128     # each sector's length along x
@@ -45,10 +42,3 @@ def wall_between(level, i):
 def north_wall(level, i):
     return next(k for k, w in enumerate(level.walls) if w.front == i and w.back is None
                 and level.vertices[w.v1][1] == WIDTH and level.vertices[w.v2][1] == WIDTH)
-
-
-def rules_for(level, **options):
-    """Compiled level, its WorldState, and Rules over them."""
-    tree = compile_level(level)
-    state = WorldState(tree)
-    return Rules(level, state, **options), state

@@ -13,7 +13,8 @@ from wallbsp.app import walkthrough as app, hud
 from wallbsp import compile_level, render
 from wallbsp.game.demo import demo_for
 from wallbsp.game.maporder import following_maps, next_map
-from wallbsp.game.player import TICRATE
+from wallbsp.game.ticcmds import ticcmd
+from wallbsp.game.world import TICRATE
 from wallbsp.level.model import Side
 
 from game_levels import corridor, north_wall, room   # noqa: E402
@@ -46,10 +47,17 @@ def frames(walk, count, dt=DT):
         app.step_frame(walk, dt)
 
 
+def set_health(world, health):
+    """The player's health in DOOM's two places (player_t and its mobj)."""
+    player = world.play.players[0]
+    player.health = player.mo.health = health
+
+
 @pytest.mark.parametrize("key", [pygame.K_e, pygame.K_SPACE])
 def test_e_or_space_uses_the_door_ahead(opened, key):
     walk = opened(door_tree())
     walk.world.place_player(100, 64, 0)
+    frames(walk, 1)                  # DOOM ignores a use held since the level began
     pygame.event.post(pygame.event.Event(pygame.KEYDOWN, key=key, mod=0))
     pygame.event.post(pygame.event.Event(pygame.KEYUP, key=key, mod=0))   # a tap between tics
     frames(walk, 20)
@@ -59,9 +67,10 @@ def test_e_or_space_uses_the_door_ahead(opened, key):
 def test_the_world_says_what_a_locked_door_needs(opened):
     walk = opened(door_tree(special=26))
     walk.world.place_player(100, 64, 0)
+    frames(walk, 1)
     walk.held = {pygame.K_e}
-    frames(walk, 2)
-    assert walk.message == "needs the blue key"
+    frames(walk, 1)
+    assert walk.message == "You need a blue key to open this door"
     assert any("tic 2" in line and "movers 0" in line and "secrets 0/0" in line
                for line in hud.readout_lines(walk))
 
@@ -101,7 +110,7 @@ def test_an_exit_starts_the_level_again(opened):
 def test_a_dead_player_presses_use_to_start_the_level_again(opened):
     walk = opened(compile_level(corridor([room(special=7), room()])))   # 5 damage a 32 tics
     first = walk.world
-    first.inventory.health = 1
+    set_health(first, 1)
     frames(walk, 40)
     assert first.dead and "Press E" in walk.message and walk.world is first
     pygame.event.post(pygame.event.Event(pygame.KEYDOWN, key=pygame.K_e, mod=0))
@@ -128,7 +137,7 @@ def test_a_headless_walk_records_its_tics():
     tree = door_tree()
     demo = demo_for(tree.level)
     app.run_walkthrough(tree, frames=3, turn=4.0, size=(40, 25), demo=demo)
-    assert demo.tics == [(0.0, 0.0, 4.0, False, False)] * 3
+    assert demo.tics == [ticcmd(turn=4.0)] * 3
 
 
 # -- which map follows which ------------------------------------------------------------------
@@ -203,7 +212,7 @@ def test_a_thing_picked_up_leaves_the_automap(opened):
     walk = opened(things_tree())
     walk.display = pygame.display.set_mode((640, 400))
     walk.show_map = True
-    walk.world.inventory.health = 50
+    set_health(walk.world, 50)
     walk.world.place_player(160, 70, 90)
     frames(walk, 1)
     assert colour_near(walk, 160, 100, THING_KINDS["pickups"])
@@ -218,7 +227,7 @@ def test_the_readout_shows_health_armour_ammo_and_keys(opened):
     frames(walk, 1)
     lines = hud.readout_lines(walk)
     assert "health 100  armour 0  keys none" in lines
-    assert "ammo  bullets 50  shells 0  rockets 0  cells 0" in lines
+    assert "pistol  ammo  bullets 50  shells 0  rockets 0  cells 0" in lines
     walk.world.place_player(200, 100, 0)            # onto the blue keycard
     walk.held = {pygame.K_w}
     frames(walk, 8)

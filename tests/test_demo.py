@@ -1,6 +1,6 @@
-"""Demos (SPEC §8): recorded inputs replay to the same states; `walk --record` and `play`;
-damaged demos and demos of another level are one line and exit 2; a demo through the first
-door of Freedoom's E1M1."""
+"""Demos (SPEC §8, §10): recorded tic commands replay to the same states; `walk --record` and
+`play`; version 1 files (the float world's inputs) are still read; damaged demos and demos of
+another level are one line and exit 2; a demo through the first door of Freedoom's E1M1."""
 import json
 import math
 from pathlib import Path
@@ -10,6 +10,8 @@ import pytest
 from wallbsp import compile_level
 from wallbsp.app.cli import main
 from wallbsp.game.demo import Demo, demo_for, dumps_demo, load_demo, play, save_demo
+from wallbsp.game.playsim.structs import TicCmd
+from wallbsp.game.ticcmds import ticcmd
 from wallbsp.game.world import World
 from wallbsp.level.model import LevelError
 from wallbsp.level.io import save_level
@@ -54,12 +56,13 @@ def test_walk_record_then_play_json(tmp_path, capsys):
                  "--record", str(demo_path)]) == 0
     capsys.readouterr()
     demo = json.loads(demo_path.read_text())
-    assert demo["format"] == "wallbsp-demo" and demo["version"] == 1
-    assert demo["tics"] == [[0, 0, 5, False, False]] * 4
+    assert demo["format"] == "wallbsp-demo" and demo["version"] == 2
+    assert demo["tics"] == [[0, 0, 910, 0]] * 4              # 5 degrees in DOOM's units
     assert main(["play", str(level_path), str(demo_path), "--json",
                  "--screenshot", str(tmp_path / "end.png")]) == 0
     state = json.loads(capsys.readouterr().out)
-    assert state["tics"] == 4 and state["angle"] == 20.0 and state["exited"] is None
+    assert state["tics"] == 4 and state["angle"] == 4 * 910 * 360 / 65536
+    assert state["exited"] is None
     assert (state["x"], state["y"], state["z"]) == (64.0, 64.0, 0.0)
     assert (tmp_path / "end.png").stat().st_size > 0
 
@@ -84,7 +87,17 @@ def _demo_text(level, tics):
     ("", "(root): the file is empty"),
     ("{", "(root): malformed JSON"),
     ('{"format": "wallbsp-level", "version": 1, "level_sha256": "%s", "tics": []}', "format"),
-    ('{"format": "wallbsp-demo", "version": 2, "level_sha256": "%s", "tics": []}', "version"),
+    ('{"format": "wallbsp-demo", "version": 3, "level_sha256": "%s", "tics": []}', "version"),
+    ('{"format": "wallbsp-demo", "version": 2, "level_sha256": "%s", "tics": [[0, 0, 0]]}',
+     "tics[0]"),
+    ('{"format": "wallbsp-demo", "version": 2, "level_sha256": "%s", '
+     '"tics": [[0, 0, 0, 0], [0, 128, 0, 0]]}', "tics[1][1]"),
+    ('{"format": "wallbsp-demo", "version": 2, "level_sha256": "%s", '
+     '"tics": [[0, 0, 0.5, 0]]}', "tics[0][2]"),
+    ('{"format": "wallbsp-demo", "version": 2, "level_sha256": "%s", '
+     '"tics": [[0, 0, 0, 256]]}', "tics[0][3]"),
+    ('{"format": "wallbsp-demo", "version": 2, "level_sha256": "%s", '
+     '"tics": [[0, 0, 0, false, false]]}', "tics[0]"),
     ('{"format": "wallbsp-demo", "version": 1, "level_sha256": "abc", "tics": []}',
      "level_sha256"),
     ('{"format": "wallbsp-demo", "version": 1, "level_sha256": "%s"}', "tics: missing"),
@@ -112,7 +125,7 @@ def test_damaged_demos_are_one_line_naming_the_file_and_place(tmp_path, capsys, 
 def test_a_demo_of_another_level_is_refused(tmp_path, capsys):
     level_path, demo_path = tmp_path / "level.json", tmp_path / "other.json"
     save_level(door_level(), level_path)
-    demo_path.write_text(_demo_text(corridor([room(), room()]), [[0, 0, 0, False, False]]))
+    demo_path.write_text(_demo_text(corridor([room(), room()]), [TicCmd()]))
     assert main(["play", str(level_path), str(demo_path), "--json"]) == 2
     out = capsys.readouterr()
     assert out.out == "" and out.err.count("\n") == 1
@@ -134,10 +147,25 @@ def test_loading_twice_gives_equal_demos(tmp_path):
     save_demo(demo, path)
     loaded = load_demo(path)
     assert (loaded.level_sha256, loaded.skill, loaded.tics) == \
-        (demo.level_sha256, 4, [(0.25, -1.0, 3.5, True, False)])
+        (demo.level_sha256, 4, [ticcmd(0.25, -1, 3.5, True, False)])
+    assert loaded.tics[0] == TicCmd(6, -24, 637, 2)
     with pytest.raises(LevelError, match="another level"):
         from wallbsp.game.demo import check_level
         check_level(loaded, corridor([room()]))
+
+
+def test_a_version_1_demo_is_read_through_the_keyword_form(tmp_path, capsys):
+    level_path, demo_path = tmp_path / "level.json", tmp_path / "old.json"
+    level = door_level()
+    save_level(level, level_path)
+    demo_path.write_text(json.dumps({
+        "format": "wallbsp-demo", "version": 1, "level_sha256": demo_for(level).level_sha256,
+        "skill": 3, "tics": [[1, 0, 0, False, False], [0.5, -1, 90, True, True]]}))
+    demo = load_demo(demo_path)
+    assert demo.version == 1
+    assert demo.tics == [TicCmd(25, 0, 0, 0), TicCmd(25, -40, 16384, 2)]
+    assert main(["play", str(level_path), str(demo_path), "--json"]) == 0
+    assert json.loads(capsys.readouterr().out)["tics"] == 2
 
 
 # -- Freedoom ------------------------------------------------------------------------------------

@@ -10,7 +10,7 @@ PACKAGE = Path(jit.__file__).resolve().parent
 
 def package_copy(tmp_path):
     root = tmp_path / "wallbsp"
-    for name in ("jit.py", "lengths.py", "render/shading.py", "app/hud.py", "game/player.py"):
+    for name in ("jit.py", "lengths.py", "render/shading.py", "app/hud.py", "game/world.py"):
         (root / name).parent.mkdir(parents=True, exist_ok=True)
         shutil.copy(PACKAGE / name, root / name)
     return root
@@ -28,7 +28,7 @@ def test_an_edit_where_kernels_reach_changes_the_cache(tmp_path):
 def test_an_edit_above_the_kernels_keeps_the_cache(tmp_path):
     root = package_copy(tmp_path)
     before = jit.source_digest(root)
-    for name in ("app/hud.py", "game/player.py"):
+    for name in ("app/hud.py", "game/world.py"):
         with open(root / name, "a") as f:
             f.write("\n# nothing compiled reads this\n")
     assert jit.source_digest(root) == before

@@ -195,7 +195,6 @@ def test_light_scales_png_texels_in_32_levels(folder):
 def test_a_pressed_switch_and_a_changed_floor_keep_the_atlas(tmp_path):
     """The atlas holds every texture the world can swap to (switch partners, every floor's
     flat): pressing a switch or changing a floor re-gathers the per-key tables only."""
-    from wallbsp.game.switches import Buttons
     from wallbsp.render.tables import tree_tables
     from wallbsp.render.textures import level_textures
     from wallbsp.sim.state import WorldState
@@ -212,7 +211,7 @@ def test_a_pressed_switch_and_a_changed_floor_keep_the_atlas(tmp_path):
     atlas = level_textures(tree_tables(tree), state).atlas
     south = (before.kind == 1) & (before.index == 1)
     assert south.sum() > 200 and (before.color[south] == (200, 0, 0)).all()
-    assert Buttons(state).change(1, use_again=False) == "middle"
+    state.set_wall_texture(1, 0, "middle", "SW2GRID")     # as the play presses it
     after = render(state, camera, 64, 40, light=False)
     assert (after.color[south] == (0, 200, 0)).all()
     floor = (after.kind == 2) & (after.index == 0)

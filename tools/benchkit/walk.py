@@ -1,5 +1,7 @@
-"""Where the benchmarks stand a camera, and the scripted walk through a map: both are the
-game's player (wallbsp.game.player), spawned at a spot or stepped with ``walk_by``.
+"""Where the benchmarks stand a camera, and the scripted walk through a map: a ``Walker``
+(a player circle of the collision queries, ``wallbsp.sim.queries``), stood at a spot or
+stepped with ``walk_by``.  Not the game's player (DOOM's play simulation): the benchmarks'
+camera paths stay the same whatever the game does.
 
 The walk starts at the player start; each frame is a turn, then a step through the game's
 collision, the eye EYE_HEIGHT above the floor the player stands on. When a wall is near
@@ -16,7 +18,46 @@ import numpy as np
 
 from wallbsp import Camera
 from wallbsp.camera import EYE_HEIGHT as EYE
-from wallbsp.game.player import spawn_player, walk_by
+from wallbsp.sim.queries import move, standing_heights
+
+CEILING_GAP = 4.0                     # DOOM keeps the eye this far under the ceiling
+
+
+@dataclasses.dataclass
+class Walker:
+    """Where a walker stands (``z``: its feet on the floor) and looks."""
+    x: float
+    y: float
+    angle: float
+    z: float = 0.0
+    floor: float = 0.0
+    ceiling: float = math.inf
+
+    @property
+    def eye(self) -> float:
+        return min(self.z + EYE, max(self.ceiling - CEILING_GAP, self.z + 1.0))
+
+    def camera(self, fov=90.0) -> Camera:
+        return Camera(self.x, self.y, self.eye, self.angle, fov)
+
+
+def _stand(tree, walker: Walker) -> Walker:
+    heights = standing_heights(tree, walker.x, walker.y)
+    if heights is not None:             # outside the map: keep the last
+        walker.floor, walker.ceiling = heights
+    walker.z = walker.floor
+    return walker
+
+
+def spawn_player(tree, x, y, angle) -> Walker:
+    """A walker standing at (x, y), feet on the floor there (0 outside the map)."""
+    return _stand(tree, Walker(float(x), float(y), float(angle) % 360.0))
+
+
+def walk_by(tree, walker: Walker, dx, dy) -> None:
+    """Move ``walker`` by (dx, dy) through collision, feet on the floor there at once."""
+    walker.x, walker.y = move(tree, walker.x, walker.y, dx, dy, walker.z)
+    _stand(tree, walker)
 # The walk: (frames, map units forward per frame, degrees turned per frame). DOOM walks at
 # about 8 units a tic; one full turn on the spot looks round a room, the gentle turns sweep
 # the view while walking. 300 frames in all.

@@ -16,7 +16,7 @@ __all__ = ["HELP", "MESSAGE_SECONDS", "draw_overlays", "readout_lines", "invento
            "texture_mode", "draw_automap", "say"]
 
 HELP = ("WASD/arrows move   Left/Right or mouse (M grab) turn   Shift run   E/Space use   "
-        "Esc quit",
+        "Ctrl/click fire   1-7 weapons   Esc quit",
         "Tab map  O overlay  L lines  T things  X textures  R stats  P painter  "
         "[ ] resolution  F fullscreen  K shot  H help")
 TEXT, SHADOW = (235, 235, 235), (0, 0, 0)
@@ -54,17 +54,17 @@ def readout_lines(walk):
             f"early exit {'yes' if stats['early_exit'] else 'no'}",
             f"x {player.x:.0f}  y {player.y:.0f}  eye {player.eye:.0f}  "
             f"angle {player.angle:.0f}",
-            f"tic {world.tic_count}  movers {world.rules.active_movers}  "
+            f"tic {world.tic_count}  movers {world.active_movers}  "
             f"secrets {found}/{total}",
             *inventory_lines(world.inventory)]
 
 
 def inventory_lines(inventory):
-    """Health, armour and keys held; the ammunition of every kind."""
+    """Health, armour and keys held; the weapon in hand and the ammunition of every kind."""
     keys = ", ".join(sorted(inventory.keys)) or "none"
     ammo = "  ".join(f"{kind} {rounds}" for kind, rounds in inventory.ammo.items())
     return [f"health {inventory.health}  armour {inventory.armour}  keys {keys}",
-            f"ammo  {ammo}"]
+            f"{inventory.weapon}  ammo  {ammo}"]
 
 
 def texture_mode(walk) -> str:

@@ -13,7 +13,8 @@ it again, or goes on to the tree that ``next_level(exit)`` gives (a WAD's next m
 
 Keys: W/S or Up/Down forward/back, A/D strafe, Left/Right or the mouse (grab with M) to turn
 (DOOM's key turning: slow for ``SLOW_TURN_TICS`` tics, then ``TURN_WALK``/``TURN_RUN`` a
-tic), Shift run, E or Space use, Tab automap, O map overlay/full, L partition lines on the
+tic), Shift run, E or Space use, Ctrl or the left mouse button fire, 1-7 weapons (DOOM's
+number keys: a second 1 or 3 picks the chainsaw or the super shotgun), Tab automap, O map overlay/full, L partition lines on the
 map, T things on the map, X textures / flat colours (textures by default), R or F1 readout,
 P front-to-back / painter's, [ ] internal resolution, F or F11 fullscreen, K or F12
 screenshot (``wallbsp-shot-NNN.png`` here), H help line, Esc quit.
@@ -21,8 +22,10 @@ screenshot (``wallbsp-shot-NNN.png`` here), H help line, Esc quit.
 Headless (``frames=N``): N frames with no input, each followed by one tic turning ``turn``
 degrees, under SDL's dummy driver when there is no window system.  An interactive
 walkthrough with no display (none, or SDL's ``dummy``/``offscreen`` driver) is a
-``NoDisplayError``.  With ``demo`` (a ``game.demo.Demo``) the inputs of every tic on the
-first level are recorded into it.  The result is a ``Summary``, a dict whose ``str`` is
+``NoDisplayError``.  With ``demo`` (a ``game.demo.Demo``) the tic command of every tic on
+the first level is recorded into it.  Each tic's input is one DOOM tic command
+(``game.ticcmds``): the keys held make its moves and buttons, as DOOM's
+``G_BuildTiccmd``.  The result is a ``Summary``, a dict whose ``str`` is
 ``frames=N median_ms=... fps=... size=WxH order=...``.
 """
 from __future__ import annotations
@@ -37,19 +40,18 @@ from dataclasses import dataclass, field
 from types import SimpleNamespace
 
 from wallbsp.camera import Camera
-from wallbsp.game.player import TICRATE
-from wallbsp.game.world import World
+from wallbsp.game.playsim.structs import BT_USE
+from wallbsp.game.ticcmds import ticcmd
+from wallbsp.game.world import TICRATE, World
 from wallbsp.app.hud import draw_overlays, say, texture_mode
+from wallbsp.app.keys import (MOUSE_FIRE, MOUSE_TURN, SLOW_TURN_TICS, TURN_RUN,  # noqa: F401
+    TURN_SLOW, TURN_WALK, tic_command)
 from wallbsp.image import save_png
 from wallbsp.render import render
 from wallbsp.app.window import (RESOLUTIONS, NoDisplayError, check_display, close_display,
     next_resolution, no_window_system, on_resize, open_display, save_screenshot, show_caption,
     toggle_fullscreen, toggle_mouse_grab)
 
-_BAM = 360.0 / 2 ** 16                  # degrees per unit of DOOM's angleturn
-TURN_SLOW, TURN_WALK, TURN_RUN = 320 * _BAM, 640 * _BAM, 1280 * _BAM   # degrees a tic
-SLOW_TURN_TICS = 6                      # DOOM turns slowly for the first tics a key is held
-MOUSE_TURN = 0.15                       # degrees per pixel of mouse motion
 MAX_FRAME_TIME = 0.1      # seconds: a hitch (window drag, swap) runs no more tics than this
 EXIT_SECONDS = 2.0        # the exit message stays this long on the next level
 NO_BLEND = 64.0           # map units: a jump this long (a teleport) is not interpolated
@@ -78,9 +80,12 @@ class Walkthrough:
     pending: float = 0.0             # seconds of game time not yet run as tics
     previous: Camera = None          # the view one tic ago, blended into the frame
     use_tapped: bool = False         # use pressed since the last tic
+    fire_tapped: bool = False        # fire pressed since the last tic
+    weapon_tapped: int = None        # a weapon key pressed since the last tic (1-7)
     next_level: object = None        # exit kind -> the next tree, or None: play again
     demo: object = None              # a game.demo.Demo recording the first level's tics
     seen_message: int = 0            # how many of the world's messages were shown
+    was_dead: bool = False           # the player was dead after the last tic
     turn_tics: int = 0               # tics a turn key has been held
     show_help: bool = True
     show_map: bool = False
@@ -193,7 +198,7 @@ def headless_frame(walk, turn):
     """One frame with no input but closing the window; then one tic turning ``turn``."""
     handle_events(walk, keys=False)
     draw_frame(walk)
-    run_tic(walk, (0.0, 0.0, turn, False, False))
+    run_tic(walk, ticcmd(turn=turn))
 
 
 def _summary(walk, times) -> Summary:
@@ -217,6 +222,8 @@ def bindings():
         strafe_left=(pygame.K_a,), strafe_right=(pygame.K_d,),
         turn_left=(pygame.K_LEFT,), turn_right=(pygame.K_RIGHT,),
         run=(pygame.K_LSHIFT, pygame.K_RSHIFT), use=(pygame.K_e, pygame.K_SPACE),
+        fire=(pygame.K_LCTRL, pygame.K_RCTRL, MOUSE_FIRE),
+        weapons={getattr(pygame, f"K_{n}"): n for n in range(1, 8)},
         actions={
             pygame.K_ESCAPE: _quit,
             pygame.K_TAB: _toggle("show_map"),
@@ -248,9 +255,16 @@ def handle_events(walk, keys=True):
         elif event.type == pygame.KEYDOWN:
             walk.held.add(event.key)
             walk.use_tapped |= event.key in bindings().use
+            walk.fire_tapped |= event.key in bindings().fire
+            walk.weapon_tapped = bindings().weapons.get(event.key, walk.weapon_tapped)
             handle_key(walk, event.key)
         elif event.type == pygame.KEYUP:
             walk.held.discard(event.key)
+        elif event.type == pygame.MOUSEBUTTONDOWN and event.button == 1:
+            walk.held.add(MOUSE_FIRE)
+            walk.fire_tapped = True
+        elif event.type == pygame.MOUSEBUTTONUP and event.button == 1:
+            walk.held.discard(MOUSE_FIRE)
         elif event.type == pygame.MOUSEMOTION and walk.mouse_grab:
             walk.mouse_dx += event.rel[0]
         elif event.type == pygame.WINDOWFOCUSLOST:
@@ -291,23 +305,9 @@ def _toggle_order(walk):
 
 # -- the world: held keys -> one tic's inputs ---------------------------------------------
 
-def _axis(held, plus, minus) -> int:
-    return any(k in held for k in plus) - any(k in held for k in minus)
-
-
 def tic_inputs(walk):
-    """``(forward, strafe, turn, use, run)`` for the next tic from the keys held and the
-    mouse moved since the last tic (SPEC §8's inputs)."""
-    held, keys = walk.held, bindings()
-    running = any(k in held for k in keys.run)
-    turning = _axis(held, keys.turn_left, keys.turn_right)
-    walk.turn_tics = walk.turn_tics + 1 if turning else 0
-    speed = TURN_SLOW if walk.turn_tics <= SLOW_TURN_TICS else (TURN_RUN if running else TURN_WALK)
-    turn = max(-360.0, min(360.0, turning * speed - walk.mouse_dx * MOUSE_TURN))
-    using = walk.use_tapped or any(k in held for k in keys.use)
-    walk.mouse_dx, walk.use_tapped = 0.0, False
-    return (_axis(held, keys.forward, keys.back), _axis(held, keys.strafe_right, keys.strafe_left),
-            turn, using, running)
+    """The tic command of the next tic (``keys.tic_command``)."""
+    return tic_command(walk, bindings())
 
 
 def run_tics(walk, dt):
@@ -319,20 +319,24 @@ def run_tics(walk, dt):
         run_tic(walk, tic_inputs(walk))
 
 
-def run_tic(walk, inputs):
-    """One tic of the world (recorded while on the first level); its messages; an exit."""
+def run_tic(walk, cmd):
+    """One tic of the world with the tic command ``cmd`` (recorded while on the first
+    level); its messages; an exit."""
     walk.previous = walk.world.camera(walk.fov)
-    walk.world.tic(*inputs)
+    walk.world.tic(cmd)
     if walk.demo is not None:
-        walk.demo.record(*inputs)
+        walk.demo.record(cmd)
     messages = walk.world.messages
+    dead = walk.world.dead
     if messages and messages[-1][0] >= walk.seen_message:
-        dead = walk.world.dead
         say(walk, messages[-1][1] + (" Press E to start again." if dead else ""))
         walk.seen_message = messages[-1][0] + 1
+    elif dead and not walk.was_dead:
+        say(walk, "You died. Press E to start again.")
+    walk.was_dead = dead
     if walk.world.exited:
         leave_level(walk)
-    elif walk.world.dead and inputs[3]:
+    elif walk.world.dead and cmd.buttons & BT_USE:
         # DOOM's single player: use after death starts the level again
         start_level(walk, walk.world.tree, "The level again")
 
@@ -351,6 +355,7 @@ def start_level(walk, tree, text):
     level from its start), and ``text`` said."""
     skill = walk.world.skill
     walk.world, walk.previous, walk.demo, walk.seen_message = World(tree, skill), None, None, 0
+    walk.was_dead = False
     walk.map_cache, walk.partitions = (None, None), None
     say(walk, text, EXIT_SECONDS)
     if walk.display is not None:

@@ -26,8 +26,7 @@ from __future__ import annotations
 import gymnasium as gym
 import numpy as np
 
-from wallbsp.game.player import TICRATE
-from wallbsp.game.world import World
+from wallbsp.game.world import TICRATE, World
 from wallbsp.sim.queries import PLAYER_RADIUS
 from wallbsp.render import render
 from wallbsp.envs import actions

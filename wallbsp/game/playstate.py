@@ -22,6 +22,10 @@ knowing it.
   thing's index never changes while the level is played.  ``ThingsView`` is what
   ``World.things`` shows callers: the same arrays, ``type`` the editor number (DOOM's
   ``doomednum``, -1 for objects no map places) and ``mobjtype`` DOOM's ``MT_*``.
+- A thing of a level's own type (SPEC §2b ``thing_types``, a number DOOM does not know)
+  is no map object: DOOM could not spawn it.  It stands where the level puts it, drawn
+  as its type says (``static``), and the play does not see it: it neither blocks nor is
+  picked up.
 """
 from __future__ import annotations
 
@@ -30,6 +34,7 @@ import numpy as np
 from wallbsp.sim import info
 from wallbsp.sim.state import WorldState
 from wallbsp.sim.things import Things, leaf_sectors, locate_leaves
+from wallbsp.sim.things import spawned_at
 from wallbsp.sim.thingtypes import COUNTKILL, NOSECTOR, ThingInfo, thing_info
 
 __all__ = ["PlayState", "PlayThings", "ThingsView", "wall_lines", "picture_code",
@@ -39,6 +44,8 @@ FRAC = 1.0 / 65536.0
 ANGLE_DEGREES = 360.0 / 4294967296.0
 FF_FULLBRIGHT, FF_FRAMEMASK = 0x8000, 0x7FFF
 SCROLL_SPECIAL = 48                     # the wall whose texture scrolls left
+STATIC_CODE = 1 << 24                   # picture codes of the level's own types: + type
+DOOM_TYPES = frozenset(info.DOOMEDNUM) | {1, 2, 3, 4, 11}
 
 
 def picture_code(sprite: int, frame: int) -> int:
@@ -74,6 +81,7 @@ class PlayThings(Things):
         self.mobjs: list = []            # slot -> mobj (None: no mobj ever)
         self._slot: dict = {}            # mobj -> slot
         self._pictures: dict = {}        # picture code -> ThingInfo (what the renderer reads)
+        self.static = np.zeros(0, dtype=bool)   # a level's own type: no mobj
         self._grow(capacity)
 
     def _info(self, code: int):
@@ -92,7 +100,7 @@ class PlayThings(Things):
         for name, fill in (("x", 0.0), ("y", 0.0), ("z", 0.0), ("angle", 0.0), ("type", -1),
                            ("alive", False), ("leaf", 0), ("sector", -1), ("radius", 0.0),
                            ("height", 0.0), ("flags", 0), ("drawn", False), ("bright", False),
-                           ("doomednum", -1), ("mobjtype", -1)):
+                           ("doomednum", -1), ("mobjtype", -1), ("static", False)):
             old = getattr(self, name)
             setattr(self, name, np.concatenate([old, np.full(extra, fill, dtype=old.dtype)]))
         self.mobjs.extend([None] * (n - len(self.mobjs)))
@@ -125,6 +133,36 @@ class PlayThings(Things):
             th = th.next
         self._grow(len(mobjs))
         return self._apply(rows)
+
+    def place_static(self, level, skill: int) -> None:
+        """The level's things of its own types (module docstring), at ``skill``."""
+        own = level.thing_types
+        if not own:
+            return
+        placed = [(i, t) for i, t in enumerate(level.things)
+                  if t.type not in DOOM_TYPES and t.type in own]
+        if not placed:
+            return
+        flags = np.array([t.flags for _, t in placed], dtype=np.int64)
+        placed = [p for p, keep in zip(placed, spawned_at(flags, skill).tolist()) if keep]
+        if not placed:
+            return
+        self._grow(max(i for i, _ in placed) + 1)
+        ids = np.array([i for i, _ in placed], dtype=np.int64)
+        for i, t in placed:
+            kind = thing_info(t.type, own)
+            code = STATIC_CODE + int(t.type)
+            self._pictures[code] = kind
+            self.x[i], self.y[i], self.angle[i] = float(t.x), float(t.y), float(t.angle)
+            self.type[i], self.doomednum[i] = code, t.type
+            self.radius[i], self.height[i] = kind.radius, kind.height
+            self.flags[i], self.drawn[i], self.bright[i] = kind.flags, kind.drawn, kind.bright
+        self.static[ids] = self.alive[ids] = True
+        self.z[ids] = np.nan                       # on the floor (or from the ceiling) now
+        leaf = locate_leaves(self.tree, self.x[ids], self.y[ids])
+        self.leaf[ids] = leaf
+        self.sector[ids] = leaf_sectors(self.tree)[leaf]
+        self._changed(ids)
 
     def _learn(self, st, mo) -> None:
         code = picture_code(st.sprite, st.frame)
@@ -171,7 +209,7 @@ class PlayThings(Things):
                     self.doomednum[i] = info.MOBJINFO[t].doomednum
                 changed = True
                 self._changed(c)
-        gone = np.flatnonzero(self.alive & ~seen)
+        gone = np.flatnonzero(self.alive & ~seen & ~self.static)
         if gone.size:
             self.alive[gone] = False
             for i in gone.tolist():
@@ -215,6 +253,7 @@ class PlayState(WorldState):
         super().__init__(tree, skill)
         self.play = play
         self._things = PlayThings(tree, capacity=len(tree.level.things))
+        self._things.place_static(tree.level, skill)
         self.walls = wall_lines(play)
         self._watched = []               # (wall, side number, Side, textures at load)
         self._scrolling = []             # (wall, Side, offset at load)

@@ -36,8 +36,10 @@ from collections import deque
 import numpy as np
 
 from wallbsp.camera import Camera
-from wallbsp.game.playload import map_numbers, wad_map_of, world_play_class
+from wallbsp.game.playload import level_thing_keys, map_numbers, wad_map_of, world_play_class
+from wallbsp.files import LevelError
 from wallbsp.game.playsim.game import GA_COMPLETED, GA_VICTORY, GS_LEVEL
+from wallbsp.game.playsim.levelbsp import LevelMapError
 from wallbsp.game.playsim.structs import PST_DEAD, TicCmd
 from wallbsp.game.playstate import ANGLE_DEGREES, FRAC, PlayState, ThingsView
 from wallbsp.game.ticcmds import MAX_TURN, as_ticcmd, ticcmd
@@ -53,6 +55,7 @@ SKILLS = range(1, 6)
 MAX_COORDINATE = float(1 << 15)         # DOOM's maps: 16-bit coordinates
 MAX_ANGLE = 36000.0
 AMMO_NAMES = ("bullets", "shells", "cells", "rockets")          # am_clip .. am_misl
+AMMO_SHOWN = (0, 1, 3, 2)               # the order they are listed in: bullets .. cells
 WEAPON_NAMES = ("fist", "pistol", "shotgun", "chaingun", "rocket launcher", "plasma rifle",
                 "BFG 9000", "chainsaw", "super shotgun")         # wp_fist .. wp_supershotgun
 KEY_NAMES = ("blue card", "yellow card", "red card", "blue skull", "yellow skull",
@@ -96,8 +99,12 @@ class PlayerView:
 
     @property
     def eye(self) -> float:
-        """DOOM's ``viewz``: the feet, the view height and the walking bob."""
-        return self._p.viewz * FRAC
+        """DOOM's ``viewz``: the feet, the view height and the walking bob (before the
+        level's first tic, where DOOM has not set it yet: the feet and the view height)."""
+        p = self._p
+        if self._world.play.leveltime == 0:
+            return (p.mo.z + p.viewheight) * FRAC
+        return p.viewz * FRAC
 
     viewz = eye
 
@@ -136,11 +143,14 @@ class PlayerView:
 
     @property
     def ammo(self) -> dict:
-        return dict(zip(AMMO_NAMES, self._p.ammo))
+        """Rounds of each kind: bullets, shells, rockets, cells."""
+        ammo = self._p.ammo
+        return {AMMO_NAMES[k]: int(ammo[k]) for k in AMMO_SHOWN}
 
     @property
     def max_ammo(self) -> dict:
-        return dict(zip(AMMO_NAMES, self._p.maxammo))
+        most = self._p.maxammo
+        return {AMMO_NAMES[k]: int(most[k]) for k in AMMO_SHOWN}
 
     @property
     def weapon(self) -> str:
@@ -179,12 +189,6 @@ class PlayerView:
 class World:
     """A level in play (module docstring)."""
 
-    def __new__(cls, tree, skill: int = 3):
-        if cls is World and wad_map_of(tree.level) is None and not _levels_played():
-            from wallbsp.game.floatworld import FloatWorld      # until levelmap lands
-            return FloatWorld(tree, skill)
-        return super().__new__(cls)
-
     def __init__(self, tree, skill: int = 3):
         if isinstance(skill, bool) or not isinstance(skill, (int, np.integer)) \
                 or skill not in SKILLS:
@@ -202,11 +206,17 @@ class World:
         if self.wad_map is not None:
             wad, map_name = self.wad_map
             play = play_cls(wad)
+            play.level_things = level_thing_keys(self.level)
             play.playeringame[0] = True
             episode, gamemap = map_numbers(map_name)
             play.g_init_new(self.skill - 1, episode, gamemap)
         else:
-            play = _level_play(play_cls, self.level, self.tree, self.skill)
+            play = play_cls(None)
+            play.level_things = level_thing_keys(self.level)
+            try:
+                play.g_init_new_level(self.level, self.tree, self.skill - 1)
+            except LevelMapError as err:      # beyond DOOM's map: bad input, one line
+                raise LevelError(str(err)) from None
         self.play = play
         self._adopt()
 
@@ -289,7 +299,10 @@ class World:
         play.p_set_thing_position(mo)
         sector = mo.subsector.sector
         mo.floorz, mo.ceilingz = sector.floorheight, sector.ceilingheight
+        picks = mo.flags & info.MF_PICKUP            # look around without touching
+        mo.flags &= ~picks
         play.p_check_position(mo, mo.x, mo.y)        # floorz/ceilingz under its box
+        mo.flags |= picks
         mo.floorz, mo.ceilingz = play.tmfloorz, play.tmceilingz
         mo.z = mo.floorz
         mo.momx = mo.momy = mo.momz = 0
@@ -321,7 +334,7 @@ class World:
             self.messages.append((self._tics, p.message))
             p.message = None
         if play.gameaction in (GA_COMPLETED, GA_VICTORY) or play.gamestate != GS_LEVEL:
-            self.exited = "secret" if play.secretexit else "normal"
+            self.exited = "secret" if play.secret_exit_taken else "normal"
 
     def _say(self, text: str) -> None:
         self.messages.append((self._tics, text))
@@ -330,20 +343,6 @@ class World:
 def info_viewheight() -> int:
     from wallbsp.game.playsim.player import VIEWHEIGHT
     return VIEWHEIGHT
-
-
-def _levels_played() -> bool:
-    try:
-        from wallbsp.game.playsim import levelmap
-    except ImportError:
-        return False
-    return hasattr(levelmap, "LevelMap")
-
-
-def _level_play(play_cls, level, tree, skill):
-    """A Play of one of our own levels (``levelmap``'s ``p_setup_level_from``)."""
-    from wallbsp.game.playsim import levelmap      # noqa: F401 - ImportError until it exists
-    raise NotImplementedError("World: levels not imported from a WAD are not played yet")
 
 
 def _number(name, value, limit) -> float:
