@@ -21,7 +21,8 @@ PWAD_MAPS = {
                   ("MAP31", 124), ("MAP32", 52)),
 }
 # name -> (IWAD, how the demo is made: ("run" or "items", skill, episode, map, tics) on
-# the PWAD, ("patch", lump, {offset: byte}) of a Freedoom demo, ("lmp",) stored)
+# the PWAD, ("patch", lump, {offset: byte}) of a Freedoom demo, ("lmp", PWAD) stored, its
+# PWAD the net-game map ("net"), that map with things ("items") or none)
 #   exits-*: run east, tap use every 20 tics, fire every 37: through the exits and the
 #   intermissions onto the IWAD's next map (MAP01 -> MAP02; MAP06 -> text -> MAP07 -> MAP08;
 #   MAP15 -> secret MAP31 -> MAP32 -> MAP16; E1M3 -> secret E1M9 -> E1M4; E1M7 -> E1M8 ->
@@ -46,18 +47,21 @@ SCENARIOS = {
     # net-game tally onto MAP02
     "items-map01": ("freedoom2", ("items", 3, 1, 1, 500)),
     "items-e1m1": ("freedoom1", ("items", 3, 1, 1, 500)),
-    "coop-map01": ("freedoom2", ("lmp",)),
-    "deathmatch-map01": ("freedoom2", ("lmp",)),
+    "coop-map01": ("freedoom2", ("lmp", "net")),
+    "deathmatch-map01": ("freedoom2", ("lmp", "net")),
     # deathmatch 2 on the net-game map with DM_ITEM_THINGS: the players take things, fight,
     # and the things come back after 30 seconds (P_RespawnSpecials); then MAP02
     "deathmatch2-items-map01": ("freedoom2", ("lmp", "items")),
+    # four players at random on Freedoom's own MAP01 in deathmatch: a respawn facing 180
+    # degrees puts the fog where 20 * finetangent[0] wraps around (tic 641)
+    "deathmatch4-map01": ("freedoom2", ("lmp", None)),
 }
 TRACE_LINES = {"exits-map01": 216, "exits-map06": 232, "exits-map15": 248,
                "exits-e1m3": 232, "exits-e1m7": 32, "nightmare-f1demo1": 800,
                "fast-respawn-f1demo2": 800, "nightmare-f2demo1": 800,
                "nomonsters-f2demo3": 800, "baby-f2demo4": 800, "coop-map01": 500,
                "deathmatch-map01": 821, "items-map01": 467, "items-e1m1": 459,
-               "deathmatch2-items-map01": 1900}
+               "deathmatch2-items-map01": 1900, "deathmatch4-map01": 800}
 
 
 # net-game maps: no imp, four player starts and four deathmatch starts; the middle line
@@ -137,7 +141,7 @@ def scenario_pwad(name):
     if kind == "run":
         return PWAD_MAPS[iwad], False, False
     if kind == "lmp":
-        return (("MAP01", 0),), True, bool(args)
+        return None if args[0] is None else ((("MAP01", 0),), True, args[0] == "items")
     if kind == "items":
         _, episode, gamemap, _ = args
         name = "MAP%02d" % gamemap if iwad == "freedoom2" else "E%dM%d" % (episode, gamemap)

@@ -8,7 +8,8 @@ State: ``bodyque``/``bodyqueslot`` (``Game.g_init`` makes them; ``P_SetupLevel``
 the slot).
 """
 from wallbsp.sim import info
-from wallbsp.sim.fixed import FINECOSINE, FINESINE, FINETANGENT, FRACBITS, TANTOANGLE
+from wallbsp.sim.fixed import (FINECOSINE, FINESINE, FINETANGENT, FRACBITS, TANTOANGLE,
+                               wrap32)
 
 from .structs import NUMAMMO, PST_LIVE, Player
 
@@ -106,7 +107,9 @@ class GamePlayers:
         self.bodyqueslot += 1
         ss = self.r_point_in_subsector(x, y)
         xa, ya = _fog_offset(mthing.angle)
-        mo = self.p_spawn_mobj(x + 20 * xa, y + 20 * ya, ss.sector.floorheight, info.MT_TFOG)
+        # 20 * finetangent[] overflows: the fog lands where C's 32-bit sum wraps it
+        mo = self.p_spawn_mobj(wrap32(x + 20 * xa), wrap32(y + 20 * ya),
+                               ss.sector.floorheight, info.MT_TFOG)
         if self.players[self.consoleplayer].viewz != 1:
             self.s_start_sound(mo, info.sfx_telept)     # not on the level's first frame
         return True
