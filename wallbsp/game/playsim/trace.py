@@ -16,6 +16,11 @@ import argparse
 import itertools
 import sys
 
+import numpy as np
+
+from wallbsp.jit import kernels_enabled
+from wallbsp.sim import fnv
+
 from .demos import DemoError, load_demo
 from .mapload import MapLoadError
 from .play import play_class
@@ -27,15 +32,22 @@ MASK = 0xFFFFFFFF
 
 
 def state_hash(play):
-    """(number of live mobjs, FNV-1a of their x, y, z, health, state) in thinker order.
-
-    Each word is xored in without its ``& MASK`` and the hash masked once per two words:
-    the low 32 bits of a xor or a product depend only on the low 32 bits of its operands,
-    so the result is FNV-1a's over the unsigned words (and this runs every tic)."""
+    """(number of live mobjs, FNV-1a of their x, y, z, health, state) in thinker order;
+    the words hashed by ``sim.fnv``'s compiled loop where numba is."""
     mobj_func = type(play).p_mobj_thinker
-    h, n = FNV_OFFSET, 0
     cap = play.thinkercap
     th = cap.next
+    if kernels_enabled():
+        words = []
+        extend = words.extend
+        while th is not cap:
+            if th.func is mobj_func:
+                extend((th.x, th.y, th.z, th.health, th.state))
+            th = th.next
+        return len(words) // 5, fnv.fnv1a_words(np.array(words, dtype=np.int64))
+    # Each word is xored in without its ``& MASK`` and the hash masked once per two words:
+    # the low 32 bits of a xor or a product depend only on the low 32 bits of its operands.
+    h, n = FNV_OFFSET, 0
     while th is not cap:
         if th.func is mobj_func:
             n += 1
