@@ -141,6 +141,15 @@ class InfoSchema:
                 seen.add(key)
         return cls(columns)
 
+    def extended(self, infos):
+        """This schema with the new scalar keys of ``infos`` appended (the columns it has
+        keep their places), or None when they bring none."""
+        grown = InfoSchema.from_infos(infos)
+        new = [column for column in grown.columns if column[0] not in self.index]
+        if not new or len(self.columns) >= MAX_INFO_KEYS:
+            return None
+        return InfoSchema(self.columns + new)
+
     def __getstate__(self):
         return self.columns
 

@@ -305,9 +305,11 @@ class WallbspVectorEnv(VectorEnv):
                 info = read_overflow(a["overflow"][envs[j]], int(lengths[j]))
                 add_info(infos, info, int(where[j]), size)
                 seen.append(info)
-            if self.schema is None:
-                self.schema = InfoSchema.from_infos(seen)
-                self.pool.set_schema(self.schema)
+            schema = (InfoSchema.from_infos(seen) if self.schema is None
+                      else self.schema.extended(seen))
+            if schema is not None:               # the workers take it at their next wake
+                self.schema = schema
+                self.pool.set_schema(schema)
         return infos
 
 

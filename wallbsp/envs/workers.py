@@ -81,7 +81,7 @@ class Stepper:
         self.reward, self.terminated = arrays["reward"], arrays["terminated"]
         self.truncated, self.seeds = arrays["truncated"], arrays["seed"]
         self.autoreset = {e: False for e in envs}
-        self.stepped = set()
+        self.stepped = {}
         self.local, self.schema, self.infos = local, None, {}
         if not local:
             present, values = arrays["present"], arrays["values"]
@@ -95,12 +95,16 @@ class Stepper:
         return assemble(self.act_space, [a[e].copy() for a in self.acts])
 
     def step(self, e: int) -> None:
-        env, bank = self.envs[e], int(self.counters[BANK])
-        if e not in self.stepped:               # gymnasium's checker looks at the first step
-            self.stepped.add(e)
-            with warnings.catch_warnings():     # its slot may be the reset's: no surprise
+        bank = int(self.counters[BANK])
+        if self.stepped.get(e, 0) < 2:          # gymnasium's checker looks at the first steps
+            self.stepped[e] = self.stepped.get(e, 0) + 1
+            with warnings.catch_warnings():     # their slot may be the last one's: by design
                 warnings.filterwarnings("ignore", message=".*share an object")
-                return self.step(e)
+                return self._step(e, bank)
+        self._step(e, bank)
+
+    def _step(self, e: int, bank: int) -> None:
+        env = self.envs[e]
         with drawn_into(self.slots[bank][e]):
             if self.autoreset[e]:
                 obs, info = env.reset()
