@@ -82,6 +82,7 @@ def _warm_up() -> float:
     compiles them on their first call in a process); its seconds."""
     from wallbsp.game.playsim.demos import load_demo
     from wallbsp.game.playsim.play import play_class
+    from wallbsp.game.playsim.trace import trace_line
     from wallbsp.jit import kernels_enabled
     from wallbsp.sim import nodewalks
     started = time.perf_counter()
@@ -90,6 +91,7 @@ def _warm_up() -> float:
     play.g_do_play_demo(recording)
     for commands in itertools.islice(recording.tics, WARMUP_TICS):
         play.g_ticker(commands)
+    trace_line(play)                    # the trace's hash is compiled too (sim.fnv)
     if kernels_enabled():
         nodes, subsectors, segs, marks, out, far, _ = play.sight_arrays()
         nodewalks.cross_bsp(nodes, subsectors, segs, marks.copy(), 1, 0, 0, 1, 1, out, far)
