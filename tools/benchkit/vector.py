@@ -16,7 +16,9 @@ taking turns round by round (a busy machine only takes speed away):
 3. gymnasium's ``AsyncVectorEnv`` with 2 environments;
 4. ``make_vec`` with ``workers=0`` and 8 environments;
 5. ``make_vec`` with 2 environments on 2 workers (one each: the protocol without several
-   environments taking turns in one process's caches).
+   environments taking turns in one process's caches);
+6. the protocols alone: ``make_vec`` 8 on 2 workers and ``AsyncVectorEnv`` 2 of a
+   do-nothing environment with the same spaces (``env_throughput.NullEnv``).
 
 Beside them: the same environment in 2 plain processes at once (what the cores give),
 and the round trip of the wake-ups a worker could sleep on (a pipe byte, a POSIX
@@ -31,13 +33,14 @@ from __future__ import annotations
 
 import ctypes
 import mmap
+from functools import partial
 import multiprocessing
 import os
 import time
 
 import numpy as np
 
-from .env_throughput import RandomDriver, best_rates, exit_level, exit_options, \
+from .env_throughput import NullEnv, RandomDriver, best_rates, exit_level, exit_options, \
     plain_processes
 from .report import machine, machine_line, markdown_table, run_script, script_parser
 
@@ -76,6 +79,12 @@ class AsyncDriver(RandomDriver):
         return self.count * calls / (time.perf_counter() - started)
 
 
+def _null(options, **_):
+    """``env_throughput.NullEnv``: the spaces of the real one, a step that only hands
+    over a copy of one observation (what a vector env's protocol costs on its own)."""
+    return NullEnv(options)
+
+
 def throughput(level, steps: int, rounds: int) -> tuple[dict, dict, float]:
     import gymnasium as gym
     from wallbsp.envs import make_vec
@@ -94,6 +103,10 @@ def throughput(level, steps: int, rounds: int) -> tuple[dict, dict, float]:
             make_vec("wallbsp/Exit-v0", ENVS, workers=0, **options)),
         "make_vec 2 envs, 2 workers": lambda: RandomDriver(
             make_vec("wallbsp/Exit-v0", 2, workers=WORKERS, **options)),
+        "make_vec 8 envs, 2 workers, do-nothing env": lambda: RandomDriver(
+            make_vec(partial(_null, options), ENVS, workers=WORKERS)),
+        "gymnasium AsyncVectorEnv 2, do-nothing env": lambda: RandomDriver(
+            gym.vector.AsyncVectorEnv([partial(_null, options) for _ in range(2)])),
     }
     drivers = {name: build() for name, build in make.items()}
     try:
@@ -233,6 +246,9 @@ def run(args) -> dict:
                                            / rates["gymnasium AsyncVectorEnv 2"], 2),
         "workers0_8_over_one": round(rates["make_vec 8 envs, workers=0"] / one, 2),
         "make_vec_2x2_over_one": round(rates["make_vec 2 envs, 2 workers"] / one, 2),
+        "do_nothing_make_vec_8x2_over_async_2":
+            round(rates["make_vec 8 envs, 2 workers, do-nothing env"]
+                  / rates["gymnasium AsyncVectorEnv 2, do-nothing env"], 2),
         "cpu_efficiency_make_vec_8x2": round(cpu["make_vec 8 envs, 2 workers"]
                                              / cpu["one env"], 2),
         "cpu_efficiency_workers0_8": round(cpu["make_vec 8 envs, workers=0"] / cpu["one env"], 2),
