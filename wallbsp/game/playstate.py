@@ -29,6 +29,8 @@ knowing it.
 """
 from __future__ import annotations
 
+import operator
+
 import numpy as np
 
 from wallbsp.sim import info
@@ -43,6 +45,12 @@ __all__ = ["PlayState", "PlayThings", "ThingsView", "wall_lines", "picture_code"
 FRAC = 1.0 / 65536.0
 ANGLE_DEGREES = 360.0 / 4294967296.0
 FF_FULLBRIGHT, FF_FRAMEMASK = 0x8000, 0x7FFF
+# what a mobj's picture and place depend on, read in one call per mobj
+_READ = operator.attrgetter("x", "y", "z", "angle", "state", "flags", "radius", "height")
+_TEXTURES = operator.attrgetter("toptexture", "midtexture", "bottomtexture")
+_HEIGHTS = operator.attrgetter("floorheight", "ceilingheight")
+_LIGHT = operator.attrgetter("lightlevel")
+_FLOORPIC = operator.attrgetter("floorpic")
 SCROLL_SPECIAL = 48                     # the wall whose texture scrolls left
 STATIC_CODE = 1 << 24                   # picture codes of the level's own types: + type
 DOOM_TYPES = frozenset(info.DOOMEDNUM) | {1, 2, 3, 4, 11}
@@ -82,6 +90,7 @@ class PlayThings(Things):
         self._slot: dict = {}            # mobj -> slot
         self._pictures: dict = {}        # picture code -> ThingInfo (what the renderer reads)
         self.static = np.zeros(0, dtype=bool)   # a level's own type: no mobj
+        self._read, self._reads, self._live = {}, [], []   # the last sync's reads
         self._grow(capacity)
 
     def _info(self, code: int):
@@ -107,7 +116,9 @@ class PlayThings(Things):
 
     def sync(self, play, slots=None) -> bool:
         """Read every live mobj of ``play`` (``slots``: mobj -> thing index for the ones
-        placed by THINGS entries, at load).  True when anything changed."""
+        placed by THINGS entries, at load).  True when anything changed.  Only the mobjs
+        whose position, angle, state, flags or size changed since the last call are
+        written (a tic where most things stand still costs one read of each)."""
         if slots:
             self._grow(max(slots.values()) + 1)
             for mo, i in slots.items():
@@ -116,23 +127,21 @@ class PlayThings(Things):
         mobj_func = type(play).p_mobj_thinker
         cap = play.thinkercap
         th = cap.next
-        slot_of, states, mobjs, pictures = self._slot, info.STATES, self.mobjs, self._pictures
-        rows = []
+        live = []
         while th is not cap:
             if th.func is mobj_func:
-                i = slot_of.get(th)
-                if i is None:
-                    i = slot_of[th] = len(mobjs)
-                    mobjs.append(th)
-                st = states[th.state]
-                code = (st.sprite << 8) | (st.frame & 0xFF)
-                if code not in pictures:
-                    self._learn(st, th)
-                rows.append((i, th.x, th.y, th.z, th.angle, code, st.frame & FF_FULLBRIGHT,
-                             th.flags, th.radius, th.height))
+                live.append(th)
             th = th.next
-        self._grow(len(mobjs))
-        return self._apply(rows)
+        reads = list(map(_READ, live))
+        before = self._read
+        if len(reads) == len(before) and reads == self._reads and live == self._live:
+            return False
+        now = dict(zip(live, reads))
+        changed = [(mo, r) for mo, r in zip(live, reads) if before.get(mo) != r]
+        gone = [mo for mo in before if mo not in now] if len(now) != len(before) or \
+            len(changed) else []
+        self._read, self._reads, self._live = now, reads, live
+        return self._apply(changed, gone)
 
     def place_static(self, level, skill: int) -> None:
         """The level's things of its own types (module docstring), at ``skill``."""
@@ -173,53 +182,50 @@ class PlayThings(Things):
             height=mo.height >> 16, flags=flags, bright=bool(st.frame & FF_FULLBRIGHT),
             rotates=True, monster=bool(flags & COUNTKILL))
 
-    def _apply(self, rows) -> bool:
-        seen = np.zeros(len(self.x), dtype=bool)
-        changed = False
+    def _apply(self, changed, gone) -> bool:
+        slot_of, mobjs, states, pictures = self._slot, self.mobjs, info.STATES, self._pictures
+        rows = []
+        for mo, (x, y, z, angle, state, flags, radius, height) in changed:
+            i = slot_of.get(mo)
+            if i is None:
+                i = slot_of[mo] = len(mobjs)
+                mobjs.append(mo)
+            st = states[state]
+            code = (st.sprite << 8) | (st.frame & 0xFF)
+            if code not in pictures:
+                self._learn(st, mo)
+            rows.append((i, x, y, z, angle, code, st.frame & FF_FULLBRIGHT, flags, radius,
+                         height))
+        self._grow(len(mobjs))
         if rows:
             a = np.array(rows, dtype=np.int64)
             ids = a[:, 0]
-            seen[ids] = True
-            x, y, z = a[:, 1] * FRAC, a[:, 2] * FRAC, a[:, 3] * FRAC
-            angle = (a[:, 4] & 0xFFFFFFFF) * ANGLE_DEGREES
-            code, bright, flags = a[:, 5].astype(np.int32), a[:, 6] != 0, a[:, 7]
-            radius, height = a[:, 8] * FRAC, a[:, 9] * FRAC
+            x, y = a[:, 1] * FRAC, a[:, 2] * FRAC
             moved = (self.x[ids] != x) | (self.y[ids] != y) | ~self.alive[ids]
-            other = (moved | (self.z[ids] != z) | (self.angle[ids] != angle)
-                     | (self.type[ids] != code) | (self.bright[ids] != bright)
-                     | (self.flags[ids] != flags) | (self.radius[ids] != radius)
-                     | (self.height[ids] != height))
             if moved.any():
                 m = ids[moved]
                 leaf = locate_leaves(self.tree, x[moved], y[moved])
                 self.leaf[m] = leaf
                 self.sector[m] = leaf_sectors(self.tree)[leaf]
-            if other.any():
-                c = ids[other]
-                k = other
-                self.x[c], self.y[c], self.z[c], self.angle[c] = x[k], y[k], z[k], angle[k]
-                self.type[c], self.bright[c], self.flags[c] = code[k], bright[k], flags[k]
-                self.radius[c], self.height[c] = radius[k], height[k]
-                self.drawn[c] = (flags[k] & NOSECTOR) == 0
-                self.alive[c] = True
-                fresh = c[self.mobjtype[c] < 0]
-                for i in fresh.tolist():
-                    t = self.mobjs[i].type
-                    self.mobjtype[i] = t
-                    self.doomednum[i] = info.MOBJINFO[t].doomednum
-                changed = True
-                self._changed(c)
-        gone = np.flatnonzero(self.alive & ~seen & ~self.static)
-        if gone.size:
-            self.alive[gone] = False
-            for i in gone.tolist():
-                mo = self.mobjs[i]
-                if mo is not None:
-                    self._slot.pop(mo, None)
-                    self.mobjs[i] = None
-            self._changed(gone)
-            changed = True
-        return changed
+            flags = a[:, 7]
+            self.x[ids], self.y[ids], self.z[ids] = x, y, a[:, 3] * FRAC
+            self.angle[ids] = (a[:, 4] & 0xFFFFFFFF) * ANGLE_DEGREES
+            self.type[ids], self.bright[ids] = a[:, 5].astype(np.int32), a[:, 6] != 0
+            self.flags[ids], self.drawn[ids] = flags, (flags & NOSECTOR) == 0
+            self.radius[ids], self.height[ids] = a[:, 8] * FRAC, a[:, 9] * FRAC
+            self.alive[ids] = True
+            for i in ids[self.mobjtype[ids] < 0].tolist():
+                t = self.mobjs[i].type
+                self.mobjtype[i] = t
+                self.doomednum[i] = info.MOBJINFO[t].doomednum
+            self._changed(ids)
+        if gone:
+            ids = np.array([slot_of.pop(mo) for mo in gone if mo in slot_of], dtype=np.int64)
+            for i in ids.tolist():
+                mobjs[i] = None
+            self.alive[ids] = False
+            self._changed(ids)
+        return bool(rows or gone)
 
 
 class ThingsView:
@@ -267,6 +273,8 @@ class PlayState(WorldState):
             if line.special == SCROLL_SPECIAL:
                 sd = play.sides[front]
                 self._scrolling.append((wall, sd, sd.textureoffset))
+        self._watched_sides = [sd for _, _, sd, _ in self._watched]
+        self._textures_now = list(map(_TEXTURES, self._watched_sides))
         self._floorpics = [s.floorpic for s in play.sectors]
         self._heights = None
         self._lights = None
@@ -282,23 +290,43 @@ class PlayState(WorldState):
         """Read the Play's state after a tic (or at load)."""
         play = self.play
         sectors = play.sectors
-        heights = [s.floorheight for s in sectors], [s.ceilingheight for s in sectors]
+        heights = list(map(_HEIGHTS, sectors))
         if heights != self._heights:
+            if self._heights is None or len(heights) != len(self._heights):
+                both = np.array(heights, dtype=np.float64).reshape(-1, 2) * FRAC
+                self.floor = np.ascontiguousarray(both[:, 0])
+                self.ceiling = np.ascontiguousarray(both[:, 1])
+            else:                             # a few sectors moved: those only
+                for i in [i for i, (a, b) in enumerate(zip(heights, self._heights)) if a != b]:
+                    self.floor[i], self.ceiling[i] = heights[i][0] * FRAC, heights[i][1] * FRAC
             self._heights = heights
-            self.floor = np.array(heights[0], dtype=np.float64) * FRAC
-            self.ceiling = np.array(heights[1], dtype=np.float64) * FRAC
             self.version += 1
-        lights = [s.lightlevel for s in sectors]
+        lights = list(map(_LIGHT, sectors))
         if lights != self._lights:
+            if self._lights is None or len(lights) != len(self._lights):
+                self.light = np.array(lights, dtype=np.float64)
+            else:
+                for i in [i for i, (a, b) in enumerate(zip(lights, self._lights)) if a != b]:
+                    self.light[i] = lights[i]
             self._lights = lights
-            self.light = np.array(lights, dtype=np.float64)
-        pics = [s.floorpic for s in sectors]
+        pics = list(map(_FLOORPIC, sectors))
         if pics != self._pics:
             for i, (was, now) in enumerate(zip(self._pics, pics)):
                 if was != now:
                     self.floor_textures[i] = None if now == "-" else now
             self._pics = pics
             self.texture_version += 1
+        textures = list(map(_TEXTURES, self._watched_sides))
+        if textures != self._textures_now:
+            self._textures_now = textures
+            self._read_textures()
+        for wall, sd, first in self._scrolling:
+            self.wall_x_offset[wall] = (sd.textureoffset - first) * FRAC
+        self._things.sync(play, slots)
+
+    def _read_textures(self) -> None:
+        """The watched sides' textures into ``wall_textures`` (only those that differ from
+        the level's as it was loaded)."""
         for wall, side, sd, first in self._watched:
             now = self._textures_of(sd)
             if now == first and not self.wall_textures:
@@ -313,9 +341,6 @@ class PlayState(WorldState):
                         or key not in self.wall_textures:
                     self.wall_textures[key] = None if name == "-" else name
                     self.texture_version += 1
-        for wall, sd, first in self._scrolling:
-            self.wall_x_offset[wall] = (sd.textureoffset - first) * FRAC
-        self._things.sync(play, slots)
 
     def set_sector(self, i: int, floor=None, ceiling=None, light=None) -> None:
         """Change sector ``i`` in the play itself (heights to DOOM's fixed point), then read
