@@ -208,17 +208,23 @@ class PlayThings(Things):
                 self.leaf[m] = leaf
                 self.sector[m] = leaf_sectors(self.tree)[leaf]
             flags = a[:, 7]
+            radius, drawn = a[:, 8] * FRAC, (flags & NOSECTOR) == 0
+            # where things are kept (leaves, boxes, blockmaps) changes only with these
+            placed = moved | (self.radius[ids] != radius) | (self.drawn[ids] != drawn) \
+                | (self.flags[ids] != flags)
             self.x[ids], self.y[ids], self.z[ids] = x, y, a[:, 3] * FRAC
             self.angle[ids] = (a[:, 4] & 0xFFFFFFFF) * ANGLE_DEGREES
             self.type[ids], self.bright[ids] = a[:, 5].astype(np.int32), a[:, 6] != 0
-            self.flags[ids], self.drawn[ids] = flags, (flags & NOSECTOR) == 0
-            self.radius[ids], self.height[ids] = a[:, 8] * FRAC, a[:, 9] * FRAC
+            self.flags[ids], self.drawn[ids] = flags, drawn
+            self.radius[ids], self.height[ids] = radius, a[:, 9] * FRAC
             self.alive[ids] = True
             for i in ids[self.mobjtype[ids] < 0].tolist():
                 t = self.mobjs[i].type
                 self.mobjtype[i] = t
                 self.doomednum[i] = info.MOBJINFO[t].doomednum
-            self._changed(ids)
+            if placed.any():
+                self._changed(ids[placed])
+            # a new frame, angle or height only: the renderer reads those arrays each frame
         if gone:
             ids = np.array([slot_of.pop(mo) for mo in gone if mo in slot_of], dtype=np.int64)
             for i in ids.tolist():
