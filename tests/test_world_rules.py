@@ -198,3 +198,20 @@ def test_a_zombie_sees_the_player_shoots_and_dies_to_the_pistol():
     assert zombie is not None and zombie.health <= 0  # a corpse: still there
     assert world.things.alive[0]
     assert world.player.ammo["bullets"] < 50
+
+
+def test_a_dead_player_starts_the_level_again_with_use():
+    level = corridor([room(), room(special=7)], things=[Thing(40, 100, 0, MEDIKIT, 7)])
+    world = settled(level)
+    world.place_player(192, 64, 0)                     # on the damaging floor
+    set_health(world, 1)
+    for _ in range(40):                                # 5 damage every 32 tics
+        world.tic()
+    assert world.dead and world.player.health == 0
+    x = world.player.x
+    world.tic(forward=1.0)
+    assert world.dead and world.player.x == x          # the dead do not walk
+    world.tic(use=True)                                # DOOM: use starts the level again
+    world.tic()
+    assert not world.dead and world.player.health == 100
+    assert world.player.ammo["bullets"] == 50 and world.things.alive[0]
