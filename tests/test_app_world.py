@@ -255,3 +255,26 @@ def test_textures_by_default_and_x_toggles_flat_colours(opened):
 def test_a_level_without_textures_says_so(opened):
     walk = opened(door_tree())
     assert hud.texture_mode(walk) == "flat colours (no textures)"
+
+
+# -- fire and weapons ---------------------------------------------------------------------------
+
+def test_ctrl_or_the_mouse_button_fires_and_number_keys_change_weapons(opened):
+    walk = opened(door_tree())
+    frames(walk, 20)                                  # the pistol comes up
+    walk.held = {pygame.K_LCTRL}
+    frames(walk, 12)
+    walk.held = set()
+    fired = walk.world.player.ammo["bullets"]
+    assert fired < 50
+    frames(walk, 20)
+    pygame.event.post(pygame.event.Event(pygame.MOUSEBUTTONDOWN, button=1, pos=(0, 0)))
+    frames(walk, 12)
+    pygame.event.post(pygame.event.Event(pygame.MOUSEBUTTONUP, button=1, pos=(0, 0)))
+    frames(walk, 1)
+    assert walk.world.player.ammo["bullets"] < fired
+    pygame.event.post(pygame.event.Event(pygame.KEYDOWN, key=pygame.K_1, mod=0))
+    pygame.event.post(pygame.event.Event(pygame.KEYUP, key=pygame.K_1, mod=0))
+    frames(walk, 40)                                  # lower the pistol, raise the fist
+    assert walk.world.player.weapon == "fist"
+    assert "Ctrl/click fire" in " ".join(hud.HELP)
