@@ -26,7 +26,7 @@ import numpy as np
 from wallbsp.camera import Camera, Projection
 from wallbsp.sim.state import state_of
 from wallbsp.render.entries import entries_of
-from wallbsp.render.fill import paint_flat, paint_textured
+from wallbsp.render import fill
 from wallbsp.render.frame import Frame, save_ids
 from wallbsp.render.layers import Layers
 from wallbsp.render.overlay import draw_overlay, thing_boxes
@@ -70,11 +70,13 @@ def render(source, camera: Camera, width: int, height: int, order: str = "front_
     colour = np.empty(view.width * view.height, dtype="<u4")
     if tex is None:
         parts = flat_parts(tables)
-        written = paint_flat(entries, view, scene, flat_of(tables), bool(light), painter, colour)
+        written = fill.paint_flat(tuple(entries), tuple(view), tuple(scene), tuple(flat_of(tables)),
+                             bool(light), painter, colour)
     else:
         parts = key_parts(tables, tex)
-        written = paint_textured(entries, view, parts, scene, surfaces_of(tex, projection),
-                                 bool(light), painter, colour)
+        written = fill.paint_textured(tuple(entries), tuple(view), tuple(parts), tuple(scene),
+                                 tuple(surfaces_of(tex, projection)), bool(light), painter,
+                                 colour)
     walk.stats["pixels_written"] = int(written)
     columns = colour.view(np.uint8).reshape(view.width, view.height, 4)[:, :, :3]
     layers = Layers(view, entries, None if painter else drawsegs, parts, scene, painter, colour,

@@ -6,9 +6,12 @@ from __future__ import annotations
 import numpy as np
 
 from wallbsp.jit import kernel, step_kernel
+from wallbsp.render.atlas import Pictures
 from wallbsp.render.frame import KIND_THING, KIND_WALL
+from wallbsp.render.project import View
 from wallbsp.render.shading import scaled_colour
-from wallbsp.render.sprites import sprite_columns
+from wallbsp.render.sprites import Clip, Seen, ThingArrays, sprite_columns
+from wallbsp.render.surfaces import Scene
 
 __all__ = ["draw_things"]
 
@@ -105,6 +108,8 @@ def draw_things(seen, things, pictures, scene, lit, view, clip, wall_ints, wall_
     ``colour_columns``; returns ``(kind, index, depth)`` of the slices (sprites first),
     ``(pixel, which)`` of the pixels written and how many things were drawn (-1, nothing
     drawn: a picture to choose first)."""
+    seen, things, pictures = Seen(*seen), ThingArrays(*things), Pictures(*pictures)
+    scene, view, clip = Scene(*scene), View(*view), Clip(*clip)
     ints, floats, n_sprites, drawn = sprite_columns(seen, things, pictures, scene, lit, view,
                                                     clip, wall_ints, wall_floats)
     if drawn < 0 or ints.shape[1] == 0:

@@ -22,6 +22,7 @@ from typing import NamedTuple
 import numpy as np
 
 from wallbsp.jit import kernel, step_kernel
+from wallbsp.render.project import View
 
 __all__ = ["Entries", "DrawSegs", "entries_of", "W_MIN"]
 
@@ -65,7 +66,8 @@ def _boundary(view, fz, w):
 @kernel
 def column_entries(pieces, view, key_heights):
     """The pieces' ``Entries`` and their ``DrawSegs``."""
-    width, height = view.width, view.height
+    view = View(*view)
+    width, height, u = view.width, view.height, view.u
     n = 0
     for p in range(pieces.shape[0]):
         n += int(pieces[p, 4]) - int(pieces[p, 3])
@@ -86,7 +88,7 @@ def column_entries(pieces, view, key_heights):
         fz2 = view.f * (key_heights[2, key] - view.z)
         fz3 = view.f * (key_heights[3, key] - view.z)
         for c in range(int(pieces[p, 3]), int(pieces[p, 4])):
-            w = max(wa + wb * view.u[c], W_MIN)
+            w = max(wa + wb * u[c], W_MIN)
             p1 = _boundary(view, fz0, w)
             fl = max(p1, _boundary(view, fz1, w))
             up = min(max(_boundary(view, fz2, w), p1), fl)
@@ -118,12 +120,12 @@ def column_entries(pieces, view, key_heights):
         ds_windows[0, k], ds_windows[1, k] = bounds[4, i], bounds[5, i]
         ds_windows[2, k] = bounds[6, i]
         ds_windows[3, k] = max(bounds[7, i], bounds[6, i])
-    return (Entries(keys, cols, ws, bounds, open_top, open_bottom),
-            DrawSegs(ds_piece, ds_col, ds_w, ds_windows[0], ds_windows[1], ds_windows[2],
-                     ds_windows[3]))
+    return ((keys, cols, ws, bounds, open_top, open_bottom),     # plain tuples: quicker out
+            (ds_piece, ds_col, ds_w, ds_windows[0], ds_windows[1], ds_windows[2],
+             ds_windows[3]))
 
 
 def entries_of(pieces, view, heights):
     """``(Entries, DrawSegs, each piece's side key)`` of a walk's ``pieces``."""
-    entries, drawsegs = column_entries(pieces, view, heights.key_heights)
-    return entries, drawsegs, pieces[:, 0].astype(np.int64)
+    entries, drawsegs = column_entries(pieces, tuple(view), heights.key_heights)
+    return Entries(*entries), DrawSegs(*drawsegs), pieces[:, 0].astype(np.int64)

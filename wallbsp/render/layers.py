@@ -13,10 +13,13 @@ import math
 import numpy as np
 
 from wallbsp.jit import kernel
+from wallbsp.render.entries import Entries
 from wallbsp.render.fill import part_rows
 from wallbsp.render.frame import KIND_CEILING, KIND_FLOOR, KIND_NOTHING, KIND_WALL
+from wallbsp.render.project import View
 from wallbsp.render.rows import (label_rows_kernel, packed_pixels, rgb_rows_kernel,
                                  transpose_kernel)
+from wallbsp.render.surfaces import Parts, Scene
 
 __all__ = ["Layers", "paint_layers", "observe_rows"]
 
@@ -25,28 +28,32 @@ __all__ = ["Layers", "paint_layers", "observe_rows"]
 def paint_layers(entries, view, parts, scene, painter, kind_out, index_out, depth_out):
     """Kind, index and depth of every pixel, column-major (the parts as the fill draws
     them: front to back clipped, or the painter's, the nearer overwriting)."""
+    entries, view, parts, scene = Entries(*entries), View(*view), Parts(*parts), Scene(*scene)
     height = view.height
+    keys, cols, ws, bounds = entries.keys, entries.cols, entries.w, entries.bounds
+    part_kind, part_index = parts.kind, parts.index
+    sector_sky, floor, ceiling = scene.sector_sky, scene.floor, scene.ceiling
     inverse = np.empty(height, dtype=np.float64)
     for r in range(height):
         inverse[r] = 1.0 / abs(view.y0 - r)
     if painter:
         for p in range(kind_out.shape[0]):
             kind_out[p], index_out[p], depth_out[p] = KIND_NOTHING, -1, np.float32(math.inf)
-    for i in range(len(entries.keys)):
-        key, c = entries.keys[i], entries.cols[i]
+    for i in range(len(keys)):
+        key, c = keys[i], cols[i]
         at = c * height
         for part in range(4):
-            r0, r1 = part_rows(entries.bounds, i, part, painter, height)[:2]
+            r0, r1 = part_rows(bounds, i, part, painter, height)[:2]
             if r1 <= r0:
                 continue
-            kind = parts.kind[part, key]
-            index = parts.index[part, key]
+            kind = part_kind[part, key]
+            index = part_index[part, key]
             a, b = math.inf, 0.0
             if kind == KIND_WALL:
-                a = 1.0 / entries.w[i]
-            elif kind == KIND_FLOOR or not scene.sector_sky[index]:
+                a = 1.0 / ws[i]
+            elif kind == KIND_FLOOR or not sector_sky[index]:
                 a = 0.0
-                h = scene.ceiling[index] if kind == KIND_CEILING else scene.floor[index]
+                h = ceiling[index] if kind == KIND_CEILING else floor[index]
                 b = abs(view.f * (h - view.z))
             for r in range(r0, r1):
                 kind_out[at + r] = kind
@@ -55,9 +62,10 @@ def paint_layers(entries, view, parts, scene, painter, kind_out, index_out, dept
                 depth_out[at + r] = np.float32(a + scale)
     if painter:
         return
-    for c in range(len(entries.open_top)):
-        top = entries.open_top[c]
-        for r in range(top, max(entries.open_bottom[c], top)):
+    open_top, open_bottom = entries.open_top, entries.open_bottom
+    for c in range(len(open_top)):
+        top = open_top[c]
+        for r in range(top, max(open_bottom[c], top)):
             kind_out[c * height + r] = KIND_NOTHING
             index_out[c * height + r] = -1
             depth_out[c * height + r] = np.float32(math.inf)
@@ -70,6 +78,7 @@ def observe_rows(entries, view, parts, scene, painter, overlay, packed, rgb, dep
     ``labels`` ``(H, W, 2)`` (one of size 0 is not wanted): ``packed`` is the frame's
     colour ``(W*H,)``; ``overlay`` the masked pass's pixels, the slice each shows and the
     slices' kind, index and depth."""
+    entries, view, parts, scene = Entries(*entries), View(*view), Parts(*parts), Scene(*scene)
     width, height = view.width, view.height
     if depth_rows.size or labels.size:
         kind = np.empty(width * height, dtype=np.uint8)
@@ -123,8 +132,8 @@ class Layers:
         kind = np.empty(n, dtype=np.uint8)
         index = np.empty(n, dtype=np.int32)
         depth = np.empty(n, dtype=np.float32)
-        paint_layers(self.entries, view, self.parts, self.scene, self.painter, kind, index,
-                     depth)
+        paint_layers(tuple(self.entries), tuple(view), tuple(self.parts), tuple(self.scene),
+                     self.painter, kind, index, depth)
         return {"kind": kind.reshape(shape), "index": index.reshape(shape),
                 "depth": depth.reshape(shape)}
 
@@ -148,8 +157,8 @@ class Layers:
                "labels": _rows("labels" in names, rows + (2,), np.int32, given.get("labels"))}
         drawn = _NO_OVERLAY if overlay is None or overlay.slices is None else (
             overlay.pixel, overlay.which, *overlay.slices)
-        observe_rows(self.entries, view, self.parts, self.scene, self.painter, drawn, packed,
-                     out["rgb"], out["depth"], out["labels"])
+        observe_rows(tuple(self.entries), tuple(view), tuple(self.parts), tuple(self.scene),
+                     self.painter, drawn, packed, out["rgb"], out["depth"], out["labels"])
         return {name: out[name] for name in names}
 
 

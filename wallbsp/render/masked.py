@@ -20,8 +20,12 @@ from typing import NamedTuple
 import numpy as np
 
 from wallbsp.jit import kernel
+from wallbsp.render.atlas import Pictures
+from wallbsp.render.entries import DrawSegs
+from wallbsp.render.project import View
 from wallbsp.render.shading import FULL_BRIGHT, light_level
 from wallbsp.render.sprites import SLICE_FLOATS, SLICE_INTS
+from wallbsp.render.surfaces import Scene
 from wallbsp.render.textures import side_geometry, switched_name
 
 __all__ = ["masked_columns", "has_masked_walls", "masked_keys", "MaskedKeys"]
@@ -101,45 +105,51 @@ def masked_columns(drawsegs, piece_keys, walls, scene, pictures, lit, view):
     """``(ints, floats)``: the slices (``sprites.SLICE_INTS``) of the drawsegs whose piece's
     side key has a masked middle, clipped to the window the piece left open (kind: a
     wall)."""
+    drawsegs, walls, scene = DrawSegs(*drawsegs), MaskedWalls(*walls), Scene(*scene)
+    pictures, view = Pictures(*pictures), View(*view)
+    ds_piece, ds_col, ds_w = drawsegs.piece, drawsegs.col, drawsegs.w
+    open_top, open_bottom = drawsegs.open_top, drawsegs.open_bottom
+    slot, start, direction = walls.slot, walls.start, walls.direction
+    x_offset, y_offset, unpegged = walls.x_offset, walls.y_offset, walls.unpegged
+    key_near, key_far, key_wall = scene.key_near, scene.key_far, scene.key_wall
+    floor, ceiling, u = scene.floor, scene.ceiling, view.u
     total = 0
-    for j in range(drawsegs.piece.shape[0]):
-        total += walls.slot[piece_keys[drawsegs.piece[j]]] >= 0
+    for j in range(ds_piece.shape[0]):
+        total += slot[piece_keys[ds_piece[j]]] >= 0
     ints = np.empty((SLICE_INTS, total), dtype=np.int64)
     floats = np.empty((SLICE_FLOATS, total), dtype=np.float64)
     n = 0
-    for j in range(drawsegs.piece.shape[0]):
-        key = piece_keys[drawsegs.piece[j]]
-        p = walls.slot[key]
+    for j in range(ds_piece.shape[0]):
+        key = piece_keys[ds_piece[j]]
+        p = slot[key]
         if p < 0:
             continue
-        col, w = drawsegs.col[j], drawsegs.w[j]
+        col, w = ds_col[j], ds_w[j]
         depth = 1.0 / w
         width, height = pictures.width[p], pictures.height[p]
         # the texture column: floor(x_offset + |P - S|) mod width
-        px = view.x + depth * (view.fx + view.u[col] * view.rx)
-        py = view.y + depth * (view.fy + view.u[col] * view.ry)
-        along = (px - walls.start[key, 0]) * walls.direction[key, 0] \
-            + (py - walls.start[key, 1]) * walls.direction[key, 1]
-        offset = walls.x_offset[key] + (0.0 if key & 1 else
-                                        scene.wall_x_offset[scene.key_wall[key]])
+        px = view.x + depth * (view.fx + u[col] * view.rx)
+        py = view.y + depth * (view.fy + u[col] * view.ry)
+        along = (px - start[key, 0]) * direction[key, 0] + (py - start[key, 1]) * direction[key, 1]
+        offset = x_offset[key] + (0.0 if key & 1 else scene.wall_x_offset[key_wall[key]])
         tx = int(np.floor(offset + along)) % width
-        near, far = scene.key_near[key], scene.key_far[key]
-        floors = max(scene.floor[near], scene.floor[far])
-        ceilings = min(scene.ceiling[near], scene.ceiling[far])
-        top = (floors + height if walls.unpegged[key] else ceilings) + walls.y_offset[key]
+        near, far = key_near[key], key_far[key]
+        floors = max(floor[near], floor[far])
+        ceilings = min(ceiling[near], ceiling[far])
+        top = (floors + height if unpegged[key] else ceilings) + y_offset[key]
         # rows [r1, r2) whose centres see heights in (top - height, top]
         scale = view.f / depth
         r1 = int(np.ceil(view.y0 - (top - view.z) * scale))
         r2 = int(np.ceil(view.y0 - (top - height - view.z) * scale))
         tstep = depth / view.f
         t0 = top - view.z - view.y0 * tstep
-        row1 = max(r1, drawsegs.open_top[j])
-        row2 = max(min(r2, drawsegs.open_bottom[j]), row1)
+        row1 = max(r1, open_top[j])
+        row2 = max(min(r2, open_bottom[j]), row1)
         if row2 <= row1:
             continue
         level = light_level(scene.key_far_light[key], w) if lit else FULL_BRIGHT
         ints[0, n], ints[1, n], ints[2, n], ints[3, n] = col, row1, row2, p
-        ints[4, n], ints[5, n], ints[6, n] = tx, level, scene.key_wall[key]
+        ints[4, n], ints[5, n], ints[6, n] = tx, level, key_wall[key]
         floats[0, n], floats[1, n], floats[2, n] = t0, tstep, depth
         n += 1
     return _contiguous(ints, n), _contiguous(floats, n)  # sprite_columns' one type

@@ -18,11 +18,10 @@ from typing import NamedTuple
 import numpy as np
 
 from wallbsp.render.atlas import atlas_for
-from wallbsp.render.composite import draw_things
+from wallbsp.render import composite, masked, sprites
 from wallbsp.render.entries import entries_of
-from wallbsp.render.masked import masked_columns, masked_keys
-from wallbsp.render.sprites import (SLICE_FLOATS, SLICE_INTS, Clip, Seen, ThingArrays,
-                                    pictures, rotations, visible_things)
+from wallbsp.render.masked import masked_keys
+from wallbsp.render.sprites import SLICE_FLOATS, SLICE_INTS, pictures, rotations
 from wallbsp.render.textures import level_resources
 from wallbsp.render.walk import walk_front_to_back
 
@@ -150,28 +149,29 @@ def draw_masked(view, state, tables, scene, walk, piece_keys, drawsegs, atlas, c
     masked-wall columns drawn)."""
     things = state.things
     keys = masked_keys(tables, state, atlas)
-    considered, ids, offsets, masked = visible_things(
+    considered, ids, offsets, any_masked = sprites.visible_things(
         walk.leaf_array, len(things.tree.leaf_sector), things.leaf, things.alive,
-        things.drawn, things.x, things.y, things.radius, view, piece_keys, keys.slot)
+        things.drawn, things.x, things.y, things.radius, tuple(view), piece_keys, keys.slot)
     stats = {"things_considered": int(considered), "things_drawn": 0, "masked_columns": 0}
-    if not (len(ids) or masked):
+    if not (len(ids) or any_masked):
         return _NOTHING, stats
     dx, dy, depth, along = offsets
     wall_rows = _NO_WALLS
-    if masked:
-        wall_rows = masked_columns(drawsegs, piece_keys, keys.arrays, scene, atlas.arrays(),
-                                   bool(light), view)
+    if any_masked:
+        wall_rows = masked.masked_columns(tuple(drawsegs), piece_keys, tuple(keys.arrays),
+                                   tuple(scene), tuple(atlas.arrays()), bool(light), tuple(view))
         stats["masked_columns"] = wall_rows[0].shape[1]
-    seen = Seen(ids, depth, along, np.degrees(np.arctan2(dy, dx)))
-    clip = Clip(drawsegs.col, drawsegs.w, drawsegs.open_top, drawsegs.open_bottom,
-                drawsegs.piece, piece_keys, tables.key_near, tables.key_far)
+    # sprites.Seen and sprites.Clip, as plain tuples (numba takes them quicker)
+    seen = (ids, depth, along, np.degrees(np.arctan2(dy, dx)))
+    clip = (drawsegs.col, drawsegs.w, drawsegs.open_top, drawsegs.open_bottom, drawsegs.piece,
+            piece_keys, tables.key_near, tables.key_far)
     table = _choices(atlas, things)
     for _ in range(2):                       # again once the missing choices are made
-        arrays = ThingArrays(things.angle, things.type, things.sector, things.flags,
-                             things.height, things.z, things.bright, table.kind, table.chosen)
-        kind, index, slice_depth, pixel, which, drawn = draw_things(
-            seen, arrays, atlas.arrays(), scene, bool(light), view, clip, *wall_rows,
-            colour_columns)
+        arrays = (things.angle, things.type, things.sector, things.flags, things.height,
+                  things.z, things.bright, table.kind, table.chosen)     # sprites.ThingArrays
+        kind, index, slice_depth, pixel, which, drawn = composite.draw_things(
+            seen, arrays, tuple(atlas.arrays()), tuple(scene), bool(light), tuple(view), clip,
+            *wall_rows, colour_columns)
         if drawn >= 0:
             break
         table.choose(things, ids, view, atlas)

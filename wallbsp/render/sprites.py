@@ -26,6 +26,7 @@ import numpy as np
 
 from wallbsp.jit import kernel, step_kernel
 from wallbsp.sim.thingtypes import COUNTKILL, SPAWNCEILING, SPECIAL
+from wallbsp.render.project import View
 from wallbsp.render.shading import FULL_BRIGHT, far_level, light_level
 
 __all__ = ["MIN_DEPTH", "rotations", "pictures", "ThingArrays", "Seen", "Clip",
@@ -127,6 +128,7 @@ def visible_things(leaves, n_leaves, leaf, alive, drawn, x, y, radius, view, pie
     the view (DOOM's R_ProjectSprite gives up on a thing four times further aside than
     ahead), with their offsets from the eye as the rows of one array; and whether a
     piece's side key has a masked middle (``masked_slot`` >= 0)."""
+    view = View(*view)
     masked = False
     for k in range(piece_keys.shape[0]):
         if masked_slot[piece_keys[k]] >= 0:
@@ -165,7 +167,7 @@ def visible_things(leaves, n_leaves, leaf, alive, drawn, x, y, radius, view, pie
 
 
 @step_kernel
-def _window(col, lo, fraction, scale, own, clip, keys, scene, view):
+def _window(col, lo, fraction, scale, own, clip, keys, floor, ceiling, view):
     """Rows ``(top, bottom)`` of column ``col`` through which something of sector ``own``
     at depth ``d`` is seen (``fraction``: ``d / (1 + d)``; ``scale``: ``f / d``; ``lo``:
     the column's first drawseg, if it has one).
@@ -177,28 +179,29 @@ def _window(col, lo, fraction, scale, own, clip, keys, scene, view):
     between the piece and ``d`` are nearer too and close the window further; the own
     sector never does (DOOM lets a sprite's feet reach below its floor).  The column's
     drawsegs are searched by the key ``col + 1/(1 + w)`` (running max), which ``keys``
-    keeps once made (NaN before)."""
+    keeps once made (NaN before).  ``clip``: the ``Clip``'s arrays, as a tuple."""
+    ds_col, ds_w, open_top, open_bottom, piece, piece_keys, key_near, key_far = clip
     height = view.height
-    if lo == clip.col.shape[0] or clip.col[lo] != col:   # no piece: out of the map
+    if lo == ds_col.shape[0] or ds_col[lo] != col:   # no piece: out of the map
         top, bottom, beyond = 0, height, -1
     else:
         q = col + fraction
         last, key = lo - 1, -np.inf
-        while last + 1 < clip.col.shape[0] and clip.col[last + 1] == col:
+        while last + 1 < ds_col.shape[0] and ds_col[last + 1] == col:
             if np.isnan(keys[last + 1]):
-                keys[last + 1] = 1.0 / (1.0 + clip.w[last + 1])
+                keys[last + 1] = 1.0 / (1.0 + ds_w[last + 1])
             key = max(key, col + keys[last + 1])
             if not key < q:
                 break
             last += 1
         if last >= lo:                                # a nearer piece in the column
-            top, bottom = clip.open_top[last], clip.open_bottom[last]
-            beyond = clip.key_far[clip.piece_keys[clip.piece[last]]]
+            top, bottom = open_top[last], open_bottom[last]
+            beyond = key_far[piece_keys[piece[last]]]
         else:                                         # the column's ray starts here
-            top, bottom, beyond = 0, height, clip.key_near[clip.piece_keys[clip.piece[lo]]]
+            top, bottom, beyond = 0, height, key_near[piece_keys[piece[lo]]]
     if beyond >= 0 and beyond != own:
-        floor_row = np.ceil(view.y0 - (scene.floor[beyond] - view.z) * scale)
-        ceiling_row = np.ceil(view.y0 - (scene.ceiling[beyond] - view.z) * scale)
+        floor_row = np.ceil(view.y0 - (floor[beyond] - view.z) * scale)
+        ceiling_row = np.ceil(view.y0 - (ceiling[beyond] - view.z) * scale)
         bottom = int(min(float(bottom), floor_row))
         top = int(max(float(top), ceiling_row))
     return top, bottom
@@ -208,13 +211,14 @@ def _window(col, lo, fraction, scale, own, clip, keys, scene, view):
 def _chosen_pictures(seen, things):
     """Each thing's picture ``slot * 2 + mirrored`` at the rotation it is seen from (as
     ``rotations``), as ``pictures`` chose it before; -1 where not chosen yet."""
-    picture = np.empty(seen.ids.shape[0], dtype=np.int64)
-    for k in range(seen.ids.shape[0]):
-        i = seen.ids[k]
-        facing = np.floor(things.angle[i] / 45.0) * 45.0
-        rotation = int(np.floor((seen.seen[k] - facing + 202.5) / 45.0)) % 8 + 1
-        picture[k] = things.chosen[i, rotation - 1] if things.chosen_kind[i] == things.type[i] \
-            else -1
+    ids, degrees, angle, kind = seen.ids, seen.seen, things.angle, things.type
+    chosen, chosen_kind = things.chosen, things.chosen_kind
+    picture = np.empty(ids.shape[0], dtype=np.int64)
+    for k in range(ids.shape[0]):
+        i = ids[k]
+        facing = np.floor(angle[i] / 45.0) * 45.0
+        rotation = int(np.floor((degrees[k] - facing + 202.5) / 45.0)) % 8 + 1
+        picture[k] = chosen[i, rotation - 1] if chosen_kind[i] == kind[i] else -1
     return picture
 
 
@@ -224,7 +228,14 @@ def sprite_columns(seen, things, pictures, scene, lit, view, clip, wall_ints, wa
     clipped to the windows, then the masked walls' (``wall_ints``, ``wall_floats``); how
     many of them are sprites', and how many things have one.  ``drawn`` is -1 (and nothing
     is made) when a thing's picture is not chosen yet."""
-    m = seen.ids.shape[0]
+    ids, depth, along = seen.ids, seen.depth, seen.along
+    pic_width, pic_height, pic_left, pic_top = (pictures.width, pictures.height, pictures.left,
+                                                pictures.top)
+    floor, ceiling, u = scene.floor, scene.ceiling, view.u
+    ds_col = clip.col
+    arrays = (ds_col, clip.w, clip.open_top, clip.open_bottom, clip.piece, clip.piece_keys,
+              clip.key_near, clip.key_far)
+    m = ids.shape[0]
     picture = _chosen_pictures(seen, things)
     first = np.empty(m, dtype=np.int64)
     counts = np.empty(m, dtype=np.int64)
@@ -232,29 +243,30 @@ def sprite_columns(seen, things, pictures, scene, lit, view, clip, wall_ints, wa
     for s in range(m):
         if picture[s] < 0:
             return (np.empty((SLICE_INTS, 0), np.int64), np.empty((SLICE_FLOATS, 0)), 0, -1)
-        w, lft = pictures.width[picture[s] >> 1], pictures.left[picture[s] >> 1]
-        scale = view.f / seen.depth[s]
-        c1 = int(max(np.ceil(view.x0 + (seen.along[s] - lft) * scale), 0.0))
-        c2 = min(np.ceil(view.x0 + (seen.along[s] - lft + w) * scale), float(view.width))
+        w, lft = pic_width[picture[s] >> 1], pic_left[picture[s] >> 1]
+        scale = view.f / depth[s]
+        c1 = int(max(np.ceil(view.x0 + (along[s] - lft) * scale), 0.0))
+        c2 = min(np.ceil(view.x0 + (along[s] - lft + w) * scale), float(view.width))
         first[s], counts[s] = c1, max(int(c2) - c1, 0)
         total += counts[s]
     walls = wall_ints.shape[1]
     ints = np.empty((SLICE_INTS, total + walls), dtype=np.int64)
     floats = np.empty((SLICE_FLOATS, total + walls), dtype=np.float64)
-    keys = np.full(clip.col.shape[0], np.nan)
+    keys = np.full(ds_col.shape[0], np.nan)
     n, drawn = 0, 0
     for s in range(m):
         if counts[s] == 0:
             continue
-        i, d, p = seen.ids[s], seen.depth[s], picture[s] >> 1
-        w, h, lft = pictures.width[p], pictures.height[p], pictures.left[p]
-        home = max(things.sector[i], 0)
+        i, d, p = ids[s], depth[s], picture[s] >> 1
+        w, h, lft = pic_width[p], pic_height[p], pic_left[p]
+        own = things.sector[i]
+        home = max(own, 0)
         if np.isnan(things.z[i]):
-            feet = scene.ceiling[home] - things.height[i] if things.flags[i] & SPAWNCEILING \
-                else scene.floor[home]
+            feet = ceiling[home] - things.height[i] if things.flags[i] & SPAWNCEILING \
+                else floor[home]
         else:
             feet = things.z[i]
-        top_height = feet + pictures.top[p]
+        top_height = feet + pic_top[p]
         scale = view.f / d
         r1 = int(np.ceil(view.y0 - (top_height - view.z) * scale))
         r2 = int(np.ceil(view.y0 - (top_height - h - view.z) * scale))
@@ -266,17 +278,18 @@ def sprite_columns(seen, things, pictures, scene, lit, view, clip, wall_ints, wa
         if min(r2, view.height) <= max(r1, 0):        # above or below the frame
             continue
         before = n
-        lo = np.searchsorted(clip.col, first[s])       # the first column's first entry
+        lo = np.searchsorted(ds_col, first[s])         # the first column's first entry
         fraction = d / (1.0 + d)
+        mirrored = picture[s] & 1
         for col in range(first[s], first[s] + counts[s]):
-            while lo < clip.col.shape[0] and clip.col[lo] < col:
+            while lo < ds_col.shape[0] and ds_col[lo] < col:
                 lo += 1
-            tx = int(np.floor(view.u[col] * d - (seen.along[s] - lft)))
+            tx = int(np.floor(u[col] * d - (along[s] - lft)))
             tx = min(max(tx, 0), w - 1)
-            if picture[s] & 1:                            # mirrored
+            if mirrored:
                 tx = w - 1 - tx
-            win_top, win_bottom = _window(col, lo, fraction, scale, things.sector[i], clip,
-                                          keys, scene, view)
+            win_top, win_bottom = _window(col, lo, fraction, scale, own, arrays, keys, floor,
+                                          ceiling, view)
             row1 = max(r1, win_top)
             row2 = max(min(r2, win_bottom), row1)
             if row2 > row1:

@@ -30,7 +30,7 @@ import numpy as np
 
 from wallbsp.geometry import exact_side, side_tolerance
 from wallbsp.jit import kernel, step_kernel
-from wallbsp.render.project import box_columns, project_seg
+from wallbsp.render.project import View, box_columns, project_seg
 
 __all__ = ["Walk", "walk_front_to_back", "walk_back_to_front", "eye_tolerance", "open_spans",
            "close_span", "FAR"]
@@ -72,10 +72,10 @@ def eye_tolerance(line_max, ex, ey) -> float:
 
 
 @step_kernel
-def _eye_side(tree, node, view, tol, known):
+def _eye_side(lines, node, view, tol, known):
     """The side of the eye of ``node``'s line by its sign; NaN when doubles cannot tell
     and ``known`` (rows ``node, side``: the rationals' answers so far) does not say."""
-    s = tree.lines[node, 0] * view.x + tree.lines[node, 1] * view.y + tree.lines[node, 2]
+    s = lines[node, 0] * view.x + lines[node, 1] * view.y + lines[node, 2]
     if not (s < -tol or s > tol):
         s = np.nan
         for k in range(known.shape[0]):
@@ -133,9 +133,8 @@ def open_spans(starts, ends, count, c1, c2, spans):
 
 
 @step_kernel
-def _seen(view, tree, i, back, out):
-    """Project seg ``i`` as seen from its front or ``back`` into ``out``."""
-    e = tree.ends
+def _seen(view, e, i, back, out):
+    """Project seg ``i`` (ends ``e``) as seen from its front or ``back`` into ``out``."""
     if back:
         return project_seg(view, e[i, 2], e[i, 3], e[i, 0], e[i, 1], out)
     return project_seg(view, e[i, 0], e[i, 1], e[i, 2], e[i, 3], out)
@@ -181,7 +180,10 @@ def front_to_back(view, tol, root, tree, boxes, solid, known):
     """``(unsure node or -1, pieces (n, 5), leaves, nodes visited, segs drawn, early
     exit)``: the walk, or the first node whose side it needs in rationals (nothing else
     is then meaningful)."""
-    n_nodes = tree.lines.shape[0]
+    view, tree = View(*view), WalkTables(*tree)
+    lines, kids, seg_ranges, inside = tree.lines, tree.kids, tree.seg_ranges, tree.inside
+    ends, flips, one_sided = tree.ends, tree.flips, tree.one_sided
+    n_nodes = lines.shape[0]
     width = view.width
     starts = np.empty(width + 4, dtype=np.int64)
     stops = np.empty(width + 4, dtype=np.int64)
@@ -209,10 +211,10 @@ def front_to_back(view, tol, root, tree, boxes, solid, known):
             if stops[_bisect(starts, count, span[0], True) - 1] >= span[1]:
                 continue                          # hidden behind one closed interval
             visited += 1
-            s = _eye_side(tree, item, view, tol, known)
+            s = _eye_side(lines, item, view, tol, known)
             if np.isnan(s):
                 return item, pieces[:0], leaves[:0], visited, segs_drawn, early_exit
-            k0, k1 = tree.kids[item, 0], tree.kids[item, 1]
+            k0, k1 = kids[item, 0], kids[item, 1]
             if s <= 0:                            # on the line counts as in front
                 near, far, show_segs = k0, k1, s < 0     # on it: its segs are edge on
             else:
@@ -220,7 +222,7 @@ def front_to_back(view, tol, root, tree, boxes, solid, known):
             if far >= 0:
                 stack[top] = far
                 top += 1
-            elif tree.inside[~far]:
+            elif inside[~far]:
                 stack[top] = n_nodes + ~far
                 top += 1
             if show_segs:
@@ -229,17 +231,17 @@ def front_to_back(view, tol, root, tree, boxes, solid, known):
             if near >= 0:
                 stack[top] = near
                 top += 1
-            elif tree.inside[~near]:
+            elif inside[~near]:
                 leaves, n_leaves = _append(leaves, n_leaves, ~near)   # it would be next
             continue
         code = ~item
         eye_back = code & 1
         node = code >> 1
-        for i in range(tree.seg_ranges[node, 0], tree.seg_ranges[node, 1]):
-            back = eye_back ^ tree.flips[i]
-            if back and tree.one_sided[i]:
+        for i in range(seg_ranges[node, 0], seg_ranges[node, 1]):
+            back = eye_back ^ flips[i]
+            if back and one_sided[i]:
                 continue
-            if not _seen(view, tree, i, back, seen):
+            if not _seen(view, ends, i, back, seen):
                 continue
             c1, c2 = int(seen[0]), int(seen[1])
             key = (i << 1) | back
@@ -260,7 +262,10 @@ def front_to_back(view, tol, root, tree, boxes, solid, known):
 @kernel
 def back_to_front(view, tol, root, tree, known):
     """``(unsure node or -1, pieces (n, 5), nodes visited)``: the painter's walk."""
-    n_nodes = tree.lines.shape[0]
+    view, tree = View(*view), WalkTables(*tree)
+    lines, kids, boxes, seg_ranges = tree.lines, tree.kids, tree.boxes, tree.seg_ranges
+    ends, flips, one_sided = tree.ends, tree.flips, tree.one_sided
+    n_nodes = lines.shape[0]
     stack, top = _stack(n_nodes, root)
     pieces = np.empty((64, 5), dtype=np.float64)
     n_pieces = 0
@@ -274,19 +279,19 @@ def back_to_front(view, tol, root, tree, known):
             code = ~item
             eye_back = code & 1
             node = code >> 1
-            for i in range(tree.seg_ranges[node, 1] - 1, tree.seg_ranges[node, 0] - 1, -1):
-                back = eye_back ^ tree.flips[i]
-                if back and tree.one_sided[i]:
+            for i in range(seg_ranges[node, 1] - 1, seg_ranges[node, 0] - 1, -1):
+                back = eye_back ^ flips[i]
+                if back and one_sided[i]:
                     continue
-                if _seen(view, tree, i, back, seen):
+                if _seen(view, ends, i, back, seen):
                     pieces, n_pieces = _add_piece(pieces, n_pieces, (i << 1) | back, seen,
                                                   int(seen[0]), int(seen[1]))
-        elif box_columns(view, tree.boxes[item], span):
+        elif box_columns(view, boxes[item], span):
             visited += 1
-            s = _eye_side(tree, item, view, tol, known)
+            s = _eye_side(lines, item, view, tol, known)
             if np.isnan(s):
                 return item, pieces[:0], visited
-            k0, k1 = tree.kids[item, 0], tree.kids[item, 1]
+            k0, k1 = kids[item, 0], kids[item, 1]
             near, far = (k0, k1) if s <= 0 else (k1, k0)
             if near >= 0:
                 stack[top] = near
@@ -335,8 +340,8 @@ def walk_front_to_back(tables, heights, view, boxes=None) -> Walk:
     tol = eye_tolerance(tables.line_max, view.x, view.y)
     boxes = tree.boxes if boxes is None else boxes
     pieces, leaves, visited, segs_drawn, early_exit = _walked(
-        lambda known: front_to_back(view, tol, tables.root, tree, boxes, heights.key_closes,
-                                    known), tables, view)
+        lambda known: front_to_back(tuple(view), tol, tables.root, tuple(tree), boxes,
+                                    heights.key_closes, known), tables, view)
     stats = {"nodes_visited": int(visited), "segs_drawn": int(segs_drawn),
              "early_exit": bool(early_exit), "pieces": len(pieces),
              "nodes": tables.node_count}
@@ -347,8 +352,9 @@ def walk_back_to_front(tables, view) -> Walk:
     """The painter's walk of ``view`` (a ``View``)."""
     tree = walk_tables(tables)
     tol = eye_tolerance(tables.line_max, view.x, view.y)
-    pieces, visited = _walked(lambda known: back_to_front(view, tol, tables.root, tree, known),
-                              tables, view)
+    pieces, visited = _walked(
+        lambda known: back_to_front(tuple(view), tol, tables.root, tuple(tree), known), tables,
+        view)
     stats = {"nodes_visited": int(visited), "segs_drawn": len(pieces), "early_exit": False,
              "pieces": len(pieces), "nodes": tables.node_count}
     return Walk(pieces, stats, np.zeros(0, dtype=np.int64))
