@@ -12,9 +12,9 @@ from wallbsp.sim.rng import Random
 from wallbsp.game.playsim.structs import Mobj, Player, Sector, Line, Side, Thinker, \
     EXE_DOOM_1_9, EXE_ULTIMATE, EXE_DOOM_1_2, RETAIL, COMMERCIAL
 from wallbsp.game.playsim.monsters import Monsters, mobj_thinkers, DI_EAST, DI_NORTHEAST, \
-    DI_NORTH, DI_NORTHWEST, DI_WEST, DI_SOUTHWEST, DI_SOUTH, DI_SOUTHEAST, DI_NODIR, \
-    ML_TWOSIDED, ML_SOUNDBLOCK
+    DI_NORTH, DI_NORTHWEST, DI_WEST, DI_SOUTHWEST, DI_SOUTH, DI_SOUTHEAST, DI_NODIR
 from wallbsp.game.playsim.attacks import MonsterAttacks
+from wallbsp.game.playsim.hearing import Hearing, ML_SOUNDBLOCK, ML_TWOSIDED
 from wallbsp.game.playsim.archvile import ArchVile
 from wallbsp.game.playsim.deaths import MonsterDeaths
 from wallbsp.game.playsim.brain import BossBrain
@@ -22,7 +22,7 @@ from wallbsp.game.playsim.brain import BossBrain
 U = FRACUNIT
 
 
-class Fake(Monsters, MonsterAttacks, ArchVile, MonsterDeaths, BossBrain):
+class Fake(Monsters, Hearing, MonsterAttacks, ArchVile, MonsterDeaths, BossBrain):
     """Just enough of Play: the other modules' functions are stubs that record calls."""
 
     def __init__(self):
@@ -569,7 +569,7 @@ def test_brain_spit_flies_until_the_spot_and_skips_every_other_on_easy():
 
 def test_every_action_of_p_enemy_has_its_cname_method():
     from wallbsp.game.playsim import cname
-    ours = (Monsters, MonsterAttacks, ArchVile, MonsterDeaths, BossBrain)
+    ours = (Monsters, Hearing, MonsterAttacks, ArchVile, MonsterDeaths, BossBrain)
     names = {name for cls in ours for name in vars(cls)}
     for action in ("A_Look", "A_Chase", "A_FaceTarget", "A_PosAttack", "A_SPosAttack",
                    "A_CPosAttack", "A_CPosRefire", "A_SpidRefire", "A_BspiAttack",

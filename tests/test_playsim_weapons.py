@@ -1,5 +1,6 @@
 """p_pspr.c's port (``Weapons``) against results worked out by hand from the C code."""
 from wallbsp.game.playsim.structs import BT_ATTACK, COMMERCIAL, Mobj, Player, PST_DEAD
+from wallbsp.game.playsim.weaponfire import WeaponFire
 from wallbsp.game.playsim.weapons import PS_FLASH, PS_WEAPON, WEAPONBOTTOM, WEAPONTOP, \
     Weapons
 from wallbsp.sim import info
@@ -20,7 +21,7 @@ class ScriptedRng:
         return r - self.p_random()
 
 
-class Stub(Weapons):
+class Stub(Weapons, WeaponFire):
     """Weapons with the other modules' functions recorded instead of run."""
 
     def __init__(self, rng=(), targets=()):
@@ -189,7 +190,7 @@ def test_saw_turns_slowly_when_the_target_is_near_ahead():
 
 
 def test_decrease_ammo_past_numammo_hits_maxammo():
-    from wallbsp.game.playsim.weapons import _decrease_ammo
+    from wallbsp.game.playsim.weapons import decrease_ammo
     player = make_player()
-    _decrease_ammo(player, info.am_noammo, 1)      # am_noammo = NUMAMMO + 1 → maxammo[1]
+    decrease_ammo(player, info.am_noammo, 1)      # am_noammo = NUMAMMO + 1 → maxammo[1]
     assert player.maxammo == [200, 49, 300, 50] and player.ammo == [50, 0, 0, 0]

@@ -1,11 +1,10 @@
 """``p_enemy.c``'s thinking half: how monsters hear, see, choose a direction and walk.
 
-``Monsters`` is the mixin for ``Play``: sound propagation (``P_RecursiveSound``,
-``P_NoiseAlert``), the range checks, the step and the choice of a new direction
+``Monsters`` is the mixin for ``Play``: the range checks, the step and the choice of a new direction
 (``P_Move``, ``P_TryWalk``, ``P_NewChaseDir``), ``P_LookForPlayers`` and the actions
 ``A_Look``, ``A_Chase`` (with its walking-sound variants ``A_Hoof``, ``A_Metal``,
 ``A_BabyMetal``) and ``A_FaceTarget``.  The rest of ``p_enemy.c`` is in ``attacks.py``
-(the attacks), ``archvile.py`` (the arch-vile), ``deaths.py`` (pain, death, the bosses'
+(the attacks), ``hearing.py`` (how noise wakes them), ``archvile.py`` (the arch-vile), ``deaths.py`` (pain, death, the bosses'
 deaths) and ``brain.py`` (the boss brain).
 
 ``init_monsters(self)`` sets ``p_enemy.c``'s globals (``soundtarget``, the arch-vile's
@@ -31,8 +30,6 @@ XSPEED = (FRACUNIT, 47000, 0, -47000, -FRACUNIT, -47000, 0, 47000)
 YSPEED = (0, 47000, FRACUNIT, 47000, 0, -47000, -FRACUNIT, -47000)
 
 # doomdata.h line flags, p_local.h distances
-ML_TWOSIDED = 4
-ML_SOUNDBLOCK = 64
 MELEERANGE = 64 * FRACUNIT
 FLOATSPEED = 4 * FRACUNIT
 MAXRADIUS = 32 * FRACUNIT
@@ -56,56 +53,6 @@ class Monsters:
         self.braintargeton = 0
         if not hasattr(self, "brainspit_easy"):
             self.brainspit_easy = 0           # A_BrainSpit's `static int easy`: game-wide
-
-    # ---- hearing -----------------------------------------------------------------------
-
-    def _flood_sector(self, sec, soundblocks):
-        """P_RecursiveSound's entry test and marking; False if ``sec`` is already flooded
-        at least as loudly."""
-        if sec.validcount == self.validcount and sec.soundtraversed <= soundblocks + 1:
-            return False
-        sec.validcount = self.validcount
-        sec.soundtraversed = soundblocks + 1
-        sec.soundtarget = self.soundtarget
-        return True
-
-    def p_recursive_sound(self, sec, soundblocks):
-        """Wake the sectors sound reaches from ``sec``: C's depth-first recursion, kept
-        in the same visiting order with an explicit stack (a big map would pass Python's
-        recursion limit)."""
-        if not self._flood_sector(sec, soundblocks):
-            return
-        stack = [(sec, soundblocks, iter(sec.lines))]
-        while stack:
-            sec, soundblocks, lines = stack[-1]
-            for check in lines:
-                if not check.flags & ML_TWOSIDED:
-                    continue
-                self.p_line_opening(check)
-                if self.openrange <= 0:
-                    continue                  # closed door
-                if self.sides[check.sidenum[0]].sector is sec:
-                    other = self.sides[check.sidenum[1]].sector
-                else:
-                    other = self.sides[check.sidenum[0]].sector
-                if check.flags & ML_SOUNDBLOCK:
-                    if soundblocks:
-                        continue
-                    blocks = 1
-                else:
-                    blocks = soundblocks
-                if self._flood_sector(other, blocks):
-                    # descend; this sector's walk resumes after the child's
-                    stack.append((other, blocks, iter(other.lines)))
-                    break
-            else:
-                stack.pop()
-
-    def p_noise_alert(self, target, emmiter):
-        """A player's noise wakes the monsters that can hear it."""
-        self.soundtarget = target
-        self.validcount += 1
-        self.p_recursive_sound(emmiter.subsector.sector, 0)
 
     # ---- range checks ------------------------------------------------------------------
 
