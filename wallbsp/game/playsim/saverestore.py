@@ -8,8 +8,9 @@ import types
 
 from wallbsp.sim import info
 
-from .savestate import (_UNSET, CACHES, STATIC, SaveError, _fields, _get, _Refs, _Unset,
-                        derived_names, dynamic_fields, map_tables, resolve_class, slots_of)
+from .savestate import (CACHES, STATIC, UNSET_MARK, References, SaveError, Unset, derived_names,
+                        dynamic_fields, map_tables, resolve_class, saved_fields, saved_value,
+                        slots_of)
 from .structs import Player, Thinker
 
 
@@ -21,7 +22,7 @@ class Decoder:
     def __init__(self, play, body):
         self.play, self.body = play, body
         self.cls = type(play)
-        self.seqs = _Refs(play).seqs
+        self.seqs = References(play).seqs
         self.memo, self.busy = {}, set()
 
     def apply(self):
@@ -95,7 +96,7 @@ class Decoder:
     def _class_entry(self, i, entry):
         key, fields = _sized(entry, 2)
         cls = self._at(f"classes[{i}]", lambda: resolve_class(key))
-        if list(fields) != _fields(cls):
+        if list(fields) != saved_fields(cls):
             raise SaveError(f"classes[{i}]: {key} has other fields in this version")
         return cls
 
@@ -104,14 +105,14 @@ class Decoder:
                 or not 0 <= row[0] < len(self.classes):
             raise SaveError(f"{where}: not an object")
         cls = self.classes[row[0]]
-        if len(row) != 1 + len(_fields(cls)):
+        if len(row) != 1 + len(saved_fields(cls)):
             raise SaveError(f"{where}: {len(row) - 1} fields, {cls.__name__} has "
-                            f"{len(_fields(cls))}")
+                            f"{len(saved_fields(cls))}")
         return cls, row[1:]
 
     def _fill(self, obj, row, where):
         cls, values = self._row_class(row, where)
-        self._assign(obj, _fields(cls), values, where)
+        self._assign(obj, saved_fields(cls), values, where)
 
     def _assign(self, obj, fields, values, where):
         if not isinstance(values, list) or len(values) != len(fields):
@@ -119,7 +120,7 @@ class Decoder:
         name, dec = None, self.dec
         try:
             for name, value in zip(fields, values):
-                if value != _UNSET:
+                if value != UNSET_MARK:
                     setattr(obj, name, dec(value))
         except Exception as e:
             self._at(f"{where}.{name}", lambda: _raise(e))
@@ -228,13 +229,13 @@ def first_difference(a, b):
     object in ``b``) — else the path of the first difference found and what differs."""
     seen, back = {id(a): b}, {id(b): a}
     skip = CACHES | ((derived_names(a) | derived_names(b)) - STATIC)
-    stack = [(f"play.{n}", getattr(a, n, _Unset), getattr(b, n, _Unset))
+    stack = [(f"play.{n}", getattr(a, n, Unset), getattr(b, n, Unset))
              for n in sorted(set(vars(a)) | set(vars(b)), reverse=True) if n not in skip]
     while stack:
         path, x, y = stack.pop()
         if type(x) is not type(y):
             return f"{path}: {type(x).__name__} != {type(y).__name__}"
-        if isinstance(x, (int, str, float, bytes, type(None))) or x is _Unset:
+        if isinstance(x, (int, str, float, bytes, type(None))) or x is Unset:
             if x != y:
                 return f"{path}: {x!r} != {y!r}"
             continue
@@ -260,5 +261,5 @@ def first_difference(a, b):
                 stack.append((f"{path}.key", k, kk))
         else:
             names = slots_of(type(x)) + sorted(getattr(x, "__dict__", {}))
-            stack.extend((f"{path}.{n}", _get(x, n), _get(y, n)) for n in reversed(names))
+            stack.extend((f"{path}.{n}", saved_value(x, n), saved_value(y, n)) for n in reversed(names))
     return None

@@ -56,7 +56,7 @@ LINE_FIXED = frozenset(("id", "v1", "v2", "dx", "dy", "sidenum", "bbox", "slopet
 SIDE_FIXED = frozenset(("id", "sector"))
 CLASS_PREFIXES = ("wallbsp.game.playsim.", "wallbsp.sim.")
 _ATOMS = frozenset((int, bool, str, float, type(None), bytes, types.FunctionType))
-_UNSET = {"u": 0}
+UNSET_MARK = {"u": 0}
 
 
 class SaveError(ValueError):
@@ -144,13 +144,13 @@ def _is_structure(cls):
     if not isinstance(cls, type) or issubclass(cls, BaseException):
         return False
     if issubclass(cls, tuple):
-        return hasattr(cls, "_fields")
+        return hasattr(cls, "saved_fields")
     # slotted all the way down: an instance has exactly its slots
     return all("__slots__" in k.__dict__ and "__dict__" not in k.__dict__["__slots__"]
                for k in cls.__mro__[:-1])
 
 
-class _Refs:
+class References:
     """The map's objects a value may point at: ``tag(v)`` → (tag, index) or None;
     ``seqs[tag]`` the objects of a tag, by index."""
 
@@ -206,7 +206,7 @@ class Encoder:
     def __init__(self, play):
         self.play = play
         self.cls = type(play)
-        self.refs = _Refs(play)
+        self.refs = References(play)
         self.mobjinfo = {id(rec): i for i, rec in enumerate(info.MOBJINFO)}
         self.thinkers, self.thinker_index = [], {}
         cap = play.thinkercap
@@ -231,11 +231,11 @@ class Encoder:
     def _tables(self):
         """(section, fields, rows of values) of the players and the map's changing fields."""
         play = self.play
-        yield "players", slots_of(Player), [[_get(p, n) for n in slots_of(Player)]
+        yield "players", slots_of(Player), [[saved_value(p, n) for n in slots_of(Player)]
                                             for p in play.players]
         for name, seq, fixed, cls in map_tables(play):
             fields = dynamic_fields(cls, fixed)
-            yield name, fields, [[_get(obj, n) for n in fields] for obj in seq]
+            yield name, fields, [[saved_value(obj, n) for n in fields] for obj in seq]
 
     # pass 1: what is reached from more than one place
     def _scan(self, values, where):
@@ -243,7 +243,7 @@ class Encoder:
         counts, refs = self.counts, self.refs
         while stack:
             v = stack.pop()
-            if type(v) in _ATOMS or v is _Unset:
+            if type(v) in _ATOMS or v is Unset:
                 continue
             if id(v) in self.mobjinfo or refs.tag(v) is not None:
                 continue
@@ -267,7 +267,7 @@ class Encoder:
                 if not _is_structure(type(v)) or not type(v).__module__.startswith(
                         CLASS_PREFIXES):
                     raise SaveError(f"{where}: cannot save a {type(v).__name__}")
-                stack.extend(_get(v, n) for n in _fields(type(v)))
+                stack.extend(saved_value(v, n) for n in saved_fields(type(v)))
 
     def state(self):
         play = self.play
@@ -282,7 +282,7 @@ class Encoder:
         done = 0
         while done < len(self.thinkers):        # growing: thinkers reached from thinkers
             th = self.thinkers[done]
-            self._scan([_get(th, n) for n in slots_of(type(th))], f"thinkers[{done}]")
+            self._scan([saved_value(th, n) for n in slots_of(type(th))], f"thinkers[{done}]")
             done += 1
         out = {"listed": self.listed,
                "thinkers": [self._object(th) for th in self.thinkers],
@@ -301,20 +301,20 @@ class Encoder:
         i = self.class_index.get(cls)
         if i is None:
             i = self.class_index[cls] = len(self.classes)
-            self.classes.append([class_key(cls), _fields(cls)])
+            self.classes.append([class_key(cls), saved_fields(cls)])
         return i
 
     def _object(self, obj):
         cls = type(obj)
-        return [self._class(cls)] + [self.enc(_get(obj, n)) for n in _fields(cls)]
+        return [self._class(cls)] + [self.enc(saved_value(obj, n)) for n in saved_fields(cls)]
 
     # pass 2: the values
     def enc(self, v):
         t = type(v)
         if t is int or t is str or t is bool or v is None or t is float:
             return v
-        if v is _Unset:
-            return dict(_UNSET)
+        if v is Unset:
+            return dict(UNSET_MARK)
         r = self.refs.tag(v)
         if r is not None:
             return {r[0]: r[1]}
@@ -349,15 +349,15 @@ class Encoder:
         return {"o": self._object(v)}
 
 
-def _fields(cls):
+def saved_fields(cls):
     if issubclass(cls, tuple):
-        return list(cls._fields)
+        return list(cls.saved_fields)
     return slots_of(cls)
 
 
-def _get(obj, name):
-    return getattr(obj, name, _Unset)
+def saved_value(obj, name):
+    return getattr(obj, name, Unset)
 
 
-class _Unset:
+class Unset:
     """A slot never assigned (saved as ``{"u": 0}``)."""
