@@ -10,7 +10,8 @@ PACKAGE = Path(__file__).resolve().parent.parent / "wallbsp"
 
 # folder → its place in the pipeline; a module imports only from lower places or its own folder
 LAYERS = {"core": 0, "assets": 1, "level": 2, "bsp": 3, "generate": 3, "sim": 4,
-          "render": 5, "game": 5, "sound": 5, "app": 6, "envs": 7}
+          "render": 5, "game": 5, "sound": 5, "screen": 6, "app": 7,
+          "envs": 8}
 ENTRY_POINTS = {"wallbsp", "wallbsp.__main__"}     # the lazy API and `python -m wallbsp`
 
 

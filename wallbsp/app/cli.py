@@ -136,10 +136,18 @@ def cmd_render(args):
     check_outputs("render", [args.output, args.ids, args.depth], [args.source])
     tree = load_any(args.source, args, strict=args.strict)
     width, height = args.size
-    frame = render(tree, camera_for(tree, args), width, height,
-                   order="back_to_front" if args.painter else "front_to_back",
+    options = dict(order="back_to_front" if args.painter else "front_to_back",
                    light=not args.fullbright)
-    outputs = {args.output: png_bytes(frame.color)}
+    if getattr(args, "hud", False):
+        from wallbsp.app.hudframe import hud_frame, raise_weapon
+        from wallbsp.game.world import World
+        world = World(tree)
+        raise_weapon(world.play.players[world.play.consoleplayer])
+        rgb, frame = hud_frame(world, camera_for(tree, args), width, height, **options)
+    else:
+        frame = render(tree, camera_for(tree, args), width, height, **options)
+        rgb = frame.color
+    outputs = {args.output: png_bytes(rgb)}
     if args.ids:
         outputs[args.ids] = ids_bytes(frame)
     if args.depth:
@@ -198,9 +206,17 @@ def cmd_play(args):
     tree = load_any(args.level, args, strict=args.strict)
     check_level(demo, tree.level)
     world = World(tree, demo.skill)
-    play(world, demo)
-    if args.screenshot:
-        _save_view(world, args.screenshot, args.size)
+    if getattr(args, "hud", False):
+        from wallbsp.app.hudframe import hud_frame, play_with_hud
+        from wallbsp.image import png_bytes
+        hud = play_with_hud(world, demo.tics)
+        if args.screenshot:
+            rgb, _ = hud_frame(world, world.camera(), *args.size, hud=hud)
+            write_outputs({args.screenshot: png_bytes(rgb)})
+    else:
+        play(world, demo)
+        if args.screenshot:
+            _save_view(world, args.screenshot, args.size)
     _print_stats(world.status(), args.json)
 
 

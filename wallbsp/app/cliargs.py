@@ -148,6 +148,8 @@ def build_parser(commands) -> argparse.ArgumentParser:
     p.add_argument("--screenshot", metavar="PNG", help="save the final view as PNG")
     p.add_argument("--size", type=_size, default=(320, 200), metavar="WxH",
                    help="screenshot size (default 320x200)")
+    p.add_argument("--hud", action="store_true", help="the screenshot with DOOM's status bar, "
+                   "weapon, messages and flashes")
     p.add_argument("--json", action="store_true", help="the final state as one JSON object")
     _finish(p, commands["play"])
 
@@ -175,6 +177,9 @@ def build_parser(commands) -> argparse.ArgumentParser:
     p.add_argument("--depth", metavar="NPY",
                    help="also save the depth buffer (float32) to this .npy")
     p.add_argument("--fullbright", action="store_true", help="no light diminishing")
+    p.add_argument("--hud", action="store_true", help="DOOM's status bar and weapon as the "
+                   "level's start gives them (the view above the bar; --ids and --depth "
+                   "are of the view)")
     p.add_argument("--json", action="store_true", help="print the frame's stats as JSON")
     _finish(p, commands["render"])
 

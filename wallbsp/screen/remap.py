@@ -1,0 +1,76 @@
+"""Whole-frame colour changes, compiled (``wallbsp.jit``; numpy where kernels are off):
+
+- ``tint(frame, lut)``: a screen flash, ``lut[c][value]`` per channel (``art.tints[n]``);
+- ``invert(frame, index, colours)``: the invulnerability map: each pixel's palette index
+  found by ``index`` (``art.ColourIndex``: a perfect hash of the palette's colours), then
+  ``colours[index]`` (palette 0 of COLORMAP row 32); a colour the palette lacks becomes
+  the grey of one minus its luminance.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from wallbsp.jit import kernel, kernels_enabled
+
+__all__ = ["tint", "invert", "grey_inverse", "paste"]
+
+
+def tint(frame: np.ndarray, lut: np.ndarray) -> None:
+    if kernels_enabled():
+        _tint(frame, lut)
+    else:
+        for c in range(3):
+            frame[..., c] = lut[c][frame[..., c]]
+
+
+@kernel
+def _tint(frame, lut):
+    for y in range(frame.shape[0]):
+        for x in range(frame.shape[1]):
+            for c in range(3):
+                frame[y, x, c] = lut[c, frame[y, x, c]]
+
+
+def grey_inverse(rgb: np.ndarray) -> np.ndarray:
+    """White where dark, black where bright (COLORMAP 32's rule: 1 - luminance, grey)."""
+    rgb = rgb.astype(np.int32)
+    lum = (rgb[..., 0] * 299 + rgb[..., 1] * 587 + rgb[..., 2] * 114 + 500) // 1000
+    grey = (255 - lum).astype(np.uint8)
+    return np.repeat(grey[..., None], 3, axis=-1)
+
+
+def invert(frame: np.ndarray, index, colours: np.ndarray | None) -> None:
+    """In place (module doc); ``index`` None or ``colours`` None: grey inverse for all."""
+    if index is None or colours is None:
+        frame[...] = grey_inverse(frame)
+    elif kernels_enabled():
+        _invert(frame, index.parts, index.table, index.palette, colours)
+    else:
+        found, known = index(frame)
+        out = colours[found]
+        out[~known] = grey_inverse(frame[~known])
+        frame[...] = out
+
+
+@kernel
+def _invert(frame, parts, table, palette, colours):
+    for y in range(frame.shape[0]):
+        for x in range(frame.shape[1]):
+            r, g, b = frame[y, x, 0], frame[y, x, 1], frame[y, x, 2]
+            i = table[(parts[0, r] + parts[1, g] + parts[2, b]) & 0xFFFF]
+            if palette[i, 0] == r and palette[i, 1] == g and palette[i, 2] == b:
+                frame[y, x, 0] = colours[i, 0]
+                frame[y, x, 1] = colours[i, 1]
+                frame[y, x, 2] = colours[i, 2]
+            else:
+                lum = (np.int64(r) * 299 + np.int64(g) * 587 + np.int64(b) * 114 + 500) // 1000
+                frame[y, x, 0] = frame[y, x, 1] = frame[y, x, 2] = 255 - lum
+
+
+def paste(region: np.ndarray, rgb: np.ndarray, mask: np.ndarray) -> None:
+    """``region[mask] = rgb[mask]`` (``(h, w, 3)`` uint8 and ``(h, w)``): one 3-byte item
+    a pixel where both arrays allow it (a third of the time of a 3-channel mask)."""
+    if region.strides[-1] == 1 and rgb.strides[-1] == 1:
+        np.copyto(region.view("V3")[..., 0], rgb.view("V3")[..., 0], where=mask)
+    else:
+        np.copyto(region, rgb, where=mask[..., None])

@@ -1,0 +1,136 @@
+"""The player's weapon and its flash over the 3-D view, as ``R_DrawPlayerSprites`` and
+``R_DrawPSprite`` (``r_things.c``) draw them.
+
+Each psprite with a state is drawn from its state's sprite (``info.SPRNAMES``) and frame
+letter at rotation 0, placed by DOOM's fixed-point arithmetic for a view ``view_width``
+× ``view_height`` (``pspritescale = FRACUNIT * viewwidth / 320``, ``centery =
+viewheight / 2``, ``texturemid = BASEYCENTER + 1/2 - (sy - topoffset)``): ``sx``/``sy``
+already hold DOOM's bob (``P_MovePsprites`` in the playsim).  Columns step by
+``pspriteiscale`` from ``startfrac`` (mirrored frames from the right), rows from the
+texture middle by the same step, clipped to the view.
+
+Light: a frame with ``FF_FULLBRIGHT`` (the flashes) at COLORMAP row 0; else the player's
+``fixedcolormap`` when set (invulnerability's row 32, light amplification's row 1); else
+the sector's light as ``spritelights[MAXLIGHTSCALE - 1]``: row ``(15 - lightnum) * 4 - 23``
+clamped to 0..31, ``lightnum = lightlevel / 16 + extralight``.  Invisibility draws the
+fuzz: the pixel a row above or below (DOOM's ``fuzzoffset`` table), darkened as COLORMAP
+row 6 darkens it.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from wallbsp.screen.remap import paste
+from wallbsp.sim import info
+from wallbsp.sim.fixed import FRACBITS, FRACUNIT, fixed_mul
+
+__all__ = ["draw_psprites", "psprite_columns", "sprite_level", "WEAPONTOP", "FF_FULLBRIGHT"]
+
+SCREENWIDTH, BASEYCENTER = 320, 100
+WEAPONTOP = 32 * FRACUNIT
+FF_FULLBRIGHT, FF_FRAMEMASK = 0x8000, 0x7FFF
+LIGHTLEVELS, LIGHTSEGSHIFT, NUMCOLORMAPS = 16, 4, 32
+SPRITE_LIGHT_STEP = 23          # (MAXLIGHTSCALE - 1) * 320 / viewwidth / DISTMAP at 320
+FUZZ_DARK = 6                   # COLORMAP row of the fuzz
+FUZZ = np.array([1, -1, 1, -1, 1, 1, -1, 1, 1, -1, 1, 1, 1, -1, 1, 1, 1, -1, -1, -1, -1, 1,
+                 -1, -1, 1, 1, 1, 1, -1, 1, -1, 1, 1, -1, -1, 1, 1, -1, -1, -1, -1, 1, 1, 1,
+                 1, -1, 1, 1, -1, 1])
+
+
+def sprite_level(player) -> int:
+    """The COLORMAP row of a weapon that is not full bright (module doc)."""
+    if player.fixedcolormap:
+        return player.fixedcolormap
+    mo = player.mo
+    light = mo.subsector.sector.lightlevel if mo is not None and mo.subsector else 255
+    lightnum = min(max((light >> LIGHTSEGSHIFT) + player.extralight, 0), LIGHTLEVELS - 1)
+    return min(max((LIGHTLEVELS - 1 - lightnum) * 4 - SPRITE_LIGHT_STEP, 0),
+               NUMCOLORMAPS - 1)
+
+
+def psprite_columns(sx, sy, picture, flipped, view_width, view_height):
+    """Where R_DrawPSprite puts a picture: ``(x1, texture columns, y1, texture rows)`` —
+    screen columns ``x1 ..`` show the picture's columns ``cols``, rows ``y1 ..`` its rows
+    ``rows`` — or None when it is off the view."""
+    scale = FRACUNIT * view_width // SCREENWIDTH
+    iscale = FRACUNIT * SCREENWIDTH // view_width
+    centerxfrac = (view_width // 2) << FRACBITS
+    centery = view_height // 2
+    tx = sx - (SCREENWIDTH // 2) * FRACUNIT - (picture.left << FRACBITS)
+    x1 = (centerxfrac + fixed_mul(tx, scale)) >> FRACBITS
+    if x1 > view_width:
+        return None
+    tx += picture.width << FRACBITS
+    x2 = ((centerxfrac + fixed_mul(tx, scale)) >> FRACBITS) - 1
+    if x2 < 0:
+        return None
+    vx1, vx2 = max(x1, 0), min(x2, view_width - 1)
+    if flipped:
+        step, start = -iscale, (picture.width << FRACBITS) - 1
+    else:
+        step, start = iscale, 0
+    start += step * (vx1 - x1)
+    cols = (start + step * np.arange(vx2 - vx1 + 1, dtype=np.int64)) >> FRACBITS
+    texturemid = (BASEYCENTER << FRACBITS) + FRACUNIT // 2 - (sy - (picture.top << FRACBITS))
+    rows = (texturemid + (np.arange(view_height, dtype=np.int64) - centery) * iscale) \
+        >> FRACBITS
+    inside = np.flatnonzero((rows >= 0) & (rows < picture.height))
+    keep = (cols >= 0) & (cols < picture.width)
+    if not inside.size or not keep.any():
+        return None
+    first = int(np.argmax(keep))
+    cols = cols[first:first + int(keep[first:].sum())]
+    return vx1 + first, cols, int(inside[0]), rows[inside[0]:inside[-1] + 1]
+
+
+def draw_psprites(frame, player, art, view_width, view_height, fuzz_pos=0) -> int:
+    """R_DrawPlayerSprites into ``frame`` (``(height, width, 3)``, the view at its top left);
+    returns the fuzz position after (DOOM's ``fuzzpos`` runs on across frames)."""
+    invisible = player.powers[info.pw_invisibility]
+    shadow = invisible > 4 * 32 or invisible & 8
+    for psp in player.psprites:
+        if psp.state is None:
+            continue
+        state = info.STATES[psp.state]
+        found = art.sprite(info.SPRNAMES[state.sprite],
+                           chr(ord("A") + (state.frame & FF_FRAMEMASK)))
+        if found is None:
+            continue
+        picture, flipped = found
+        placed = psprite_columns(psp.sx, psp.sy, picture, flipped, view_width, view_height)
+        if placed is None:
+            continue
+        x1, cols, y1, rows = placed
+        if shadow:
+            fuzz_pos = _fuzz(frame, picture.mask[cols[:, None], rows[None, :]], y1, x1, art,
+                             fuzz_pos, view_height)
+            continue
+        level = player.fixedcolormap or (0 if state.frame & FF_FULLBRIGHT
+                                         else sprite_level(player))
+        rgb, mask = art.rgb(picture, level)
+        region = frame[y1:y1 + len(rows), x1:x1 + len(cols)]
+        paste(region, _pick(rgb, rows, cols), _pick(mask, rows, cols))
+    return fuzz_pos
+
+
+def _pick(image, rows, cols):
+    """``image[rows][:, cols]``: a slice where the steps are 1 (a 320-wide view)."""
+    if rows[-1] - rows[0] == len(rows) - 1 and rows[0] <= rows[-1]:
+        image = image[rows[0]:rows[-1] + 1]
+    else:
+        image = image.take(rows, axis=0)
+    if cols[-1] - cols[0] == len(cols) - 1 and cols[0] <= cols[-1]:
+        return image[:, cols[0]:cols[-1] + 1]
+    return image.take(cols, axis=1)
+
+
+def _fuzz(frame, mask_xy, y1, x1, art, fuzz_pos, view_height) -> int:
+    """R_DrawFuzzColumn over the opaque pixels (``mask_xy[x, y]``), column by column, rows 1
+    .. height - 2: each takes the pixel ``FUZZ[fuzzpos]`` rows away, darkened."""
+    xs, ys = np.nonzero(mask_xy)            # column-major order, as DOOM draws
+    xs, ys = xs + x1, ys + y1
+    keep = (ys >= 1) & (ys <= view_height - 2)
+    xs, ys = xs[keep], ys[keep]
+    offsets = FUZZ[(fuzz_pos + np.arange(len(ys))) % len(FUZZ)]
+    frame[ys, xs] = art.darken(frame[ys + offsets, xs], FUZZ_DARK)
+    return int((fuzz_pos + len(ys)) % len(FUZZ))
