@@ -394,3 +394,38 @@ def test_a_world_played_with_the_hud(golden):
     assert frame.color.shape == (168, 320, 3) and rgb.shape == (200, 320, 3)
     weapon = world.play.players[0].psprites[0]
     assert weapon.state is not None and weapon.sy < 128 << 16   # raised: drawn in the view
+
+
+@needs_freedoom
+def test_the_invisible_players_weapon_is_doom_fuzz(golden):
+    """Only the weapon's opaque pixels change, each to a COLORMAP row 6 darkening (of a
+    pixel a row away, perhaps fuzzed already, as DOOM reads the screen as it draws), the
+    same with and without the compiled kernel."""
+    from wallbsp.jit import use_kernels
+    from wallbsp.screen.hud import Hud
+    wad = RefWad(FREEDOOM1)
+    palette = np.frombuffer(wad.lump("PLAYPAL"), np.uint8)[:768].reshape(256, 3)
+    colormap = np.frombuffer(wad.lump("COLORMAP"), np.uint8)[:34 * 256].reshape(34, 256)
+    play = golden.armed(golden.fake_play("freedoom1"), 2, False)
+    magenta = np.empty((200, 320, 3), np.uint8)
+    magenta[:] = (255, 0, 255)                               # no colour of PLAYPAL
+    shown = Hud(statusbar=False).draw(magenta, play) != (255, 0, 255)
+    play.players[0].powers[2] = 1000
+    index, darker = 100, {100}
+    for _ in range(6):
+        darker.add(int(colormap[6][index]))
+        index = int(colormap[6][index])
+    allowed = {tuple(palette[i]) for i in darker - {100}}
+    frames = []
+    for kernels in (True, False):
+        previous = use_kernels(kernels)
+        try:
+            frame = np.empty((200, 320, 3), np.uint8)
+            frame[:] = palette[100]
+            frames.append(Hud(statusbar=False).draw(frame, play))
+        finally:
+            use_kernels(previous)
+    assert np.array_equal(frames[0], frames[1])
+    changed = (frames[0] != palette[100]).any(-1)
+    assert changed.any() and not (changed & ~shown.any(-1)).any()
+    assert {tuple(c) for c in frames[0][changed]} <= allowed

@@ -16,7 +16,7 @@ Both answer the same questions:
   Freedoom's PLAYPAL; values palette 0 lacks are interpolated), so a screen flash is three
   table look-ups on an RGB frame;
 - ``invert(frame)``: the invulnerability colour map (COLORMAP row 32) applied to an RGB
-  frame in place; ``darken(rgb, row)`` another COLORMAP row (the fuzz).
+  frame in place; ``fuzz_tables(row)`` what the fuzz darkens by (COLORMAP row ``row``).
 
 ``art_for(play)`` chooses: the play's WAD and PWADs (a later lump of a name wins, as in
 ``W_GetNumForName``), or our own pictures when the play has no WAD.
@@ -133,23 +133,17 @@ class WadArt(_Art):
             self._inverse = np.ascontiguousarray(self.palettes[0][self.colormap[INVERSE]])
         invert(frame, self.colour_index(), self._inverse)
 
+    def fuzz_tables(self, row: int):
+        """``(index, colours, scale)`` for ``remap.fuzz``: COLORMAP row ``row``."""
+        if self.colormap is None:
+            return None, None, (LIGHT_LEVELS - row) / LIGHT_LEVELS
+        return (self.colour_index(), np.ascontiguousarray(self.palettes[0][self.colormap[row]]),
+                (LIGHT_LEVELS - row) / LIGHT_LEVELS)
+
     def colour_index(self):
         if self._index is None:
             self._index = ColourIndex(self.palettes[0])
         return self._index
-
-    def darken(self, rgb: np.ndarray, row: int) -> np.ndarray:
-        """COLORMAP row ``row`` of each pixel's palette index (others scaled)."""
-        return self._mapped(rgb, row, lambda c: _scaled(c, row))
-
-    def _mapped(self, rgb, row, otherwise):
-        if self.colormap is None:
-            return otherwise(rgb)
-        index, known = self.colour_index()(rgb)
-        out = self.palettes[0][self.colormap[row][index]]
-        if not known.all():
-            out[~known] = otherwise(rgb[~known])
-        return out
 
 
 class OwnArt(_Art):
@@ -192,8 +186,8 @@ class OwnArt(_Art):
     def invert(self, frame: np.ndarray) -> None:
         invert(frame, None, None)
 
-    def darken(self, rgb: np.ndarray, row: int) -> np.ndarray:
-        return _scaled(rgb, row)
+    def fuzz_tables(self, row: int):
+        return None, None, (LIGHT_LEVELS - row) / LIGHT_LEVELS
 
 
 def art_for(play):

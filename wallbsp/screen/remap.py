@@ -1,6 +1,7 @@
 """Whole-frame colour changes, compiled (``wallbsp.jit``; numpy where kernels are off):
 
 - ``tint(frame, lut)``: a screen flash, ``lut[c][value]`` per channel (``art.tints[n]``);
+- ``fuzz(...)``: R_DrawFuzzColumn (the invisible player's weapon), column by column;
 - ``invert(frame, index, colours)``: the invulnerability map: each pixel's palette index
   found by ``index`` (``art.ColourIndex``: a perfect hash of the palette's colours), then
   ``colours[index]`` (palette 0 of COLORMAP row 32); a colour the palette lacks becomes
@@ -12,7 +13,7 @@ import numpy as np
 
 from wallbsp.jit import kernel, kernels_enabled
 
-__all__ = ["tint", "invert", "grey_inverse", "paste"]
+__all__ = ["tint", "invert", "grey_inverse", "paste", "fuzz"]
 
 
 def tint(frame: np.ndarray, lut: np.ndarray) -> None:
@@ -74,3 +75,48 @@ def paste(region: np.ndarray, rgb: np.ndarray, mask: np.ndarray) -> None:
         np.copyto(region.view("V3")[..., 0], rgb.view("V3")[..., 0], where=mask)
     else:
         np.copyto(region, rgb, where=mask[..., None])
+
+
+def fuzz(frame, mask_xy, x1, y1, view_height, pos, offsets, index, colours, scale) -> int:
+    """R_DrawFuzzColumn over the opaque pixels of ``mask_xy[x, y]`` placed at ``(x1, y1)``,
+    column by column, rows 1 .. view_height - 2: each pixel becomes the one ``offsets[pos]``
+    rows away (read as drawn, so a fuzzed pixel may be read again, as in DOOM), darkened:
+    ``colours`` of its palette index (``index``: ``ColourIndex``), or times ``scale`` when
+    ``index`` is None or the colour is not in the palette.  Returns the next ``pos``."""
+    if index is None:
+        parts = np.zeros((3, 256), np.int64)
+        table = np.zeros(1 << 16, np.uint8)
+        palette = np.full((256, 3), -1, np.int64)       # matches no colour
+        colours = np.zeros((256, 3), np.uint8)
+    else:
+        parts, table = index.parts, index.table
+        palette = index.palette.astype(np.int64)
+    run = _fuzz if kernels_enabled() else getattr(_fuzz, "py_func", _fuzz)
+    return int(run(frame, mask_xy, x1, y1, view_height, pos, offsets, parts, table, palette,
+                   colours, scale))
+
+
+@kernel
+def _fuzz(frame, mask_xy, x1, y1, view_height, pos, offsets, parts, table, palette,
+          colours, scale):
+    for u in range(mask_xy.shape[0]):
+        x = x1 + u
+        for v in range(mask_xy.shape[1]):
+            y = y1 + v
+            if not mask_xy[u, v] or y < 1 or y > view_height - 2:
+                continue
+            sy = y + offsets[pos]
+            pos += 1
+            if pos == len(offsets):
+                pos = 0
+            r, g, b = frame[sy, x, 0], frame[sy, x, 1], frame[sy, x, 2]
+            i = table[(parts[0, r] + parts[1, g] + parts[2, b]) & 0xFFFF]
+            if palette[i, 0] == r and palette[i, 1] == g and palette[i, 2] == b:
+                frame[y, x, 0] = colours[i, 0]
+                frame[y, x, 1] = colours[i, 1]
+                frame[y, x, 2] = colours[i, 2]
+            else:
+                frame[y, x, 0] = np.uint8(np.floor(r * scale + 0.5))
+                frame[y, x, 1] = np.uint8(np.floor(g * scale + 0.5))
+                frame[y, x, 2] = np.uint8(np.floor(b * scale + 0.5))
+    return pos

@@ -20,7 +20,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from wallbsp.screen.remap import paste
+from wallbsp.screen.remap import fuzz, paste
 from wallbsp.sim import info
 from wallbsp.sim.fixed import FRACBITS, FRACUNIT, fixed_mul
 
@@ -102,8 +102,9 @@ def draw_psprites(frame, player, art, view_width, view_height, fuzz_pos=0) -> in
             continue
         x1, cols, y1, rows = placed
         if shadow:
-            fuzz_pos = _fuzz(frame, picture.mask[cols[:, None], rows[None, :]], y1, x1, art,
-                             fuzz_pos, view_height)
+            fuzz_pos = fuzz(frame, np.ascontiguousarray(picture.mask[cols[:, None],
+                                                                     rows[None, :]]),
+                            x1, y1, view_height, fuzz_pos, FUZZ, *art.fuzz_tables(FUZZ_DARK))
             continue
         level = player.fixedcolormap or (0 if state.frame & FF_FULLBRIGHT
                                          else sprite_level(player))
@@ -122,15 +123,3 @@ def _pick(image, rows, cols):
     if cols[-1] - cols[0] == len(cols) - 1 and cols[0] <= cols[-1]:
         return image[:, cols[0]:cols[-1] + 1]
     return image.take(cols, axis=1)
-
-
-def _fuzz(frame, mask_xy, y1, x1, art, fuzz_pos, view_height) -> int:
-    """R_DrawFuzzColumn over the opaque pixels (``mask_xy[x, y]``), column by column, rows 1
-    .. height - 2: each takes the pixel ``FUZZ[fuzzpos]`` rows away, darkened."""
-    xs, ys = np.nonzero(mask_xy)            # column-major order, as DOOM draws
-    xs, ys = xs + x1, ys + y1
-    keep = (ys >= 1) & (ys <= view_height - 2)
-    xs, ys = xs[keep], ys[keep]
-    offsets = FUZZ[(fuzz_pos + np.arange(len(ys))) % len(FUZZ)]
-    frame[ys, xs] = art.darken(frame[ys + offsets, xs], FUZZ_DARK)
-    return int((fuzz_pos + len(ys)) % len(FUZZ))
