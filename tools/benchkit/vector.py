@@ -287,6 +287,14 @@ def section(report) -> str:
                        [[k, v, cpu.get(k, "—")] for k, v in rates.items()]
                        + [["2 plain processes at once", report["two_plain_processes_steps_per_s"],
                            "—"]]),
+        f"What the cores gave in this run: 2 plain processes at once did "
+        f"{ratios['two_plain_processes_over_one']} × one (below 1: other work left no core "
+        f"to spare, and no configuration of more than one process can show its scaling). "
+        f"Steps per CPU second over one env's, which other work lowers less: make_vec 8 "
+        f"envs on 2 workers {ratios['cpu_efficiency_make_vec_8x2']}, 8 envs in one process "
+        f"(workers=0) {ratios['cpu_efficiency_workers0_8']}.  The protocols alone (a "
+        f"do-nothing env with the same spaces): make_vec "
+        f"{ratios['do_nothing_make_vec_8x2_over_async_2']} × AsyncVectorEnv's steps/s.",
         f"Explore-v0, 8 envs on 2 workers, send/recv batches of 4: "
         f"{reset['with resets']['steps_per_s']} steps/s with resets "
         f"({reset['with resets']['episodes_ended']} episodes ended in "
