@@ -20,6 +20,10 @@ whose game state is ``GS_LEVEL`` (DOOM's ``G_Ticker`` calls them there).  It dra
 It also takes ``player.message`` (and clears it, as HU_Ticker does).
 
 ``draw_hud(frame, play)`` draws a fresh ``Hud`` once (no tics: the straight face).
+``Hud(player_index=k)`` watches player ``k`` (else the console player), ``statusbar=False``
+is DOOM's full-screen view (the weapon placed for the whole frame), ``weapon``,
+``messages`` and ``invert_view`` switch those parts, ``art`` overrides the pictures
+(``art.WadArt(paths)`` or ``art.OwnArt()``; default the play's WAD, or ours without one).
 """
 from __future__ import annotations
 
@@ -68,8 +72,10 @@ class Hud:
     """The status bar, weapon, flashes and messages of one player (module doc)."""
 
     def __init__(self, player_index: int | None = None, statusbar: bool = True,
-                 weapon: bool = True, messages: bool = True, invert_view: bool = True):
+                 weapon: bool = True, messages: bool = True, invert_view: bool = True,
+                 art=None):
         self.player_index = player_index
+        self.art = art                      # None: the play's (art.art_for)
         self.statusbar, self.weapon, self.messages = statusbar, weapon, messages
         self.invert_view = invert_view
         self.face = FaceState()
@@ -101,7 +107,7 @@ class Hud:
         """Draws into ``frame`` (``(height, width, 3)`` uint8, the view in its top
         ``view_size`` rows) and returns it."""
         if self._art[0] is not play:
-            self._art = (play, art_for(play))
+            self._art = (play, self.art or art_for(play))
         art = self._art[1]
         player = self.player(play)
         height, width = frame.shape[:2]
@@ -120,7 +126,8 @@ class Hud:
         return frame
 
     def _scaled_bar(self, play, player, art, width, rows):
-        patches = tuple(bar_patches(play, player, self.face.index, _widths(art)))
+        patches = tuple(bar_patches(play, player, self.face.index, _widths(art),
+                                    self.player_index))
         size = (width, rows)
         key, scaled = self._bar.get(size, (None, None))
         if key != (patches, id(art)):

@@ -163,17 +163,19 @@ class FaceState:
         self.count -= 1
 
 
-def bar_patches(play, player, face_index: int, widths) -> list[tuple[str, int, int]]:
+def bar_patches(play, player, face_index: int, widths, index=None) -> list[tuple[str, int, int]]:
     """``(patch name, x, y)`` at 320 × 200 positions, in ST_Drawer's order, for ``player``
-    with face ``face_index``; ``widths(name)`` gives a patch's width (numbers are placed
-    right to left by the width of digit 0, as STlib_drawNum does)."""
+    (number ``index``, DOOM's ``consoleplayer`` when None) with face ``face_index``;
+    ``widths(name)`` gives a patch's width (numbers are placed right to left by the width of
+    digit 0, as STlib_drawNum does)."""
+    index = play.consoleplayer if index is None else index
     out = []
     sbar = "STBAR" if widths("STBAR") else "STMBARL"
     out.append((sbar, ST_X, ST_Y))
     if sbar == "STMBARL":
         out.append(("STMBARR", ST_ARMSBGX, ST_Y))
     if play.netgame:
-        out.append((f"STFB{play.consoleplayer}", ST_FX, ST_Y))
+        out.append((f"STFB{index}", ST_FX, ST_Y))
 
     def number(x, y, num, width, digits):
         w = widths(digits + "0")
@@ -215,7 +217,7 @@ def bar_patches(play, player, face_index: int, widths) -> list[tuple[str, int, i
         if key >= 0:
             out.append((f"STKEYS{key}", ST_KEYX, ST_KEYY[i]))
     if play.deathmatch:
-        frags = sum(-f if i == play.consoleplayer else f for i, f in enumerate(player.frags))
+        frags = sum(-f if i == index else f for i, f in enumerate(player.frags))
         number(ST_FRAGSX, ST_FRAGSY, frags, 2, "STTNUM")
     return out
 
