@@ -65,7 +65,7 @@ def render(source, camera: Camera, width: int, height: int, order: str = "front_
         walk = walk_back_to_front(tables, view)
     else:
         walk = walk_front_to_back(tables, heights, view, thing_boxes(state))
-    entries, drawsegs, piece_keys = entries_of(walk.pieces, view, heights)
+    entries, drawsegs, piece_keys = entries_of(walk.pieces, view, projection.u, heights)
     scene = scene_of(tables, heights, state)
     colour = np.empty(view.width * view.height, dtype="<u4")
     if tex is None:
@@ -74,7 +74,8 @@ def render(source, camera: Camera, width: int, height: int, order: str = "front_
                              bool(light), painter, colour)
     else:
         parts = key_parts(tables, tex)
-        written = fill.paint_textured(tuple(entries), tuple(view), tuple(parts), tuple(scene),
+        written = fill.paint_textured(tuple(entries), tuple(view), projection.u, tuple(parts),
+                                      tuple(scene),
                                  tuple(surfaces_of(tex, projection)), bool(light), painter,
                                  colour)
     walk.stats["pixels_written"] = int(written)
@@ -84,6 +85,6 @@ def render(source, camera: Camera, width: int, height: int, order: str = "front_
     # sprites and masked middle textures, far to near, over the finished frame; the
     # painter's are clipped by the windows of a front-to-back walk
     front = None if painter else (walk, piece_keys, drawsegs)
-    layers = draw_overlay(view, state, tables, heights, scene, columns, layers, walk.stats,
-                          light, front, textures)
+    layers = draw_overlay(view, projection.u, state, tables, heights, scene, columns, layers,
+                          walk.stats, light, front, textures)
     return Frame(view.width, view.height, columns, walk.stats, layers, walk.leaves)

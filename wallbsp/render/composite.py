@@ -102,7 +102,7 @@ def _composite(ints, floats, pictures, colour_columns):
 
 
 @kernel
-def draw_things(seen, things, pictures, scene, lit, view, clip, wall_ints, wall_floats,
+def draw_things(seen, things, pictures, scene, lit, view, u, clip, wall_ints, wall_floats,
                 colour_columns):
     """Draw the sprites of the kept things and the masked-wall slices into
     ``colour_columns``; returns ``(kind, index, depth)`` of the slices (sprites first),
@@ -111,7 +111,7 @@ def draw_things(seen, things, pictures, scene, lit, view, clip, wall_ints, wall_
     seen, things, pictures = Seen(*seen), ThingArrays(*things), Pictures(*pictures)
     scene, view, clip = Scene(*scene), View(*view), Clip(*clip)
     ints, floats, n_sprites, drawn = sprite_columns(seen, things, pictures, scene, lit, view,
-                                                    clip, wall_ints, wall_floats)
+                                                    u, clip, wall_ints, wall_floats)
     if drawn < 0 or ints.shape[1] == 0:
         empty = np.empty(0, dtype=np.int64)
         return np.empty(0, np.uint8), empty, np.empty(0), empty, empty, drawn

@@ -64,10 +64,10 @@ def _boundary(view, fz, w):
 
 
 @kernel
-def column_entries(pieces, view, key_heights):
+def column_entries(pieces, view, u, key_heights):
     """The pieces' ``Entries`` and their ``DrawSegs``."""
     view = View(*view)
-    width, height, u = view.width, view.height, view.u
+    width, height = view.width, view.height
     n = 0
     for p in range(pieces.shape[0]):
         n += int(pieces[p, 4]) - int(pieces[p, 3])
@@ -125,7 +125,8 @@ def column_entries(pieces, view, key_heights):
              ds_windows[3]))
 
 
-def entries_of(pieces, view, heights):
-    """``(Entries, DrawSegs, each piece's side key)`` of a walk's ``pieces``."""
-    entries, drawsegs = column_entries(pieces, tuple(view), heights.key_heights)
+def entries_of(pieces, view, u, heights):
+    """``(Entries, DrawSegs, each piece's side key)`` of a walk's ``pieces`` (``u``: each
+    column's, ``Projection.u``)."""
+    entries, drawsegs = column_entries(pieces, tuple(view), u, heights.key_heights)
     return Entries(*entries), DrawSegs(*drawsegs), pieces[:, 0].astype(np.int64)

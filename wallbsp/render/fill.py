@@ -35,7 +35,7 @@ from wallbsp.render.shading import FULL_BRIGHT, UNLIT, far_level, light_level, p
 from wallbsp.render.surfaces import Flat, Parts, Scene, Surfaces
 from wallbsp.render.textures import FLAT_SIDE
 
-__all__ = ["paint_textured", "paint_flat", "part_rows", "FIX"]
+__all__ = ["paint_textured", "paint_flat", "part_rows", "fill_nothing", "FIX"]
 
 FIX = 19                       # fraction bits of texture rows in int32 fixed point,
 FIX_ONE = float(1 << FIX)
@@ -151,24 +151,7 @@ def _plane(out, at, r0, r1, h, base, far, ray, view, atlas, lut, n_colours, ligh
 
 
 @step_kernel
-def _sky(out, at, r0, r1, first, last, c, sector, view, s, atlas, lut, light):
-    """The sky's rows (never dimmed): the sky texture's column of screen column ``c``, or
-    the sector's ceiling colour when there is no sky texture (``s``: the ``Surfaces``)."""
-    level = FULL_BRIGHT * s.n_colours if light else UNLIT * s.n_colours
-    if s.sky < 0:
-        t = s.sky_colour[sector]
-        _column_run(out, at, r0, r1, first, last,
-                    (s.base[t], float(s.stride[t]), float(s.height[t])), 0.0, 0.0, level,
-                    atlas, lut)
-    else:
-        t = s.sky
-        _column_run(out, at, r0, r1, first, last,
-                    (s.base[t] + s.sky_columns[c] * s.pitch[t], float(s.stride[t]),
-                     float(s.height[t])), view.sky_t0, view.sky_t1, level, atlas, lut)
-
-
-@step_kernel
-def _nothing(out, entries, value, painter, height):
+def fill_nothing(out, entries, value, painter, height):
     """"Nothing" (out of the map) over the windows front to back left open, or over the
     whole frame before the painter paints."""
     if painter:
@@ -183,13 +166,13 @@ def _nothing(out, entries, value, painter, height):
 
 
 @kernel
-def paint_textured(entries, view, parts, scene, surfaces, light, painter, out):
+def paint_textured(entries, view, u, parts, scene, surfaces, light, painter, out):
     """Every pixel of a textured frame into ``out`` (packed rgb, column-major ``width *
-    height``); returns the pixels written (those not "nothing")."""
+    height``; ``u``: each column's); returns the pixels written (those not "nothing")."""
     entries, view, parts = Entries(*entries), View(*view), Parts(*parts)
     scene, surfaces = Scene(*scene), Surfaces(*surfaces)
     height = view.height
-    keys, cols, ws, bounds, u = entries.keys, entries.cols, entries.w, entries.bounds, view.u
+    keys, cols, ws, bounds = entries.keys, entries.cols, entries.w, entries.bounds
     part_kind, part_index = parts.kind, parts.index
     atlas, lut, n_colours = surfaces.atlas, surfaces.lut, surfaces.n_colours
     part_table, plane_base = surfaces.part_table, surfaces.plane_base
@@ -197,9 +180,13 @@ def paint_textured(entries, view, parts, scene, surfaces, light, painter, out):
     wall_x_offset, key_heights = scene.wall_x_offset, scene.key_heights
     sector_sky, floor, ceiling = scene.sector_sky, scene.floor, scene.ceiling
     sector_light = scene.sector_light
+    sky, sky_colour, sky_columns = surfaces.sky, surfaces.sky_colour, surfaces.sky_columns
+    base, pitch, stride, tex_height = (surfaces.base, surfaces.pitch, surfaces.stride,
+                                       surfaces.height)
+    sky_level = FULL_BRIGHT * n_colours if light else UNLIT * n_colours
     nothing = lut[int(atlas[surfaces.base[surfaces.black]]) + UNLIT * n_colours]
     if painter:
-        _nothing(out, entries, nothing, painter, height)
+        fill_nothing(out, entries, nothing, painter, height)
     written = 0
     for i in range(len(keys)):
         key, c, w = keys[i], cols[i], ws[i]
@@ -218,15 +205,20 @@ def paint_textured(entries, view, parts, scene, surfaces, light, painter, out):
                 continue
             sector = part_index[part, key]
             ceil = kind == KIND_CEILING
-            if ceil and sector_sky[sector]:
-                _sky(out, at, r0, r1, first, last, c, sector, view, surfaces, atlas, lut, light)
+            if ceil and sector_sky[sector]:        # the sky texture's column, or a colour
+                t = sky_colour[sector] if sky < 0 else sky
+                address = base[t] if sky < 0 else base[t] + sky_columns[c] * pitch[t]
+                _column_run(out, at, r0, r1, first, last,
+                            (address, float(stride[t]), float(tex_height[t])),
+                            0.0 if sky < 0 else view.sky_t0, 0.0 if sky < 0 else view.sky_t1,
+                            sky_level, atlas, lut)
             else:
                 _plane(out, at, r0, r1, ceiling[sector] if ceil else floor[sector],
                        plane_base[sector, 1 if ceil else 0],
                        far_level(sector_light[sector]), ray, view, atlas, lut, n_colours,
                        light)
     if not painter:
-        _nothing(out, entries, nothing, painter, height)
+        fill_nothing(out, entries, nothing, painter, height)
     return written
 
 
@@ -243,7 +235,7 @@ def paint_flat(entries, view, scene, flat, light, painter, out):
     key_far_light, sector_sky = scene.key_far_light, scene.sector_sky
     floor, ceiling, sector_light = scene.floor, scene.ceiling, scene.sector_light
     if painter:
-        _nothing(out, entries, 0, painter, height)
+        fill_nothing(out, entries, 0, painter, height)
     written = 0
     for i in range(len(keys)):
         key, c = keys[i], cols[i]
@@ -273,5 +265,5 @@ def paint_flat(entries, view, scene, flat, light, painter, out):
             for r in range(r0, r1):
                 out[at + r] = row[plane_level(far, view.y0, r, fz)]
     if not painter:
-        _nothing(out, entries, 0, painter, height)
+        fill_nothing(out, entries, 0, painter, height)
     return written

@@ -12,9 +12,9 @@ import math
 
 import numpy as np
 
-from wallbsp.jit import kernel
+from wallbsp.jit import kernel, step_kernel
 from wallbsp.render.entries import Entries
-from wallbsp.render.fill import part_rows
+from wallbsp.render.fill import fill_nothing, part_rows
 from wallbsp.render.frame import KIND_CEILING, KIND_FLOOR, KIND_NOTHING, KIND_WALL
 from wallbsp.render.project import View
 from wallbsp.render.rows import (label_rows_kernel, packed_pixels, rgb_rows_kernel,
@@ -37,8 +37,7 @@ def paint_layers(entries, view, parts, scene, painter, kind_out, index_out, dept
     for r in range(height):
         inverse[r] = 1.0 / abs(view.y0 - r)
     if painter:
-        for p in range(kind_out.shape[0]):
-            kind_out[p], index_out[p], depth_out[p] = KIND_NOTHING, -1, np.float32(math.inf)
+        _nothing(entries, painter, height, kind_out, index_out, depth_out)
     for i in range(len(keys)):
         key, c = keys[i], cols[i]
         at = c * height
@@ -60,15 +59,16 @@ def paint_layers(entries, view, parts, scene, painter, kind_out, index_out, dept
                 index_out[at + r] = index
                 scale = b * inverse[r] if b > 0.0 else b
                 depth_out[at + r] = np.float32(a + scale)
-    if painter:
-        return
-    open_top, open_bottom = entries.open_top, entries.open_bottom
-    for c in range(len(open_top)):
-        top = open_top[c]
-        for r in range(top, max(open_bottom[c], top)):
-            kind_out[c * height + r] = KIND_NOTHING
-            index_out[c * height + r] = -1
-            depth_out[c * height + r] = np.float32(math.inf)
+    if not painter:
+        _nothing(entries, painter, height, kind_out, index_out, depth_out)
+
+
+@step_kernel
+def _nothing(entries, painter, height, kind_out, index_out, depth_out):
+    """"Nothing" (``fill.fill_nothing``) in the three layers."""
+    fill_nothing(kind_out, entries, KIND_NOTHING, painter, height)
+    fill_nothing(index_out, entries, -1, painter, height)
+    fill_nothing(depth_out, entries, np.float32(math.inf), painter, height)
 
 
 @kernel

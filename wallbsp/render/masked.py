@@ -101,7 +101,7 @@ def has_masked_walls(tables, state, atlas) -> bool:
 
 
 @kernel
-def masked_columns(drawsegs, piece_keys, walls, scene, pictures, lit, view):
+def masked_columns(drawsegs, piece_keys, walls, scene, pictures, lit, view, u):
     """``(ints, floats)``: the slices (``sprites.SLICE_INTS``) of the drawsegs whose piece's
     side key has a masked middle, clipped to the window the piece left open (kind: a
     wall)."""
@@ -112,7 +112,7 @@ def masked_columns(drawsegs, piece_keys, walls, scene, pictures, lit, view):
     slot, start, direction = walls.slot, walls.start, walls.direction
     x_offset, y_offset, unpegged = walls.x_offset, walls.y_offset, walls.unpegged
     key_near, key_far, key_wall = scene.key_near, scene.key_far, scene.key_wall
-    floor, ceiling, u = scene.floor, scene.ceiling, view.u
+    floor, ceiling = scene.floor, scene.ceiling
     total = 0
     for j in range(ds_piece.shape[0]):
         total += slot[piece_keys[ds_piece[j]]] >= 0

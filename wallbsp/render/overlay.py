@@ -141,8 +141,8 @@ def _choices(atlas, things) -> _Choices:
     return table.fit(len(things))
 
 
-def draw_masked(view, state, tables, scene, walk, piece_keys, drawsegs, atlas, colour_columns,
-                light=True):
+def draw_masked(view, u, state, tables, scene, walk, piece_keys, drawsegs, atlas,
+                colour_columns, light=True):
     """Draw the things of the walk's leaves and the masked walls of its pieces into
     ``colour_columns``: ``(Overlay, stats)`` (``things_considered``: things of the visited
     leaves; ``things_drawn``: those with a column not wholly hidden; ``masked_columns``:
@@ -159,7 +159,8 @@ def draw_masked(view, state, tables, scene, walk, piece_keys, drawsegs, atlas, c
     wall_rows = _NO_WALLS
     if any_masked:
         wall_rows = masked.masked_columns(tuple(drawsegs), piece_keys, tuple(keys.arrays),
-                                   tuple(scene), tuple(atlas.arrays()), bool(light), tuple(view))
+                                   tuple(scene), tuple(atlas.arrays()), bool(light), tuple(view),
+                                   u)
         stats["masked_columns"] = wall_rows[0].shape[1]
     # sprites.Seen and sprites.Clip, as plain tuples (numba takes them quicker)
     seen = (ids, depth, along, np.degrees(np.arctan2(dy, dx)))
@@ -170,8 +171,8 @@ def draw_masked(view, state, tables, scene, walk, piece_keys, drawsegs, atlas, c
         arrays = (things.angle, things.type, things.sector, things.flags, things.height,
                   things.z, things.bright, table.kind, table.chosen)     # sprites.ThingArrays
         kind, index, slice_depth, pixel, which, drawn = composite.draw_things(
-            seen, arrays, tuple(atlas.arrays()), tuple(scene), bool(light), tuple(view), clip,
-            *wall_rows, colour_columns)
+            seen, arrays, tuple(atlas.arrays()), tuple(scene), bool(light), tuple(view), u,
+            clip, *wall_rows, colour_columns)
         if drawn >= 0:
             break
         table.choose(things, ids, view, atlas)
@@ -181,8 +182,8 @@ def draw_masked(view, state, tables, scene, walk, piece_keys, drawsegs, atlas, c
     return Overlay(pixel, which, Reports(kind, index, slice_depth)), stats
 
 
-def draw_overlay(view, state, tables, heights, scene, colour_columns, layers, stats, light=True,
-                 front=None, textures=True):
+def draw_overlay(view, u, state, tables, heights, scene, colour_columns, layers, stats,
+                 light=True, front=None, textures=True):
     """The masked pass of a frame: ``front`` is the front-to-back ``(walk, each piece's
     side key, the walk's DrawSegs)`` (the painter passes None, and a front-to-back walk is
     made for the windows it clips against).  Pictures come from the level's resources;
@@ -196,10 +197,10 @@ def draw_overlay(view, state, tables, heights, scene, colour_columns, layers, st
         return layers
     if front is None:
         walk = walk_front_to_back(tables, heights, view, thing_boxes(state))
-        _, drawsegs, piece_keys = entries_of(walk.pieces, view, heights)
+        _, drawsegs, piece_keys = entries_of(walk.pieces, view, u, heights)
         front = (walk, piece_keys, drawsegs)
     walk, piece_keys, drawsegs = front
-    overlay, counts = draw_masked(view, state, tables, scene, walk, piece_keys, drawsegs, atlas,
-                                  colour_columns, light)
+    overlay, counts = draw_masked(view, u, state, tables, scene, walk, piece_keys, drawsegs,
+                                  atlas, colour_columns, light)
     stats.update(counts)
     return OverlayLayers(layers, overlay) if len(overlay.pixel) else layers

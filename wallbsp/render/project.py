@@ -29,8 +29,10 @@ FLAT_OFFSET = float(1 << 30)   # added to flat coordinates (a multiple of 64), s
 
 class View(NamedTuple):
     """A ``camera.Projection`` as every kernel takes it: the eye ``x, y, z``, the forward
-    and right vectors, ``f``, the centre ``x0, y0``, the frame size, each column's ``u``;
-    the sky's texture rows ``t0 + t1*row``; the flats' offset eye ``x, -y``."""
+    and right vectors, ``f``, the centre ``x0, y0``, the frame size; the sky's texture rows
+    ``t0 + t1*row``; the flats' offset eye ``x, -y``.  Numbers only, so a kernel hands it
+    to the helpers it inlines at no cost (an array in it would be reference-counted at each
+    hand-over); the kernels that need each column's ``u`` take ``Projection.u`` beside it."""
     x: float
     y: float
     z: float
@@ -43,7 +45,6 @@ class View(NamedTuple):
     y0: float
     width: int
     height: int
-    u: np.ndarray
     sky_t0: float
     sky_t1: float
     flat_x: float
@@ -53,7 +54,7 @@ class View(NamedTuple):
 def view_of(view: Projection) -> View:
     """The kernels' ``View`` of a projection."""
     return View(view.x, view.y, view.z, view.f, view.fx, view.fy, view.rx, view.ry, view.x0,
-                view.y0, view.width, view.height, view.u,
+                view.y0, view.width, view.height,
                 SKY_ROW - SKY_ROWS_PER_V * view.y0 / view.f, SKY_ROWS_PER_V / view.f,
                 view.x + FLAT_OFFSET, FLAT_OFFSET - view.y)
 

@@ -11,7 +11,13 @@ forward depth ``d >= MIN_DEPTH`` (DOOM's MINZ):
 - it covers the columns whose ``u`` lies in ``[(l - left)/d, (l - left + w)/d)`` and the
   heights ``[g + top - h, g + top]`` (``l``: its offset along R, ``g``: its feet);
 - it is lit by its sector's light and its depth as walls are, full-bright frames unlit;
-- every column is clipped to the window the walk left open at that depth (``_window``).
+- every column is clipped to the window the walk left open at that depth.  Along one
+  column the walk met the drawn pieces in order of depth, and each left a window of rows
+  open behind it: something at depth ``d`` is seen only through the window of the last
+  piece nearer than ``d``.  Beyond that piece the ray is in the piece's far sector X; when
+  X is not the thing's own sector, X's floor and ceiling between the piece and ``d`` are
+  nearer too and close the window further; the own sector never does (DOOM lets a
+  sprite's feet reach below its floor).
 
 The sprite columns are drawn with the masked walls' columns, far to near (``composite``).
 Pictures are chosen in Python (``pictures``; the kernels read a table of the choices made,
@@ -167,44 +173,23 @@ def visible_things(leaves, n_leaves, leaf, alive, drawn, x, y, radius, view, pie
 
 
 @step_kernel
-def _window(col, lo, fraction, scale, own, clip, keys, floor, ceiling, view):
-    """Rows ``(top, bottom)`` of column ``col`` through which something of sector ``own``
-    at depth ``d`` is seen (``fraction``: ``d / (1 + d)``; ``scale``: ``f / d``; ``lo``:
-    the column's first drawseg, if it has one).
-
-    Along one column the walk met the drawn pieces in order of depth, and each left a
-    window of rows open behind it: something at depth ``d`` is seen only through the
-    window of the last piece nearer than ``d``.  Beyond that piece the ray is in the
-    piece's far sector X; when X is not the thing's own sector, X's floor and ceiling
-    between the piece and ``d`` are nearer too and close the window further; the own
-    sector never does (DOOM lets a sprite's feet reach below its floor).  The column's
-    drawsegs are searched by the key ``col + 1/(1 + w)`` (running max), which ``keys``
-    keeps once made (NaN before).  ``clip``: the ``Clip``'s arrays, as a tuple."""
-    ds_col, ds_w, open_top, open_bottom, piece, piece_keys, key_near, key_far = clip
-    height = view.height
-    if lo == ds_col.shape[0] or ds_col[lo] != col:   # no piece: out of the map
-        top, bottom, beyond = 0, height, -1
-    else:
-        q = col + fraction
-        last, key = lo - 1, -np.inf
-        while last + 1 < ds_col.shape[0] and ds_col[last + 1] == col:
-            if np.isnan(keys[last + 1]):
-                keys[last + 1] = 1.0 / (1.0 + ds_w[last + 1])
-            key = max(key, col + keys[last + 1])
-            if not key < q:
-                break
-            last += 1
-        if last >= lo:                                # a nearer piece in the column
-            top, bottom = open_top[last], open_bottom[last]
-            beyond = key_far[piece_keys[piece[last]]]
-        else:                                         # the column's ray starts here
-            top, bottom, beyond = 0, height, key_near[piece_keys[piece[lo]]]
-    if beyond >= 0 and beyond != own:
-        floor_row = np.ceil(view.y0 - (floor[beyond] - view.z) * scale)
-        ceiling_row = np.ceil(view.y0 - (ceiling[beyond] - view.z) * scale)
-        bottom = int(min(float(bottom), floor_row))
-        top = int(max(float(top), ceiling_row))
-    return top, bottom
+def _last_nearer(col, lo, fraction, ds_col, ds_w, keys):
+    """``(has, last)``: whether column ``col`` has a drawseg (``lo``: its first, if it
+    has one), and the last of them nearer than depth ``d`` (``fraction``: ``d / (1 +
+    d)``; ``lo - 1`` when none is).  The column's drawsegs are searched by the key ``col +
+    1/(1 + w)`` (running max), which ``keys`` keeps once made (NaN before)."""
+    if lo == ds_col.shape[0] or ds_col[lo] != col:
+        return False, lo - 1
+    q = col + fraction
+    last, key = lo - 1, -np.inf
+    while last + 1 < ds_col.shape[0] and ds_col[last + 1] == col:
+        if np.isnan(keys[last + 1]):
+            keys[last + 1] = 1.0 / (1.0 + ds_w[last + 1])
+        key = max(key, col + keys[last + 1])
+        if not key < q:
+            break
+        last += 1
+    return True, last
 
 
 @kernel
@@ -223,7 +208,7 @@ def _chosen_pictures(seen, things):
 
 
 @kernel
-def sprite_columns(seen, things, pictures, scene, lit, view, clip, wall_ints, wall_floats):
+def sprite_columns(seen, things, pictures, scene, lit, view, u, clip, wall_ints, wall_floats):
     """``(ints, floats, sprites, drawn)``: the slices of the things ``visible_things`` kept,
     clipped to the windows, then the masked walls' (``wall_ints``, ``wall_floats``); how
     many of them are sprites', and how many things have one.  ``drawn`` is -1 (and nothing
@@ -231,10 +216,9 @@ def sprite_columns(seen, things, pictures, scene, lit, view, clip, wall_ints, wa
     ids, depth, along = seen.ids, seen.depth, seen.along
     pic_width, pic_height, pic_left, pic_top = (pictures.width, pictures.height, pictures.left,
                                                 pictures.top)
-    floor, ceiling, u = scene.floor, scene.ceiling, view.u
-    ds_col = clip.col
-    arrays = (ds_col, clip.w, clip.open_top, clip.open_bottom, clip.piece, clip.piece_keys,
-              clip.key_near, clip.key_far)
+    floor, ceiling = scene.floor, scene.ceiling
+    ds_col, ds_w, ds_open_top, ds_open_bottom = clip.col, clip.w, clip.open_top, clip.open_bottom
+    ds_piece, piece_keys, key_near, key_far = clip.piece, clip.piece_keys, clip.key_near, clip.key_far
     m = ids.shape[0]
     picture = _chosen_pictures(seen, things)
     first = np.empty(m, dtype=np.int64)
@@ -288,8 +272,23 @@ def sprite_columns(seen, things, pictures, scene, lit, view, clip, wall_ints, wa
             tx = min(max(tx, 0), w - 1)
             if mirrored:
                 tx = w - 1 - tx
-            win_top, win_bottom = _window(col, lo, fraction, scale, own, arrays, keys, floor,
-                                          ceiling, view)
+            # the window this column leaves open at depth d (module docstring): that of
+            # the last nearer piece, closed further by the floor and ceiling of the sector
+            # beyond it when that is not the thing's own
+            has, last = _last_nearer(col, lo, fraction, ds_col, ds_w, keys)
+            if not has:                                       # no piece: out of the map
+                win_top, win_bottom, beyond = 0, view.height, -1
+            elif last >= lo:                                  # a nearer piece
+                win_top, win_bottom = ds_open_top[last], ds_open_bottom[last]
+                beyond = key_far[piece_keys[ds_piece[last]]]
+            else:                                             # the column's ray starts here
+                win_top, win_bottom = 0, view.height
+                beyond = key_near[piece_keys[ds_piece[lo]]]
+            if beyond >= 0 and beyond != own:
+                floor_row = np.ceil(view.y0 - (floor[beyond] - view.z) * scale)
+                ceiling_row = np.ceil(view.y0 - (ceiling[beyond] - view.z) * scale)
+                win_bottom = int(min(float(win_bottom), floor_row))
+                win_top = int(max(float(win_top), ceiling_row))
             row1 = max(r1, win_top)
             row2 = max(min(r2, win_bottom), row1)
             if row2 > row1:
