@@ -4,6 +4,7 @@ import json
 import struct
 from pathlib import Path
 
+import numpy as np
 import pytest
 
 from wallbsp.app.cli import main
@@ -59,3 +60,17 @@ def test_a_missing_lump_and_an_unwritable_trace_are_one_line(tmp_path, capsys):
     assert "no lump DEMO9" in capsys.readouterr().err
     assert main(["play", str(WAD1), "DEMO1", "--trace", str(tmp_path / "no" / "x")]) == 2
     assert "does not exist" in capsys.readouterr().err
+
+
+def test_the_screenshot_is_the_view_at_the_end_with_the_status_bar_when_asked(tmp_path):
+    from pngread import load_png as read_png
+    demo = tmp_path / "short.lmp"
+    demo.write_bytes(lump(WAD1, "DEMO1")[:13 + 4 * 200] + b"\x80")
+    plain, hud = tmp_path / "plain.png", tmp_path / "hud.png"
+    assert main(["play", str(WAD1), str(demo), "--screenshot", str(plain)]) == 0
+    assert main(["play", str(WAD1), str(demo), "--screenshot", str(hud), "--hud"]) == 0
+    view, framed = read_png(plain), read_png(hud)
+    assert view.shape == framed.shape == (200, 320, 3)
+    assert len(np.unique(view.reshape(-1, 3), axis=0)) > 64       # a textured view
+    bar = slice(168, 200)                                          # ST_Y at 320×200
+    assert not np.array_equal(view[bar], framed[bar])

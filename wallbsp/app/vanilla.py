@@ -35,12 +35,16 @@ def play_vanilla(args) -> None:
         demo = load_demo(args.level, args.demo)
         play = play_class()(args.level)
         play.g_do_play_demo(demo)
+        hud = new_hud() if args.screenshot and args.hud else None
         lines, started = [], time.perf_counter()
         for commands in demo.tics:
-            if play.g_ticker(commands) and args.trace:
+            ticked = play.g_ticker(commands)
+            if ticked and args.trace:
                 line = trace_line(play)
                 if line is not None:
                     lines.append(line)
+            if hud is not None and ticked and play.gamestate == 0:    # ST_Ticker, HU_Ticker
+                hud.tick(play)
         seconds = time.perf_counter() - started
     except (DemoError, MapLoadError) as err:
         raise LevelError(str(err)) from None
@@ -48,7 +52,7 @@ def play_vanilla(args) -> None:
     if args.trace:
         outputs[args.trace] = "".join(line + "\n" for line in lines).encode()
     if args.screenshot:
-        outputs[args.screenshot] = screenshot(play, args.size)
+        outputs[args.screenshot] = screenshot(play, args.size, hud)
     write_outputs(outputs)
     if args.timedemo:
         tics = len(demo.tics)
@@ -84,5 +88,28 @@ def map_name(play) -> str:
     return f"E{play.gameepisode}M{play.gamemap}"
 
 
-def screenshot(play, size) -> bytes:
-    raise LevelError("play: --screenshot of a vanilla demo needs the World's renderer bridge")
+def new_hud():
+    from wallbsp.screen.hud import Hud
+    return Hud()
+
+
+def screenshot(play, size, hud=None) -> bytes:
+    """The console player's view when the demo ends: the map compiled into a tree, its
+    heights, lights and things read from the play as the World reads them; with ``hud``,
+    DOOM's status bar and weapon around it."""
+    from wallbsp.bsp.build import compile_level
+    from wallbsp.camera import Camera
+    from wallbsp.game.playstate import PlayState
+    from wallbsp.image import png_bytes
+    from wallbsp.level.wadmap import load_wad_level
+    from wallbsp.render import render
+    tree = compile_level(load_wad_level(play.wad_path, map_name(play)))
+    state = PlayState(tree, play, play.gameskill + 1)
+    player = play.players[play.consoleplayer]
+    mo = player.mo
+    camera = Camera(mo.x / FRACUNIT, mo.y / FRACUNIT, player.viewz / FRACUNIT,
+                    (mo.angle & 0xFFFFFFFF) * 360 / 2**32)
+    if hud is not None:
+        from wallbsp.app.hudframe import hud_frame
+        return png_bytes(hud_frame(state, camera, *size, hud=hud)[0])
+    return png_bytes(render(state, camera, *size).color)
