@@ -3,7 +3,7 @@ a level (``G_DoLoadLevel`` and ``P_SetupLevel``'s order of work), one game tic
 (``G_Ticker``: reborns, game actions, the tic commands, then the play, intermission or
 finale ticker) and the exits (``G_ExitLevel``, ``G_SecretExitLevel``, ``G_DoCompleted``,
 ``G_WorldDone``).  The player structure functions (``G_PlayerReborn``, ``G_DoReborn``, ...) are in
-``gameplayers.py``.
+``gameplayers.py``; the WAD's lumps, flats and texture heights in ``wadlumps.py``.
 
 Game-wide state (not per level) is set by ``g_init(wad_path)``, which ``Play.__init__``
 calls: the WAD, its game mode and executable version, the players, the random numbers.
@@ -14,13 +14,12 @@ Sounds: ``s_start_sound``/``s_stop_sound`` count calls and forward them to ``sel
 ``wallbsp.sound.SoundSystem`` when one is attached (None by default: no sound, no cost).
 """
 import os
-import struct
 
 from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACBITS, FRACUNIT
+from wallbsp.sim.fixed import FRACUNIT
 from wallbsp.sim.rng import Random
 
-from .demos import DemoError, wad_entries, wad_image
+from .demos import DemoError, wad_entries
 from .structs import (BT_SPECIAL, COMMERCIAL, EXE_DOOM_1_9, EXE_FINAL, EXE_ULTIMATE, MAXPLAYERS,
                       PST_DEAD, PST_REBORN, REGISTERED, RETAIL, SHAREWARE, MapThing, Player)
 
@@ -134,37 +133,6 @@ class Game:
                                                          "init_intermission"):
                 getattr(self, name)()
 
-    def w_lump(self, name):
-        """The bytes of the last lump called ``name`` (W_CacheLumpName), or None."""
-        index = self.wad_dir.get(name.upper())
-        return None if index is None else self._read_entry(index)
-
-    def _read_entry(self, index):
-        _, pos, size = self.wad_entries[index]
-        with open(self.wad_entry_files[index], "rb") as f:
-            f.seek(pos)
-            return f.read(size)
-
-    def map_wad(self, mapname):
-        """What mapload reads map ``mapname`` from: the WAD's path, or with PWADs a WAD
-        image of the map's marker and the ten lumps after it (wherever they came from)."""
-        if not self.wad_files:
-            return self.wad_path
-        first = self.wad_dir[mapname]
-        lumps = [(self.wad_entries[i][0], self._read_entry(i))
-                 for i in range(first, min(first + 11, len(self.wad_entries)))]
-        return wad_image(lumps)
-
-    def _flat_names(self):
-        """R_InitFlats' flat numbers: every lump from the last F_START to the last F_END,
-        nested markers included, by name."""
-        names = [e[0] for e in self.wad_entries]
-        if "F_START" not in self.wad_dir or "F_END" not in self.wad_dir:
-            return []
-        first = len(names) - names[::-1].index("F_START")
-        last = len(names) - 1 - names[::-1].index("F_END")
-        return names[first:last]
-
     # -- sound: wallbsp.sound's SoundSystem when one is attached (``sound.attach(play)``) ----
     sound = None
 
@@ -177,36 +145,6 @@ class Game:
         self.sounds_stopped += 1
         if self.sound is not None:
             self.sound.stop_sound(origin)
-
-    # -- textures ------------------------------------------------------------------------
-    def texture_height(self, name):
-        """``textureheight[R_TextureNumForName(name)]``: the wall texture's height in fixed
-        point; "-" is texture 0, as in DOOM."""
-        if self._texture_heights is None:
-            self._texture_heights = self._read_texture_heights()
-        heights, first = self._texture_heights
-        if name[:1] == "-":
-            return first
-        try:
-            return heights[name.upper()]
-        except KeyError:
-            raise KeyError(f"R_TextureNumForName: {name} not found") from None
-
-    def _read_texture_heights(self):
-        heights, first = {}, None
-        for lump in ("TEXTURE1", "TEXTURE2"):
-            raw = self.w_lump(lump)
-            if raw is None:
-                continue
-            count = struct.unpack_from("<i", raw, 0)[0]
-            for i in range(count):
-                offset = struct.unpack_from("<i", raw, 4 + 4 * i)[0]
-                name = raw[offset:offset + 8].split(b"\0", 1)[0].decode("latin-1").upper()
-                height = struct.unpack_from("<h", raw, offset + 14)[0] << FRACBITS
-                if first is None:
-                    first = height
-                heights.setdefault(name, height)   # the first of a name is found
-        return heights, first
 
     # -- starting ----------------------------------------------------------------------------
     def g_do_play_demo(self, demo):
