@@ -27,6 +27,7 @@ BENCHMARKS = {
     "env": ("env_throughput", "environments' steps/s, vector envs, reset time"),
     "vector": ("vector", "make_vec's batched vector env against one env and gymnasium's"),
     "playsim": ("playsim", "DOOM's play simulation: demo playback tics/s against Chocolate Doom"),
+    "scenarios": ("scenarios", "ViZDoom's scenarios beside ViZDoom: steps/s, a random agent's returns"),
     "hud": ("hud", "the status bar, weapon, messages and flashes: CPU ms a frame and a tic"),
 }
 

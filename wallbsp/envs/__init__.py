@@ -40,6 +40,10 @@ ENV_IDS = {"wallbsp/Exit-v0": "wallbsp.envs.tasks:ExitEnv",
            "wallbsp/Explore-v0": "wallbsp.envs.tasks:ExploreEnv",
            "wallbsp/Find-v0": "wallbsp.envs.tasks:FindEnv"}
 
+# ViZDoom's scenarios (wallbsp/envs/vizdoom.py, docs/scenarios.md)
+from wallbsp.envs.vizdoom import SCENARIOS as _SCENARIOS          # noqa: E402
+ENV_IDS.update({_id: f"wallbsp.envs.vizdoom:{_cls}" for _id, _cls in _SCENARIOS.items()})
+
 for _id, _entry in ENV_IDS.items():
     if _id not in registry:              # a second import (e.g. a reload) registers nothing
         # gymnasium.make_vec(id, n) (and RLlib's gym_env_vectorize_mode="vector_entry_point")

@@ -1,0 +1,185 @@
+"""``ScenarioEnv``: a ``Scenario`` (``wallbsp.game.scenario``) as a Gymnasium environment,
+with ViZDoom's buttons, game variables, rewards and episode rules.
+
+``ScenarioEnv(scenario, **options)`` takes a ``Scenario`` class or instance and
+``WallbspEnv``'s options (``size``, ``frame_skip``, ``fov``, ``textures``, ``render_mode``;
+``skill`` and ``max_tics`` default to the scenario's), and:
+
+- ``buttons=``: ViZDoom's button names (``gamevars.BUTTONS``), default the scenario's;
+- ``action_space=``: ``"discrete"`` (default, as ViZDoom's Gymnasium wrapper: ``Discrete(n
+  + 1)``, action 0 presses nothing and action i presses button i alone),
+  ``"multibinary"`` (``MultiBinary(n)``, any combination) or ``"box"`` (``Box`` of one
+  value a button: binary buttons pressed above 0.5, the deltas as ``gamevars`` says);
+- ``observations=``: as ``WallbspEnv``'s plus ``"gamevars"`` (a float32 vector of the
+  variables); default ``("rgb", "gamevars")``;
+- ``variables=``: ViZDoom's variable names for ``gamevars``, default the scenario's.
+
+An episode: the level loads, DOOM's random index is drawn from the episode's generator,
+the scenario's ``reset`` runs, then ``start_tics`` tics with nothing pressed (ViZDoom's
+``episode_start_time``).  Each tic's reward is ``living_reward`` plus the scenario's
+``tic``, minus ``death_penalty`` when the player dies.  The episode ends (``terminated``)
+when the player dies, the scenario exits the level or says ``done``; it is truncated when
+the agent has had ``timeout`` tics (ViZDoom's ``episode_timeout``: the level's clock
+reaches ``start_tics + timeout``; ``max_tics=`` overrides it, counted on the level's
+clock).  ``info`` holds ``tics`` (the level's clock), ``health``,
+``exited`` and every game variable of ``variables``.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from wallbsp.envs import gamevars
+from wallbsp.envs.base import WallbspEnv
+from wallbsp.envs.levels import given_tree
+from wallbsp.game.playsim.game import GA_COMPLETED, GA_VICTORY
+from wallbsp.game.scenario import SCENARIO_DIR
+from wallbsp.game.world import World
+
+__all__ = ["ScenarioEnv", "scenario_tree", "IWAD_PATHS"]
+
+IWAD_PATHS = ("/usr/share/games/doom/freedoom2.wad", "/usr/share/doom/freedoom2.wad")
+ACTION_KINDS = ("discrete", "multibinary", "box")
+_TREES: dict = {}
+
+
+def scenario_tree(level):
+    """The compiled tree of a scenario's ``level``: a name of ``wallbsp/data/scenarios``
+    (Freedoom's IWAD added as its texture source when installed), or what ``given_tree``
+    takes."""
+    if not isinstance(level, str) or "/" in level or "." in level:
+        return given_tree(level)
+    if level not in _TREES:
+        import json
+        import os
+        from wallbsp.bsp.build import compile_level
+        from wallbsp.level.io import level_from_dict
+        data = json.loads((SCENARIO_DIR / f"{level}.json").read_text())
+        iwad = os.environ.get("WALLBSP_IWAD") or next(
+            (p for p in IWAD_PATHS if os.path.isfile(p)), None)
+        if iwad:
+            data["resources"] = [iwad]
+        _TREES[level] = compile_level(level_from_dict(data, source=f"{level}.json"))
+    return _TREES[level]
+
+
+def _forget():
+    _TREES.clear()
+
+
+import os as _os                                                   # noqa: E402
+_os.register_at_fork(after_in_child=_forget)
+
+
+class ScenarioEnv(WallbspEnv):
+    """A scenario as an environment (module docstring)."""
+
+    def __init__(self, scenario, buttons=None, variables=None, action_space="discrete",
+                 observations=("rgb", "gamevars"), skill=None, max_tics=None, **options):
+        self.scenario = scenario() if isinstance(scenario, type) else scenario
+        sc = self.scenario
+        self.default_max_tics = sc.start_tics + sc.timeout if sc.timeout else 10 ** 9
+        if action_space not in ACTION_KINDS:
+            raise ValueError(f"action_space must be one of {ACTION_KINDS}, not "
+                             f"{action_space!r}")
+        keys = (observations,) if isinstance(observations, str) else tuple(observations)
+        self.with_gamevars = "gamevars" in keys
+        view_keys = tuple(k for k in keys if k != "gamevars") or ("pose",)
+        super().__init__(observations=view_keys, max_tics=max_tics,
+                         skill=sc.skill if skill is None else skill, **options)
+        self._keys_wanted = tuple(k for k in keys if k != "gamevars")
+        self.buttons = gamevars.check_buttons(sc.buttons if buttons is None else buttons)
+        self.variables = gamevars.check_variables(sc.variables if variables is None
+                                                  else variables)
+        self.action_kind = action_space
+        self.action_space = self._make_action_space()
+        self.observation_space = self._make_observation_space()
+        self.tree = scenario_tree(sc.level)
+        self._turnheld = 0
+
+    # -- spaces -------------------------------------------------------------------------------
+    def _make_action_space(self):
+        from gymnasium import spaces
+        n = len(self.buttons)
+        if self.action_kind == "discrete":
+            return spaces.Discrete(n + 1)
+        if self.action_kind == "multibinary":
+            return spaces.MultiBinary(n)
+        high = np.array([gamevars.DELTA_LIMITS.get(b, 1.0) for b in self.buttons], np.float32)
+        low = np.array([-gamevars.DELTA_LIMITS[b] if b in gamevars.DELTA_LIMITS else 0.0
+                        for b in self.buttons], np.float32)
+        return spaces.Box(low, high, dtype=np.float32)
+
+    def _make_observation_space(self):
+        from gymnasium import spaces
+        made = {k: self.observation_space[k] for k in self._keys_wanted}
+        if self.with_gamevars:
+            made["gamevars"] = spaces.Box(-np.inf, np.inf, (len(self.variables),), np.float32)
+        return spaces.Dict(made)
+
+    def _values(self, action) -> np.ndarray:
+        n = len(self.buttons)
+        if self.action_kind == "discrete":
+            values = np.zeros(n, np.float32)
+            a = int(action)
+            if a:
+                values[a - 1] = 1.0
+            return values
+        return np.asarray(action, dtype=np.float32).reshape(n)
+
+    # -- episodes -----------------------------------------------------------------------------
+    def episode_tree(self):
+        return self.tree
+
+    def reset(self, *, seed=None, options=None):
+        super(WallbspEnv, self).reset(seed=seed)
+        rng = self.np_random
+        self.world = World(self.tree, self.skill)
+        self.world.play.rng.prndindex = int(rng.integers(256))
+        self._tics = self._turnheld = 0
+        sc = self.scenario
+        sc.begin(self.world, rng)
+        for _ in range(sc.start_tics):
+            self.world.tic()
+            sc.after_tic(self.world)
+        return self._observe(), self._info()
+
+    def step(self, action):
+        if self.world is None:
+            raise RuntimeError("step() before reset()")
+        world, sc = self.world, self.scenario
+        values = self._values(action)
+        reward, terminated = 0.0, False
+        turning = any(v > 0.5 for b, v in zip(self.buttons, values)
+                      if b in ("TURN_LEFT", "TURN_RIGHT"))
+        for _ in range(self.frame_skip):
+            self._turnheld = self._turnheld + 1 if turning else 0
+            cmd = gamevars.command(self.buttons, values, world.play.players[0],
+                                   self._turnheld)
+            world.tic(cmd)
+            self._tics += 1
+            reward += sc.living_reward + sc.after_tic(world)
+            if world.dead:
+                reward -= sc.death_penalty
+                terminated = True
+            elif world.exited or world.play.gameaction in (GA_COMPLETED, GA_VICTORY) \
+                    or sc.done(world):
+                terminated = True
+            if terminated or world.tic_count >= self.max_tics:
+                break
+        truncated = not terminated and world.tic_count >= self.max_tics
+        return self._observe(), float(reward), terminated, truncated, self._info()
+
+    def _observe(self) -> dict:
+        obs = super()._observe() if self._keys_wanted else {}
+        obs = {k: obs[k] for k in self._keys_wanted}
+        if self.with_gamevars:
+            obs["gamevars"] = gamevars.variables_array(self.world, self.variables,
+                                                       self.scenario.recorder)
+        return obs
+
+    def _info(self) -> dict:
+        world = self.world
+        out = {"tics": world.tic_count, "exited": world.exited,
+               "health": int(world.play.players[0].health)}
+        out.update(gamevars.game_variables(world, self.variables, self.scenario.recorder))
+        return out
