@@ -78,8 +78,8 @@ def observe_rows(entries, view, parts, scene, painter, overlay, packed, rgb, dep
     ``labels`` ``(H, W, 2)`` (one of size 0 is not wanted): ``packed`` is the frame's
     colour ``(W*H,)``; ``overlay`` the masked pass's pixels, the slice each shows and the
     slices' kind, index and depth."""
-    entries, view, parts, scene = Entries(*entries), View(*view), Parts(*parts), Scene(*scene)
-    width, height = view.width, view.height
+    numbers = View(*view)              # the groups go on to paint_layers as they came
+    width, height = numbers.width, numbers.height
     if depth_rows.size or labels.size:
         kind = np.empty(width * height, dtype=np.uint8)
         index = np.empty(width * height, dtype=np.int32)
