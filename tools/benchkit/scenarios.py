@@ -27,7 +27,10 @@ import numpy as np
 
 IDS = {"basic": "wallbsp/Basic-v0", "defend_the_center": "wallbsp/DefendTheCenter-v0",
        "health_gathering": "wallbsp/HealthGathering-v0",
-       "take_cover": "wallbsp/TakeCover-v0", "defend_the_line": "wallbsp/DefendTheLine-v0"}
+       "take_cover": "wallbsp/TakeCover-v0", "defend_the_line": "wallbsp/DefendTheLine-v0",
+       "my_way_home": "wallbsp/MyWayHome-v0", "deadly_corridor": "wallbsp/DeadlyCorridor-v0",
+       "health_gathering_supreme": "wallbsp/HealthGatheringSupreme-v0",
+       "predict_position": "wallbsp/PredictPosition-v0"}
 
 VIZDOOM = r'''
 import json, sys, time, os

@@ -100,6 +100,7 @@ class Events:
         self.damage_dealt = self.hits = self.damage_taken = self.hits_taken = 0
         self.factors: dict = {}                  # mobj -> damage factor (ZDoom's)
         self.ignoring: set = set()               # mobjs that never wake
+        self.custom: dict = {}                   # mobj -> its pickup's own effect
         self._ammo = sum(play.players[0].ammo)
         damage, kill, touch = play.p_damage_mobj, play.p_kill_mobj, play.p_touch_special_thing
         look = play.a_look
@@ -134,6 +135,16 @@ class Events:
             kill(source, target)
 
         def p_touch_special_thing(special, toucher):
+            effect = self.custom.get(special)
+            if effect is not None:                 # DOOM's reach test, then the effect
+                delta = special.z - toucher.z
+                if delta > toucher.height or delta < -8 * FRAC or toucher.health <= 0:
+                    return
+                del self.custom[special]
+                effect(toucher.player)
+                play.p_remove_mobj(special)
+                self.events.append(Event("pickup", special, toucher, 0, special.type))
+                return
             touch(special, toucher)
             if special.func is None:
                 self.events.append(Event("pickup", special, toucher, 0, special.type))
@@ -141,6 +152,15 @@ class Events:
         play.p_damage_mobj, play.p_kill_mobj = p_damage_mobj, p_kill_mobj
         play.p_touch_special_thing = p_touch_special_thing
         play.a_look = a_look
+        aim = play.p_aim_line_attack
+        self.noautoaim = False
+
+        def p_aim_line_attack(t1, angle, distance):
+            if self.noautoaim and t1.player is not None:
+                play.linetarget = None             # ZDoom's sv_noautoaim: straight ahead
+                return 0
+            return aim(t1, angle, distance)
+        play.p_aim_line_attack = p_aim_line_attack
 
     def after_tic(self) -> None:
         """Records the rounds the player fired this tic (call after each tic)."""
@@ -250,6 +270,12 @@ class Scenario:
                 play.p_remove_mobj(mo)
                 return None
         return mo
+
+    def on_pickup(self, mo, effect) -> None:
+        """Picking ``mo`` up calls ``effect(player)`` (DOOM's ``player_t``) instead of
+        DOOM's rule for its type, and always succeeds (a DECORATE item with
+        ``INVENTORY.ALWAYSPICKUP``)."""
+        self.recorder.custom[mo] = effect
 
     @staticmethod
     def remove(world, mo) -> None:
