@@ -154,7 +154,7 @@ def test_playsim_quick_plays_two_demos_in_sync():
         return
     assert {"machine", "demos", "median_tics_per_second", "median_cpu_tics_per_second",
             "all_in_sync", "target_tics_per_second", "meets_target", "chocolate_doom",
-            "compiled_sight_walk", "warmup_seconds"} <= result.keys()
+            "warmup_seconds"} <= result.keys()
     assert len(result["demos"]) == 2 and result["all_in_sync"]
     for row in result["demos"]:
         assert {"wad", "demo", "map", "tics", "seconds", "tics_per_second", "in_sync",

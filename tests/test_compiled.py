@@ -12,15 +12,13 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from wallbsp import Camera, compile_level, jit as compiled, load_level, render
+from wallbsp import Camera, compile_level, load_level, render
 from wallbsp.sim.state import WorldState
 
 ROOT = Path(__file__).resolve().parent.parent
 FREEDOOM = Path("/usr/share/games/doom")
 SIZES = ((64, 40), (97, 61))
 LAYERS = ("color", "kind", "index", "depth")
-
-pytestmark = pytest.mark.skipif(not compiled.AVAILABLE, reason="numba not installed")
 
 
 def both_ways(source, camera, width, height, **options):

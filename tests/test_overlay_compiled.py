@@ -13,7 +13,7 @@ from pathlib import Path
 import numpy as np
 import pytest
 
-from wallbsp import compile_level, jit as compiled, load_level, render
+from wallbsp import compile_level, load_level, render
 from wallbsp.camera import eye_camera
 from wallbsp.sim.state import WorldState
 
@@ -29,8 +29,6 @@ IMP, BARREL, STIMPACK, HANGING, LAMP = 3001, 2035, 2011, 63, 2028   # IMP, HANGI
 # E1M1 views of grates and of things near and far (tests/test_sprites.py looks at them too)
 E1M1_VIEWS = [(-160, 304, 0), (704, 1818, 90), (704, 922, 90), (2095.98, 620.24, 79.88),
               (1436.27, 533.33, 73.17), (2081.89, 1648.88, 338.74), (1258.96, 1270.38, 309.15)]
-
-pytestmark = pytest.mark.skipif(not compiled.AVAILABLE, reason="numba not installed")
 
 
 def both_ways(state, camera, size, **options):

@@ -1,21 +1,22 @@
-"""The compiled walks down a map's nodes (``wallbsp.sim.nodewalks``) against the Python walks
-they replace (``sight.py``'s P_CrossBSPNode/P_CrossSubsector, ``bsptables.py``'s
-R_PointInSubsector): the same answers, and for sight the same window (topslope,
-bottomslope), on Freedoom maps, for every pair of a sample of map objects and a grid of
-points.  The demos (test_playsim_demos) play through the compiled walks too."""
+"""The compiled walks down a map's nodes (``wallbsp.sim.nodewalks``, what the play runs)
+against the Python walks they replaced (``nodewalkref``: P_CrossBSPNode/P_CrossSubsector
+and R_PointInSubsector over the map objects): the same answers, and for sight the same
+window (topslope, bottomslope), on Freedoom maps, for every pair of a sample of map
+objects and a grid of points.  The demos (test_playsim_demos) play through the compiled
+walks too."""
 import itertools
 import random
 from pathlib import Path
 
 import pytest
 
-from wallbsp.jit import AVAILABLE, use_kernels
 from wallbsp.game.playsim.play import play_class
 
+from nodewalkref import NodeWalks
+
 DOOM = Path("/usr/share/games/doom")
-pytestmark = [pytest.mark.skipif(not AVAILABLE, reason="needs numba"),
-              pytest.mark.skipif(not (DOOM / "freedoom2.wad").exists(),
-                                 reason="needs the Freedoom WADs")]
+pytestmark = pytest.mark.skipif(not (DOOM / "freedoom2.wad").exists(),
+                                reason="needs the Freedoom WADs")
 
 
 @pytest.fixture(scope="module", params=[("freedoom1.wad", 1, 4), ("freedoom2.wad", 1, 10)])
@@ -37,28 +38,17 @@ def _mobjs(play):
     return found
 
 
-def _both_ways(function):
-    """``function()`` with the compiled walks, then with the Python ones."""
-    previous = use_kernels(True)
-    try:
-        compiled = function()
-        use_kernels(False)
-        return compiled, function()
-    finally:
-        use_kernels(previous)
-
-
 def test_sight_is_the_same_compiled(play):
     things = _mobjs(play)
     pairs = list(itertools.permutations(random.Random(1).sample(things, min(30, len(things))),
                                         2))
 
-    def looks():
+    def looks(check_sight):
         play.topslope = play.bottomslope = 0        # a REJECTed pair leaves them as they were
-        return [(play.p_check_sight(a, b), play.topslope, play.bottomslope) for a, b in pairs]
+        return [(check_sight(a, b), play.topslope, play.bottomslope) for a, b in pairs]
 
-    compiled, python = _both_ways(looks)
-    assert compiled == python
+    compiled = looks(play.p_check_sight)
+    assert compiled == looks(NodeWalks(play).check_sight)
     assert any(seen for seen, _, _ in compiled) and not all(seen for seen, _, _ in compiled)
 
 
@@ -70,8 +60,6 @@ def test_point_in_subsector_is_the_same_compiled(play):
               for _ in range(2000)]
     points += [(v.x, v.y) for v in play.vertexes]         # on partition lines' ends
 
-    def where():
-        return [play.r_point_in_subsector(x, y) for x, y in points]
-
-    compiled, python = _both_ways(where)
-    assert compiled == python
+    walks = NodeWalks(play)
+    assert [play.r_point_in_subsector(x, y) for x, y in points] == \
+        [walks.point_in_subsector(x, y) for x, y in points]

@@ -4,13 +4,10 @@ one source, compiled or not) must give the same floats, query by query."""
 import numpy as np
 import pytest
 
-from wallbsp import jit as compiled
 from wallbsp.sim import queries, collision as segments
 from wallbsp.sim.queries import PLAYER_RADIUS
 from wallbsp.sim.querytables import Tables
 from wallbsp.sim.state import WorldState
-
-pytestmark = pytest.mark.skipif(not compiled.AVAILABLE, reason="numba is not installed")
 
 
 @pytest.fixture(params=["multi", "E1M1"])

@@ -258,7 +258,6 @@ def test_evil_grin_ouch_turns_rampage_god_and_death(golden):
 # -- flashes, the invulnerability map, messages ----------------------------------------------
 @needs_freedoom
 def test_flashes_are_playpals_palettes_and_invulnerability_colormap_32(golden):
-    from wallbsp.jit import use_kernels
     from wallbsp.screen.art import WadArt
     from wallbsp.screen.hud import palette_index
     from wallbsp.screen.remap import tint
@@ -267,20 +266,15 @@ def test_flashes_are_playpals_palettes_and_invulnerability_colormap_32(golden):
     colormap = np.frombuffer(wad.lump("COLORMAP"), np.uint8)[:34 * 256].reshape(34, 256)
     art = WadArt([FREEDOOM1])
     index = np.random.default_rng(5).integers(0, 256, (40, 64))
-    for kernels in (True, False):
-        previous = use_kernels(kernels)
-        try:
-            for n in range(1, 14):
-                frame = pals[0][index].copy()
-                tint(frame, art.tints[n])
-                assert np.array_equal(frame, pals[n][index]), n
-            frame = pals[0][index].copy()
-            art.invert(frame)
-            # a colour palette 0 holds twice is read as its first index
-            same = (pals[0][index][:, :, None, :] == pals[0][None, None]).all(-1)
-            assert np.array_equal(frame, pals[0][colormap[32][same.argmax(-1)]])
-        finally:
-            use_kernels(previous)
+    for n in range(1, 14):
+        frame = pals[0][index].copy()
+        tint(frame, art.tints[n])
+        assert np.array_equal(frame, pals[n][index]), n
+    frame = pals[0][index].copy()
+    art.invert(frame)
+    # a colour palette 0 holds twice is read as its first index
+    same = (pals[0][index][:, :, None, :] == pals[0][None, None]).all(-1)
+    assert np.array_equal(frame, pals[0][colormap[32][same.argmax(-1)]])
     player = golden.fake_play("freedoom1").players[0]
     assert palette_index(player) == 0
     player.bonuscount = 6
@@ -399,9 +393,7 @@ def test_a_world_played_with_the_hud(golden):
 @needs_freedoom
 def test_the_invisible_players_weapon_is_doom_fuzz(golden):
     """Only the weapon's opaque pixels change, each to a COLORMAP row 6 darkening (of a
-    pixel a row away, perhaps fuzzed already, as DOOM reads the screen as it draws), the
-    same with and without the compiled kernel."""
-    from wallbsp.jit import use_kernels
+    pixel a row away, perhaps fuzzed already, as DOOM reads the screen as it draws)."""
     from wallbsp.screen.hud import Hud
     wad = RefWad(FREEDOOM1)
     palette = np.frombuffer(wad.lump("PLAYPAL"), np.uint8)[:768].reshape(256, 3)
@@ -416,16 +408,9 @@ def test_the_invisible_players_weapon_is_doom_fuzz(golden):
         darker.add(int(colormap[6][index]))
         index = int(colormap[6][index])
     allowed = {tuple(palette[i]) for i in darker - {100}}
-    frames = []
-    for kernels in (True, False):
-        previous = use_kernels(kernels)
-        try:
-            frame = np.empty((200, 320, 3), np.uint8)
-            frame[:] = palette[100]
-            frames.append(Hud(statusbar=False).draw(frame, play))
-        finally:
-            use_kernels(previous)
-    assert np.array_equal(frames[0], frames[1])
-    changed = (frames[0] != palette[100]).any(-1)
+    frame = np.empty((200, 320, 3), np.uint8)
+    frame[:] = palette[100]
+    frame = Hud(statusbar=False).draw(frame, play)
+    changed = (frame != palette[100]).any(-1)
     assert changed.any() and not (changed & ~shown.any(-1)).any()
-    assert {tuple(c) for c in frames[0][changed]} <= allowed
+    assert {tuple(c) for c in frame[changed]} <= allowed

@@ -1,11 +1,11 @@
 """Compiled kernels: numba's ``njit`` for the few loops that numpy cannot batch cheaply.
 
 A frame is a few hundred small batches; at 160×120 numpy's fixed cost per call, not the
-pixels, sets the frame rate.  The hot stages (the walk, the column fill of a front-to-back
-frame, the masked pass, collision) therefore have a compiled kernel beside their numpy or
-Python code.  That code stays the reference: the tests draw every frame both ways and
-require the same bytes, and it is what runs where numba is missing or
-``WALLBSP_KERNELS=numpy`` is set.
+pixels, sets the frame rate.  The hot stages (the renderer's stages, collision, the play
+simulation's walks down the nodes, the screen's colour changes) are therefore compiled
+kernels, and they are the only implementation: numba is a dependency, and there is no
+switch to a numpy or Python twin.  Independent references the tests compare with live
+under ``tests/``.  To step through a kernel in Python, run with ``NUMBA_DISABLE_JIT=1``.
 
 numba is imported when the first kernel is first called, not with the package: importing
 it costs a third of a second, which a command that draws nothing (``wallbsp stats``) should
@@ -17,17 +17,14 @@ the modules that define them, so kernels that call kernels are compiled together
 from __future__ import annotations
 
 import hashlib
-import importlib.util
 import os
 import threading
 from pathlib import Path
 
-__all__ = ["kernel", "step_kernel", "kernels_enabled", "use_kernels", "AVAILABLE", "LazyKernel",
-           "jitable", "compiled_as", "register_jitables"]
+__all__ = ["kernel", "step_kernel", "LazyKernel", "jitable", "compiled_as",
+           "register_jitables"]
 
-AVAILABLE = importlib.util.find_spec("numba") is not None
-_STATE = {"on": AVAILABLE and os.environ.get("WALLBSP_KERNELS", "") != "numpy",
-          "numba": None}
+_STATE = {"numba": None}
 _LAZY: list = []
 _LOADING = threading.Lock()             # two threads' first calls load numba once
 
@@ -115,10 +112,7 @@ def _load_numba():
 
 def kernel(function):
     """``function`` to be compiled by numba (no Python objects, no GIL, cached on disk),
-    lazily (see the module's docstring); the plain function where numba is absent (never
-    called then: see ``kernels_enabled``)."""
-    if not AVAILABLE:
-        return function
+    lazily (see the module's docstring)."""
     if _STATE["numba"] is not None:
         return _jit(function)
     lazy = LazyKernel(function)
@@ -134,24 +128,11 @@ def step_kernel(function):
     return kernel(function)
 
 
-def kernels_enabled() -> bool:
-    """Whether the compiled kernels are used (else the numpy reference code)."""
-    return _STATE["on"]
-
-
-def use_kernels(on: bool) -> bool:
-    """Turn the kernels on or off (on needs numba); returns the previous setting.  The
-    tests use it to draw the same frame both ways."""
-    previous = _STATE["on"]
-    _STATE["on"] = bool(on) and AVAILABLE
-    return previous
-
-
 # Plain functions that numba may also compile inside a kernel: ``register_jitable``, done
 # only when a kernel that calls them is about to be built.  numba's own
 # ``register_jitable`` and ``overload`` need numba imported, so functions are marked here
 # instead and registered by ``register_jitables()``, which whoever makes such a kernel
-# calls first (``sim.collision``).  Without numba all of this does nothing.
+# calls first (``sim.collision``).
 _PENDING: list = []          # functions to register
 _OVERLOADS: list = []        # (Python function, what a kernel runs for it)
 
@@ -159,8 +140,7 @@ _OVERLOADS: list = []        # (Python function, what a kernel runs for it)
 def jitable(function):
     """Mark ``function`` (in the subset of Python numba compiles) as callable from
     kernels; it is returned unchanged, for the interpreter."""
-    if AVAILABLE:
-        _PENDING.append(function)
+    _PENDING.append(function)
     return function
 
 
@@ -168,8 +148,7 @@ def compiled_as(python_function, choose) -> None:
     """Inside a kernel, a call of ``python_function`` runs another function instead:
     ``choose``, with the same parameters (numba passes their types), returns it (a
     ``jitable``, same parameters again).  numba's ``overload``."""
-    if AVAILABLE:
-        _OVERLOADS.append((python_function, choose))
+    _OVERLOADS.append((python_function, choose))
 
 
 def register_jitables() -> None:

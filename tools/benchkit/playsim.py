@@ -54,7 +54,6 @@ def run(args) -> dict:
     missing = absent_wads()
     if missing:
         return {"machine": machine(), "quick": args.quick, "missing": missing}
-    from wallbsp.jit import kernels_enabled
     demos = QUICK_DEMOS if args.quick else DEMOS
     tics = QUICK_TICS if args.quick else None
     repeat = 1 if args.quick else args.repeat
@@ -64,7 +63,7 @@ def run(args) -> dict:
     median = statistics.median(row["tics_per_second"] for row in rows)
     chocolate = None if args.quick else chocolate_timedemo(demos)
     return {"machine": machine(), "quick": args.quick, "repeat": repeat,
-            "load_average": round(load, 2), "compiled_sight_walk": kernels_enabled(),
+            "load_average": round(load, 2),
             "warmup_seconds": round(warmup, 3), "demos": rows,
             "median_tics_per_second": round(median),
             "median_cpu_tics_per_second": round(statistics.median(
@@ -83,7 +82,6 @@ def _warm_up() -> float:
     from wallbsp.game.playsim.demos import load_demo
     from wallbsp.game.playsim.play import play_class
     from wallbsp.game.playsim.trace import trace_line
-    from wallbsp.jit import kernels_enabled
     from wallbsp.sim import nodewalks
     started = time.perf_counter()
     recording = load_demo(str(FREEDOOM[0]), "DEMO1")
@@ -92,10 +90,9 @@ def _warm_up() -> float:
     for commands in itertools.islice(recording.tics, WARMUP_TICS):
         play.g_ticker(commands)
     trace_line(play)                    # the trace's hash is compiled too (sim.fnv)
-    if kernels_enabled():
-        nodes, subsectors, segs, marks, out, far, _ = play.sight_arrays()
-        nodewalks.cross_bsp(nodes, subsectors, segs, marks.copy(), 1, 0, 0, 1, 1, out, far)
-        nodewalks.point_in_subsector(play.node_array(), 0, 0)
+    nodes, subsectors, segs, marks, out, far, _ = play.sight_arrays()
+    nodewalks.cross_bsp(nodes, subsectors, segs, marks.copy(), 1, 0, 0, 1, 1, out, far)
+    nodewalks.point_in_subsector(play.node_array(), 0, 0)
     return time.perf_counter() - started
 
 
@@ -203,8 +200,7 @@ def section(result: dict) -> str:
         f"Load average (1 min) when it started: {result['load_average']}, when it ended: "
         f"{result['load_average_after']} (other work on the machine lowers the wall-clock "
         "rates, ours and Chocolate Doom's alike; the CPU-time column is the process's own "
-        "time). The compiled node walks: "
-        f"{'on' if result['compiled_sight_walk'] else 'off (numba absent)'}. " + choc,
+        "time). " + choc,
         markdown_table(["demo", "map", "tics", "seconds", "tics/s", "tics per CPU s",
                         "in sync", "Chocolate Doom tics/s"], rows),
         f"Target (issue 20): median ≥ {result['target_tics_per_second']} tics/s — {met} in "

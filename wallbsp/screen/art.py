@@ -244,7 +244,8 @@ def _scaled(rgb, row):
 
 class ColourIndex:
     """RGB → palette index by a perfect hash of the palette's colours (three table look-ups
-    and one more), with a flag for colours the palette does not hold."""
+    and one more): ``parts``, ``table`` and ``palette``, which ``remap``'s kernels read
+    (a colour the palette does not hold is told by comparing with ``palette[index]``)."""
 
     def __init__(self, palette: np.ndarray):
         self.palette = palette
@@ -262,11 +263,6 @@ class ColourIndex:
     def _keys(self, rgb):
         return (self.parts[0][rgb[..., 0]] + self.parts[1][rgb[..., 1]]
                 + self.parts[2][rgb[..., 2]]) & 0xFFFF
-
-    def __call__(self, rgb):
-        index = self.table[self._keys(rgb)]
-        known = (self.palette[index] == rgb).all(axis=-1)
-        return index, known
 
 
 assert COLORMAP_ROWS > INVERSE

@@ -1,4 +1,4 @@
-"""Whole-frame colour changes, compiled (``wallbsp.jit``; numpy where kernels are off):
+"""Whole-frame colour changes, compiled (``wallbsp.jit``):
 
 - ``tint(frame, lut)``: a screen flash, ``lut[c][value]`` per channel (``art.tints[n]``);
 - ``fuzz(...)``: R_DrawFuzzColumn (the invisible player's weapon), column by column;
@@ -11,17 +11,13 @@ from __future__ import annotations
 
 import numpy as np
 
-from wallbsp.jit import kernel, kernels_enabled
+from wallbsp.jit import kernel
 
 __all__ = ["tint", "invert", "grey_inverse", "paste", "fuzz"]
 
 
 def tint(frame: np.ndarray, lut: np.ndarray) -> None:
-    if kernels_enabled():
-        _tint(frame, lut)
-    else:
-        for c in range(3):
-            frame[..., c] = lut[c][frame[..., c]]
+    _tint(frame, lut)
 
 
 @kernel
@@ -44,13 +40,8 @@ def invert(frame: np.ndarray, index, colours: np.ndarray | None) -> None:
     """In place (module doc); ``index`` None or ``colours`` None: grey inverse for all."""
     if index is None or colours is None:
         frame[...] = grey_inverse(frame)
-    elif kernels_enabled():
-        _invert(frame, index.parts, index.table, index.palette, colours)
     else:
-        found, known = index(frame)
-        out = colours[found]
-        out[~known] = grey_inverse(frame[~known])
-        frame[...] = out
+        _invert(frame, index.parts, index.table, index.palette, colours)
 
 
 @kernel
@@ -91,9 +82,8 @@ def fuzz(frame, mask_xy, x1, y1, view_height, pos, offsets, index, colours, scal
     else:
         parts, table = index.parts, index.table
         palette = index.palette.astype(np.int64)
-    run = _fuzz if kernels_enabled() else getattr(_fuzz, "py_func", _fuzz)
-    return int(run(frame, mask_xy, x1, y1, view_height, pos, offsets, parts, table, palette,
-                   colours, scale))
+    return int(_fuzz(frame, mask_xy, x1, y1, view_height, pos, offsets, parts, table,
+                     palette, colours, scale))
 
 
 @kernel

@@ -4,10 +4,11 @@ P_SlideMove and P_CheckSight on plain coordinates).  A wall here is ``(x1, y1, x
 
 **One source, two ways to run it.**  Every function below is in the subset of Python that
 numba compiles (``jitable``): the interpreter runs it on a tree's ``querytables.Tables`` as
-Python lists (the reference, and what runs without numba); ``KERNEL`` is ``ask`` compiled,
-run on the same tables as numpy arrays.  Both give the same floats, operation by
-operation: numba keeps Python's ``min``/``max`` and fuses no multiply-adds, and
-``lengths.length`` is ``math.hypot`` in Python and the same number compiled.  Everything
+Python lists (``queries``' searches, and the reference the tests compare with);
+``KERNEL`` is ``ask`` compiled, run on the same tables as numpy arrays.  Both give the same
+floats, operation by operation: numba keeps Python's ``min``/``max`` and fuses no
+multiply-adds, and ``lengths.length`` is ``math.hypot`` in Python and the same number
+compiled.  Everything
 the kernel compiles is in this file and ``lengths``: numba's disk cache only notices
 changes to this file, the one of the compiled function.
 """

@@ -22,9 +22,8 @@ The arrays (made by ``game.playsim.bsptables``, all int64):
   ``line->validcount``, kept here instead: only equality with the current one is read).
 
 Fixed-point arithmetic as ``sim.fixed`` (FixedMul, FixedDiv with vanilla's overflow rule,
-C's 32-bit wrap-around), in int64.  The interpreter runs the same code where numba is absent,
-but ``sight.py``'s and ``bsptables.py``'s own walks over the map objects are the reference
-used then.
+C's 32-bit wrap-around), in int64.  These are the play simulation's only walks; the Python
+walks over the map objects they replaced are the tests' reference (``tests/nodewalkref.py``).
 """
 from __future__ import annotations
 
@@ -117,7 +116,7 @@ def point_in_subsector(nodes, x, y):
 @kernel
 def cross_bsp(nodes, subsectors, segs, marks, stamp, sx, sy, tx, ty, out, far):
     """Walks DOOM's sight line from (sx, sy) to (tx, ty) down the nodes from the head
-    (the last node): writes each crossed seg that does not block outright, as
+    (the last node; none: subsector 0): writes each crossed seg that does not block outright, as
     ``(seg, frac)``, to ``out`` in DOOM's order and returns their count ``n``; ``-n - 1``
     when a blocking seg ended the walk after those.  ``marks`` are set to ``stamp`` for
     every line checked; ``far`` is scratch (as many entries as nodes)."""
@@ -136,7 +135,7 @@ def cross_bsp(nodes, subsectors, segs, marks, stamp, sx, sy, tx, ty, out, far):
                 far[top] = nodes[bspnum, 5 - side]
                 top += 1
             bspnum = nodes[bspnum, 4 + side]
-        sub = bspnum & ~NF_SUBSECTOR
+        sub = 0 if bspnum == -1 else bspnum & ~NF_SUBSECTOR   # no nodes: one subsector
         first = subsectors[sub, 0]
         for i in range(first, first + subsectors[sub, 1]):
             line = segs[i, 0]

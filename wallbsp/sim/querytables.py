@@ -49,6 +49,6 @@ class Tables:
 
     @cached_property
     def lists(self) -> tuple:
-        """``arrays`` as Python lists, made when the interpreter first asks (with the
-        kernels on it never does, and a level compiled per episode skips the copy)."""
+        """``arrays`` as Python lists, made when the interpreter first asks (a level that
+        only the kernel is asked about, such as one compiled per episode, skips the copy)."""
         return (self.arrays[0],) + tuple(a.tolist() for a in self.arrays[1:])

@@ -2,31 +2,27 @@
 for the hot loops.
 
 ``R_PointInSubsector`` runs for every move tried and ``P_CheckSight`` walks dozens of nodes
-for every monster looking: thousands of node visits a tic.  Unpacking a tuple is quicker
-in Python than reading a ``Node``'s attributes one by one, so those loops read these tables.
-They are built on first use after a level loads (by whichever loader made the map:
-mapload's WAD lumps or a level of our own) and keyed by the identity of the lists they
-copy.  What they copy never changes during a level: DOOM moves no vertex, node or seg.
+for every monster looking: thousands of node visits a tic, so both walks are compiled
+(``sim.nodewalks``) and read these arrays.  They are built on first use after a level
+loads (by whichever loader made the map: mapload's WAD lumps or a level of our own) and
+keyed by the identity of the lists they copy.  What they copy never changes during a
+level: DOOM moves no vertex, node or seg.
 
 ``BspTables`` is a base of the mixins that use them (``MapLoad``, ``Sight``), so either
 composes without the other.
 """
 import numpy as np
 
-from wallbsp.jit import kernels_enabled
 from wallbsp.sim import nodewalks
 from wallbsp.sim.fixed import FRACBITS, fixed_mul, wrap32
 
-NF_SUBSECTOR = 0x8000
 ML_TWOSIDED = 4
 
 
 class BspTables:
     """Mixin: the node and subsector tables (see the module docstring)."""
 
-    # (the list copied, its rows); an instance's own pair replaces these on first use
-    nodetable = (None, ())
-    sighttable = (None, ())
+    # (the lists copied, the arrays); an instance's own pair replaces these on first use
     nodearray = (None, None)
     sightarrays = ((None, None, None), None)
 
@@ -54,67 +50,13 @@ class BspTables:
     def r_point_in_subsector(self, x, y):
         """R_PointInSubsector: the subsector holding (x, y), down the map's nodes.
 
-        R_PointOnSide inlined over the node table: it runs for every move.  Compiled where
-        numba is (``sim.nodewalks``)."""
+        R_PointOnSide inlined over the node array, compiled (``sim.nodewalks``): it runs
+        for every move."""
         if not self.nodes:
             return self.subsectors[0]          # a single subsector is a special case
-        if kernels_enabled():
-            return self.subsectors[nodewalks.point_in_subsector(self.node_array(), x, y)]
-        nodes = self.node_table()
-        nodenum = len(nodes) - 1
-        while not nodenum & NF_SUBSECTOR:
-            nx, ny, ndx, ndy, ndxhi, ndyhi, child0, child1 = nodes[nodenum]
-            if not ndx:
-                back = ndy > 0 if x <= nx else ndy < 0
-            elif not ndy:
-                back = ndx < 0 if y <= ny else ndx > 0
-            else:
-                dx = x - nx
-                if not -0x80000000 <= dx <= 0x7FFFFFFF:
-                    dx = wrap32(dx)
-                dy = y - ny
-                if not -0x80000000 <= dy <= 0x7FFFFFFF:
-                    dy = wrap32(dy)
-                if (ndy ^ ndx ^ dx ^ dy) < 0:
-                    back = (ndy ^ dx) < 0       # the products' signs differ
-                else:
-                    # FixedMul of a 16-bit half and a 32-bit value: fits, no wrap
-                    back = (dy * ndxhi) >> FRACBITS >= (ndyhi * dx) >> FRACBITS
-            nodenum = child1 if back else child0
-        return self.subsectors[nodenum & ~NF_SUBSECTOR]
+        return self.subsectors[nodewalks.point_in_subsector(self.node_array(), x, y)]
 
     # ---- the tables ---------------------------------------------------------------------
-
-    def node_table(self):
-        """Each node as ``(x, y, dx, dy, dx >> 16, dy >> 16, child 0, child 1)``."""
-        nodes, rows = self.nodetable
-        if nodes is self.nodes:
-            return rows
-        rows = [(n.x, n.y, n.dx, n.dy, n.dx >> FRACBITS, n.dy >> FRACBITS,
-                 n.children[0], n.children[1]) for n in self.nodes]
-        self.nodetable = (self.nodes, rows)
-        return rows
-
-    def sight_table(self):
-        """Each subsector's segs as P_CrossSubsector reads them: a tuple of
-        ``(line, v1.x, v1.y, v2.x, v2.y, dx, dy, frontsector, backsector)`` per seg,
-        where (dx, dy) is the line's divline (v2 - v1 wrapped to 32 bits, as C computes
-        it) and the sectors are the seg's."""
-        subsectors, rows = self.sighttable
-        if subsectors is self.subsectors:
-            return rows
-        segs = self.segs
-        rows = []
-        for sub in self.subsectors:
-            entries = []
-            for seg in segs[sub.firstline:sub.firstline + sub.numlines]:
-                line = seg.linedef
-                v1, v2 = line.v1, line.v2
-                entries.append((line, v1.x, v1.y, v2.x, v2.y, wrap32(v2.x - v1.x),
-                                wrap32(v2.y - v1.y), seg.frontsector, seg.backsector))
-            rows.append(tuple(entries))
-        self.sighttable = (self.subsectors, rows)
-        return rows
 
     def node_array(self):
         """The nodes as ``sim.nodewalks`` reads them: ``(x, y, dx, dy, child 0, child 1)``

@@ -40,7 +40,7 @@ from .structs import (DegenMobj, Line, Node, Player, Sector, Seg, Side, Subsecto
                       Thinker, Vertex)
 
 # tables built from the map or the WAD on first use
-CACHES = frozenset(("_texture_heights", "nodetable", "sighttable", "sightarrays", "nodearray"))
+CACHES = frozenset(("_texture_heights", "sightarrays", "nodearray"))
 # rebuilt by loading the map (or checked against the header): never saved
 STATIC = frozenset((
     "wad_path", "wad_files", "wad_entries", "wad_entry_files", "wad_dir", "flatnames",

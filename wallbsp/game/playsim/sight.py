@@ -4,24 +4,21 @@ walking the BSP tree along the line between them and narrowing the vertical wind
 line crossed.  DOOM 1.2 and earlier traced through the blockmap instead
 (PTR_SightTraverse), as Chocolate Doom does for those versions.
 
-The walk runs compiled where numba is (``sim.nodewalks``: which lines are crossed depends on
-the map and the two positions only, and the heights are then applied here in DOOM's order);
-``p_cross_bsp_node``/``p_cross_subsector`` are the same walk over the map objects, the
-reference, and what runs without numba (``WALLBSP_KERNELS=numpy``).
+The walk runs compiled (``sim.nodewalks``: which lines are crossed depends on the map and
+the two positions only, and the heights are then applied here in DOOM's order).  The
+Python P_CrossBSPNode/P_CrossSubsector over the map objects is the tests' reference
+(``tests/nodewalkref.py``).
 
 State (``init_sight``, set once: C never resets these globals between levels):
 ``sightzstart``, ``topslope``, ``bottomslope``, ``strace`` (the divline from looker to
 target), ``t2x``, ``t2y``, ``sightcounts``.
 """
-from wallbsp.jit import kernels_enabled
 from wallbsp.sim.fixed import FRACBITS, fixed_div, fixed_mul, wrap32
 from wallbsp.sim import nodewalks
 
 from .bsptables import BspTables
 from .structs import EXE_DOOM_1_2
 
-NF_SUBSECTOR = 0x8000
-ML_TWOSIDED = 4
 PT_ADDLINES, PT_EARLYOUT = 1, 4
 
 _I32_MIN, _I32_MAX = -0x80000000, 0x7FFFFFFF
@@ -113,91 +110,6 @@ class Sight(BspTables):
     def p_intercept_vector2(self, v2, v1):
         return intercept_vector2(v2.x, v2.y, v2.dx, v2.dy, v1.x, v1.y, v1.dx, v1.dy)
 
-    def p_cross_subsector(self, num):
-        """True if strace crosses the subsector without being blocked."""
-        strace = self.strace
-        sx, sy, sdx, sdy = strace.x, strace.y, strace.dx, strace.dy
-        t2x, t2y = self.t2x, self.t2y
-        sdxhi, sdyhi = sdx >> FRACBITS, sdy >> FRACBITS
-        slanted = sdx and sdy
-        validcount = self.validcount
-        for line, x1, y1, x2, y2, ldx, ldy, front, back in self.sight_table()[num]:
-            if line.validcount == validcount:
-                continue                # already checked the other side
-            line.validcount = validcount
-            if slanted:
-                # divline_side of both ends inlined: the sign of right - left is the side
-                # (-1 front, 0 on, 1 back)
-                dx1, dy1, dx2, dy2 = x1 - sx, y1 - sy, x2 - sx, y2 - sy
-                if not (_I32_MIN <= dx1 <= _I32_MAX and _I32_MIN <= dy1 <= _I32_MAX
-                        and _I32_MIN <= dx2 <= _I32_MAX and _I32_MIN <= dy2 <= _I32_MAX):
-                    dx1, dy1, dx2, dy2 = wrap32(dx1), wrap32(dy1), wrap32(dx2), wrap32(dy2)
-                c1 = (dy1 >> FRACBITS) * sdxhi - sdyhi * (dx1 >> FRACBITS)
-                c2 = (dy2 >> FRACBITS) * sdxhi - sdyhi * (dx2 >> FRACBITS)
-                if (c1 > 0) - (c1 < 0) == (c2 > 0) - (c2 < 0):
-                    continue            # line isn't crossed
-            elif divline_side(x1, y1, sx, sy, sdx, sdy) == \
-                    divline_side(x2, y2, sx, sy, sdx, sdy):
-                continue                # line isn't crossed
-            if divline_side(sx, sy, x1, y1, ldx, ldy) == \
-                    divline_side(t2x, t2y, x1, y1, ldx, ldy):
-                continue
-            # backsector may be None for an "impassible glass" hack line
-            if line.backsector is None:
-                return False
-            if not line.flags & ML_TWOSIDED:
-                return False            # not two sided anyway
-            # (the fraction is pure: taking it before the heights' tests changes nothing)
-            frac = intercept_vector2(sx, sy, sdx, sdy, x1, y1, ldx, ldy)
-            if not self._narrow_window(front, back, frac):
-                return False
-        return True                     # passed the subsector ok
-
-    def p_cross_bsp_node(self, bspnum):
-        """True if strace crosses the node's subtree without being blocked.
-
-        C's recursion (the near child, then the far one unless the whole line is on the
-        near side) as a loop over a stack of far children still to cross: the sides are
-        pure, so taking t2's side before the near child is crossed changes nothing, and
-        the subsectors are crossed in C's order."""
-        nodes = self.node_table()
-        strace = self.strace
-        sx, sy, tx, ty = strace.x, strace.y, self.t2x, self.t2y
-        far = []
-        while True:
-            while not bspnum & NF_SUBSECTOR:
-                x, y, dx, dy, dxhi, dyhi, child0, child1 = nodes[bspnum]
-                if dx and dy:
-                    # divline_side inlined for a slanted partition (sides of a point
-                    # from the products of 16-bit halves: see divline_side)
-                    ddx, ddy = sx - x, sy - y
-                    if not (_I32_MIN <= ddx <= _I32_MAX and _I32_MIN <= ddy <= _I32_MAX):
-                        ddx, ddy = wrap32(ddx), wrap32(ddy)
-                    side = 1 if (ddy >> FRACBITS) * dxhi > dyhi * (ddx >> FRACBITS) else 0
-                    ddx, ddy = tx - x, ty - y
-                    if not (_I32_MIN <= ddx <= _I32_MAX and _I32_MIN <= ddy <= _I32_MAX):
-                        ddx, ddy = wrap32(ddx), wrap32(ddy)
-                    left = dyhi * (ddx >> FRACBITS)
-                    right = (ddy >> FRACBITS) * dxhi
-                    t2side = 0 if right < left else 2 if right == left else 1
-                elif not dx:
-                    # a vertical partition: the side of x, by the direction's sign (an
-                    # "on" crosses both sides, the front one first: side 0)
-                    side = 0 if sx == x else dy > 0 if sx < x else dy < 0
-                    t2side = 2 if tx == x else dy > 0 if tx < x else dy < 0
-                else:
-                    # a horizontal one (DOOM's "on" test compares x with y, sic)
-                    side = 0 if sx == y else dx < 0 if sy <= y else dx > 0
-                    t2side = 2 if tx == y else dx < 0 if ty <= y else dx > 0
-                if side != t2side:
-                    far.append(child0 if side else child1)
-                bspnum = child1 if side else child0
-            if not self.p_cross_subsector(0 if bspnum == -1 else bspnum & ~NF_SUBSECTOR):
-                return False
-            if not far:
-                return True
-            bspnum = far.pop()
-
     def p_check_sight(self, t1, t2):
         """True if a straight line between t1 and t2 is unobstructed."""
         s1 = t1.subsector.sector.id
@@ -221,15 +133,13 @@ class Sight(BspTables):
         self.t2y = t2.y
         strace.dx = _w(t2.x - t1.x)
         strace.dy = _w(t2.y - t1.y)
-        if self.nodes and kernels_enabled():
-            return self._cross_compiled()
-        # the head node is the last node output
-        return self.p_cross_bsp_node(len(self.nodes) - 1)
+        return self._cross_bsp()
 
-    def _cross_compiled(self):
-        """P_CrossBSPNode from the head node by ``sim.nodewalks``'s compiled walk: the
-        lines crossed come back in DOOM's order, and their heights narrow the window here
-        as P_CrossSubsector narrows it (the lines' validcount marks are the walk's)."""
+    def _cross_bsp(self):
+        """P_CrossBSPNode from the head node (the last node output) by ``sim.nodewalks``'s
+        compiled walk: the lines crossed come back in DOOM's order, and their heights
+        narrow the window here as P_CrossSubsector narrows it (the lines' validcount
+        marks are the walk's)."""
         nodes, subsectors, segs, marks, out, far, sectors = self.sight_arrays()
         strace = self.strace
         # (read from the module each time: numba puts the compiled walk there on first use)

@@ -18,7 +18,6 @@ import sys
 
 import numpy as np
 
-from wallbsp.jit import kernels_enabled
 from wallbsp.sim import fnv
 
 from .demos import DemoError, load_demo
@@ -27,35 +26,22 @@ from .play import play_class
 
 FIELDS = ("map", "leveltime", "x", "y", "z", "angle", "momx", "momy", "health", "armor",
           "prndindex", "mobjs", "kills", "items", "secrets", "hash")
-FNV_OFFSET, FNV_PRIME = 2166136261, 16777619
 MASK = 0xFFFFFFFF
 
 
 def state_hash(play):
     """(number of live mobjs, FNV-1a of their x, y, z, health, state) in thinker order;
-    the words hashed by ``sim.fnv``'s compiled loop where numba is."""
+    the words hashed by ``sim.fnv``'s compiled loop."""
     mobj_func = type(play).p_mobj_thinker
     cap = play.thinkercap
     th = cap.next
-    if kernels_enabled():
-        words = []
-        extend = words.extend
-        while th is not cap:
-            if th.func is mobj_func:
-                extend((th.x, th.y, th.z, th.health, th.state))
-            th = th.next
-        return len(words) // 5, fnv.fnv1a_words(np.array(words, dtype=np.int64))
-    # Each word is xored in without its ``& MASK`` and the hash masked once per two words:
-    # the low 32 bits of a xor or a product depend only on the low 32 bits of its operands.
-    h, n = FNV_OFFSET, 0
+    words = []
+    extend = words.extend
     while th is not cap:
         if th.func is mobj_func:
-            n += 1
-            h = ((((h ^ th.x) * FNV_PRIME) ^ th.y) * FNV_PRIME) & MASK
-            h = ((((h ^ th.z) * FNV_PRIME) ^ th.health) * FNV_PRIME) & MASK
-            h = ((h ^ th.state) * FNV_PRIME) & MASK
+            extend((th.x, th.y, th.z, th.health, th.state))
         th = th.next
-    return n, h
+    return len(words) // 5, fnv.fnv1a_words(np.array(words, dtype=np.int64))
 
 
 def trace_line(play):
