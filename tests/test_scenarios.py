@@ -94,6 +94,7 @@ def test_basic_times_out_at_300_tics():
         if term or trunc:
             break
     assert trunc and not term and inf["tics"] == 314 and n == 300 and total == -300
+    assert env.world.player.health == 100          # the cacodemon never woke (A_Look hook)
 
 
 def test_health_gathering_acid_and_medikits():
