@@ -176,3 +176,22 @@ def test_two_plays_side_by_side_stay_in_sync():
                 lines.append(trace_line(play))
     for _, _, theirs, ours in runs:
         assert first_difference(ours, theirs) is None
+
+
+def test_a_missile_leaving_the_map_wraps_around_as_in_c(tmp_path):
+    """C's fixed point is 32 bits: a missile flying past y = -32768 units comes back at the
+    top of the map (P_XYMovement's ``mo->y + ymove`` wraps); Freedoom's MAP32 in a
+    four-player deathmatch desynced at tic 2470 when it did not."""
+    from playsim_scenarios import write_pwad
+    from wallbsp.game.playsim.trace import start_demo
+    from wallbsp.sim import info
+    wad = wad_path("freedoom2")
+    pwad = tmp_path / "test.wad"
+    write_pwad(pwad, (("MAP01", 0),))
+    play, _ = start_demo(wad, parse_demo(bytes([109, 2, 1, 1, 0, 0, 0, 1, 0, 1, 0, 0, 0,
+                                                0x80])), (pwad,))
+    low = -(1 << 31)
+    mo = play.p_spawn_mobj(128 << 16, low + (5 << 16), 32 << 16, info.MT_ROCKET)
+    mo.momy = -20 << 16
+    play.p_xy_movement(mo)
+    assert mo.y == low + (5 << 16) - (20 << 16) + (1 << 32)

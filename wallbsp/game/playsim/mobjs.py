@@ -11,7 +11,7 @@ from wallbsp.game.playsim.structs import EXE_ULTIMATE
 from wallbsp.game.playsim.mobjspawn import (
     MobjSpawn, FRACUNIT, GRAVITY, VIEWHEIGHT, ANG45, MTF_AMBUSH, ONFLOORZ, ONCEILINGZ)
 from wallbsp.sim import info
-from wallbsp.sim.fixed import fixed_mul, aprox_distance
+from wallbsp.sim.fixed import fixed_mul, aprox_distance, wrap32
 
 MAXMOVE = 30 * FRACUNIT
 STOPSPEED = 0x1000
@@ -94,14 +94,15 @@ class Mobjs(MobjSpawn):
         xmove, ymove = mo.momx, mo.momy
         while True:
             # vanilla halves the step only for big positive moves
+            # (C's sums are 32 bits: a thing flying off the map comes back on the other side)
             if xmove > MAXMOVE // 2 or ymove > MAXMOVE // 2:
-                ptryx = mo.x + _cdiv(xmove, 2)
-                ptryy = mo.y + _cdiv(ymove, 2)
+                ptryx = wrap32(mo.x + _cdiv(xmove, 2))
+                ptryy = wrap32(mo.y + _cdiv(ymove, 2))
                 xmove >>= 1
                 ymove >>= 1
             else:
-                ptryx = mo.x + xmove
-                ptryy = mo.y + ymove
+                ptryx = wrap32(mo.x + xmove)
+                ptryy = wrap32(mo.y + ymove)
                 xmove = ymove = 0
             if not self.p_try_move(mo, ptryx, ptryy):
                 if mo.player:

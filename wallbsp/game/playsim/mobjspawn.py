@@ -6,7 +6,7 @@ from wallbsp.game.playsim.structs import Mobj, MapThing, MAXPLAYERS, NUMCARDS, P
     PST_REBORN
 from wallbsp.sim import info
 from wallbsp.sim.fixed import FRACUNIT, ANG45, ANGLETOFINESHIFT, FINESINE, FINECOSINE, \
-    fixed_mul, point_to_angle2, aprox_distance
+    fixed_mul, point_to_angle2, aprox_distance, wrap32
 
 ONFLOORZ = info.ONFLOORZ        # INT_MIN: spawn on the floor
 ONCEILINGZ = info.ONCEILINGZ    # INT_MAX: spawn hanging from the ceiling
@@ -231,9 +231,9 @@ class MobjSpawn:
         th.tics -= self.rng.p_random() & 3
         if th.tics < 1:
             th.tics = 1
-        th.x += th.momx >> 1
-        th.y += th.momy >> 1
-        th.z += th.momz >> 1
+        th.x = wrap32(th.x + (th.momx >> 1))
+        th.y = wrap32(th.y + (th.momy >> 1))
+        th.z = wrap32(th.z + (th.momz >> 1))
         if not self.p_try_move(th, th.x, th.y):
             self.p_explode_missile(th)
 
