@@ -61,18 +61,11 @@ class Ceilings:
 
     # -- tagged ceilings ---------------------------------------------------------------------
     def ev_do_ceiling(self, line, type):
-        secnum = -1
         rtn = 0
         # reactivate in-stasis ceilings, for the crushers
         if type in (FASTCRUSHANDRAISE, SILENTCRUSHANDRAISE, CRUSHANDRAISE):
             self.p_activate_in_stasis_ceiling(line)
-        while True:
-            secnum = self.p_find_sector_from_line_tag(line, secnum)
-            if secnum < 0:
-                break
-            sec = self.sectors[secnum]
-            if sec.specialdata is not None:
-                continue
+        for sec in self.idle_tagged_sectors(line):
             rtn = 1
             ceiling = ceiling_t()
             self.p_add_thinker(ceiling)

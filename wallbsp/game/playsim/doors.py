@@ -128,15 +128,8 @@ class Doors:
         return self.ev_do_door(line, type)
 
     def ev_do_door(self, line, type):
-        secnum = -1
         rtn = 0
-        while True:
-            secnum = self.p_find_sector_from_line_tag(line, secnum)
-            if secnum < 0:
-                break
-            sec = self.sectors[secnum]
-            if sec.specialdata is not None:
-                continue
+        for sec in self.idle_tagged_sectors(line):
             rtn = 1
             door = self._new_door(sec)
             door.type = type

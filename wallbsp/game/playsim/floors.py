@@ -85,20 +85,13 @@ class Floors:
         return floor
 
     def ev_do_floor(self, line, floortype):
-        secnum = -1
         rtn = 0
-        while True:
-            secnum = self.p_find_sector_from_line_tag(line, secnum)
-            if secnum < 0:
-                break
-            sec = self.sectors[secnum]
-            if sec.specialdata is not None:
-                continue                            # already moving: keep going
+        for sec in self.idle_tagged_sectors(line):
             rtn = 1
             floor = self._new_floor(sec)
             floor.type = floortype
             floor.crush = False
-            self._start_floor(floor, line, sec, secnum, floortype)
+            self._start_floor(floor, line, sec, sec.id, floortype)
         return rtn
 
     def _start_floor(self, floor, line, sec, secnum, floortype):

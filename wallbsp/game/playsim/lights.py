@@ -88,14 +88,7 @@ class Lights:
     def ev_start_light_strobing(self, line):
         """Strobes the tagged sectors that have no mover (a strobe is no mover: a second
         trigger adds a second strobe)."""
-        secnum = -1
-        while True:
-            secnum = self.p_find_sector_from_line_tag(line, secnum)
-            if secnum < 0:
-                break
-            sec = self.sectors[secnum]
-            if sec.specialdata is not None:
-                continue
+        for sec in self.idle_tagged_sectors(line):
             self.p_spawn_strobe_flash(sec, SLOWDARK, 0)
 
     # -- light levels set by lines -----------------------------------------------------------

@@ -58,17 +58,10 @@ class Plats:
     def ev_do_plat(self, line, type, amount):
         """Starts the platforms tagged as ``line``; ``amount`` (map units) only for
         raiseAndChange."""
-        secnum = -1
         rtn = 0
         if type == PERPETUALRAISE:
             self.p_activate_in_stasis(line.tag)
-        while True:
-            secnum = self.p_find_sector_from_line_tag(line, secnum)
-            if secnum < 0:
-                break
-            sec = self.sectors[secnum]
-            if sec.specialdata is not None:
-                continue
+        for sec in self.idle_tagged_sectors(line):
             rtn = 1
             plat = plat_t()
             self.p_add_thinker(plat)

@@ -120,6 +120,19 @@ class Specials:
                 return i
         return -1
 
+    def idle_tagged_sectors(self, line):
+        """The sectors tagged as ``line`` is that no mover holds: the loop of every EV_
+        function (``P_FindSectorFromLineTag``, skipping ``specialdata``), looked up one at a
+        time as C's loops do, so a mover the loop's body starts counts for what follows."""
+        secnum = -1
+        while True:
+            secnum = self.p_find_sector_from_line_tag(line, secnum)
+            if secnum < 0:
+                return
+            sec = self.sectors[secnum]
+            if sec.specialdata is None:
+                yield sec
+
     def p_find_min_surrounding_light(self, sector, max):
         minimum = max
         for check in self._neighbours(sector):
@@ -195,15 +208,8 @@ class Specials:
     def ev_do_donut(self, line):
         """Lowers each tagged sector (the hole) and raises the ring around it to the height
         of the sector beyond the ring, taking that sector's floor."""
-        secnum = -1
         rtn = 0
-        while True:
-            secnum = self.p_find_sector_from_line_tag(line, secnum)
-            if secnum < 0:
-                break
-            s1 = self.sectors[secnum]
-            if s1.specialdata is not None:
-                continue                            # already moving
+        for s1 in self.idle_tagged_sectors(line):
             rtn = 1
             s2 = self.get_next_sector(s1.lines[0], s1)
             if s2 is None:
