@@ -24,7 +24,7 @@ import numpy as np
 from wallbsp.game.playsim.structs import (BT_ATTACK, BT_CHANGE, BT_USE, BT_WEAPONMASK,
                                           BT_WEAPONSHIFT, TicCmd)
 
-__all__ = ["TicCmd", "ticcmd", "as_ticcmd", "cmd_fields", "cmd_from_fields", "weapon_of",
+__all__ = ["TicCmd", "ticcmd", "as_ticcmd", "checked_number", "cmd_fields", "cmd_from_fields", "weapon_of",
            "FORWARD_MOVE", "SIDE_MOVE", "MAX_TURN", "WEAPON_KEYS"]
 
 FORWARD_MOVE = (25, 50)         # walking, running (g_game.c's forwardmove[])
@@ -33,7 +33,8 @@ MAX_TURN = 360.0                # degrees a tic, either way
 WEAPON_KEYS = range(1, 9)
 
 
-def _number(name, value, limit) -> float:
+def checked_number(name, value, limit) -> float:
+    """``value`` as a float within ±``limit``, or one ValueError line naming ``name``."""
     if type(value) is float and -limit <= value <= limit:
         return value
     numeric = isinstance(value, (int, float, np.integer, np.floating)) \
@@ -63,8 +64,8 @@ def ticcmd(forward=0.0, strafe=0.0, turn=0.0, use=False, run=False, fire=False,
            weapon=None) -> TicCmd:
     """The tic command of the keyword form (module docstring); ValueError for a value out
     of range."""
-    forward, strafe = _number("forward", forward, 1.0), _number("strafe", strafe, 1.0)
-    turn = _number("turn", turn, MAX_TURN)
+    forward, strafe = checked_number("forward", forward, 1.0), checked_number("strafe", strafe, 1.0)
+    turn = checked_number("turn", turn, MAX_TURN)
     use, run, fire = _flag("use", use), _flag("run", run), _flag("fire", fire)
     buttons = (BT_USE if use else 0) | (BT_ATTACK if fire else 0)
     if weapon is not None:

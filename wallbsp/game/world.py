@@ -30,7 +30,6 @@ game, the level starts again (the thing indices start again too).
 """
 from __future__ import annotations
 
-import math
 from collections import deque
 
 import numpy as np
@@ -42,7 +41,7 @@ from wallbsp.game.playsim.game import GA_COMPLETED, GA_VICTORY, GS_LEVEL
 from wallbsp.game.playsim.levelbsp import LevelMapError
 from wallbsp.game.playsim.structs import PST_DEAD, TicCmd
 from wallbsp.game.playstate import ANGLE_DEGREES, FRAC, PlayState, ThingsView
-from wallbsp.game.ticcmds import MAX_TURN, as_ticcmd, ticcmd
+from wallbsp.game.ticcmds import MAX_TURN, as_ticcmd, checked_number, ticcmd
 from wallbsp.sim import info
 from wallbsp.sim.fixed import ANG90
 
@@ -288,8 +287,8 @@ class World:
     def place_player(self, x, y, angle) -> None:
         """Put the player at (x, y) facing ``angle``, feet on the floor there, at rest (no
         momentum, the view at its height).  Nothing is picked up or crossed on the way."""
-        x, y = _number("x", x, MAX_COORDINATE), _number("y", y, MAX_COORDINATE)
-        angle = _number("angle", angle, MAX_ANGLE)
+        x, y = checked_number("x", x, MAX_COORDINATE), checked_number("y", y, MAX_COORDINATE)
+        angle = checked_number("angle", angle, MAX_ANGLE)
         if self.tree.locate(x, y) is None:
             raise ValueError(f"place_player: ({x}, {y}) is outside the map")
         play, p = self.play, self.play.players[0]
@@ -343,12 +342,3 @@ class World:
 def info_viewheight() -> int:
     from wallbsp.game.playsim.player import VIEWHEIGHT
     return VIEWHEIGHT
-
-
-def _number(name, value, limit) -> float:
-    numeric = isinstance(value, (int, float, np.integer, np.floating)) \
-        and not isinstance(value, (bool, np.bool_))
-    number = float(value) if numeric else math.nan
-    if not -limit <= number <= limit:
-        raise ValueError(f"World: {name} must be a number within ±{limit:g}, not {value!r}")
-    return number

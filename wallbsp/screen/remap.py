@@ -11,7 +11,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from wallbsp.jit import kernel
+from wallbsp.jit import kernel, step_kernel
 
 __all__ = ["tint", "invert", "grey_inverse", "paste", "fuzz"]
 
@@ -44,17 +44,25 @@ def invert(frame: np.ndarray, index, colours: np.ndarray | None) -> None:
         _invert(frame, index.parts, index.table, index.palette, colours)
 
 
+@step_kernel
+def _recolour(frame, y, x, r, g, b, parts, table, palette, colours):
+    """Pixel (y, x) becomes ``colours`` of the palette index of (r, g, b); False (nothing
+    written) when the palette lacks that colour."""
+    i = table[(parts[0, r] + parts[1, g] + parts[2, b]) & 0xFFFF]
+    if palette[i, 0] != r or palette[i, 1] != g or palette[i, 2] != b:
+        return False
+    frame[y, x, 0] = colours[i, 0]
+    frame[y, x, 1] = colours[i, 1]
+    frame[y, x, 2] = colours[i, 2]
+    return True
+
+
 @kernel
 def _invert(frame, parts, table, palette, colours):
     for y in range(frame.shape[0]):
         for x in range(frame.shape[1]):
             r, g, b = frame[y, x, 0], frame[y, x, 1], frame[y, x, 2]
-            i = table[(parts[0, r] + parts[1, g] + parts[2, b]) & 0xFFFF]
-            if palette[i, 0] == r and palette[i, 1] == g and palette[i, 2] == b:
-                frame[y, x, 0] = colours[i, 0]
-                frame[y, x, 1] = colours[i, 1]
-                frame[y, x, 2] = colours[i, 2]
-            else:
+            if not _recolour(frame, y, x, r, g, b, parts, table, palette, colours):
                 lum = (np.int64(r) * 299 + np.int64(g) * 587 + np.int64(b) * 114 + 500) // 1000
                 frame[y, x, 0] = frame[y, x, 1] = frame[y, x, 2] = 255 - lum
 
@@ -100,12 +108,7 @@ def _fuzz(frame, mask_xy, x1, y1, view_height, pos, offsets, parts, table, palet
             if pos == len(offsets):
                 pos = 0
             r, g, b = frame[sy, x, 0], frame[sy, x, 1], frame[sy, x, 2]
-            i = table[(parts[0, r] + parts[1, g] + parts[2, b]) & 0xFFFF]
-            if palette[i, 0] == r and palette[i, 1] == g and palette[i, 2] == b:
-                frame[y, x, 0] = colours[i, 0]
-                frame[y, x, 1] = colours[i, 1]
-                frame[y, x, 2] = colours[i, 2]
-            else:
+            if not _recolour(frame, y, x, r, g, b, parts, table, palette, colours):
                 frame[y, x, 0] = np.uint8(np.floor(r * scale + 0.5))
                 frame[y, x, 1] = np.uint8(np.floor(g * scale + 0.5))
                 frame[y, x, 2] = np.uint8(np.floor(b * scale + 0.5))
