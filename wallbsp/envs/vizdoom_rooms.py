@@ -45,8 +45,10 @@ class DefendTheCenter(Scenario):
     buttons = ("TURN_LEFT", "TURN_RIGHT", "ATTACK")
     variables = ("AMMO2", "HEALTH")
     radius = 735.0
-    # ViZDoom's MarineChainsawVzd has no DOOM counterpart: a demon at a marine's speed
-    kinds = (("Demon", 8), ("Demon", 10))
+    # ViZDoom's MarineChainsawVzd has no DOOM counterpart: a demon at a marine's pace
+    # (ZDoom's marine: 8 units a chase step of 4 tics; a demon steps every 2 tics, so 4)
+    # and with a marine's radius (16, a thinner target)
+    kinds = (("Demon", 4, 16), ("Demon", 10, 30))
 
     def reset(self, world, rng):
         self.rng, self.tracked = rng, {}
@@ -62,13 +64,14 @@ class DefendTheCenter(Scenario):
         circle, facing byte angle ``(turn + 128) % 256`` (the script adds a byte angle to
         a fixed-point turn: monsters face all ways, and wake when they see or hear)."""
         a = 2 * math.pi * turn / 65536
-        name, speed = self.kinds[kind]
+        name, speed, radius = self.kinds[kind]
         mo = self.spawn(world, name, math.cos(a) * self.radius, math.sin(a) * self.radius,
                         angle=(turn + 128) % 256 * 360.0 / 256)
         if mo is None:
             return False
         self.set_speed(mo, speed)
         self.set_health(mo, 1)
+        mo.radius = radius << 16
         self.tracked[mo] = kind
         return True
 
