@@ -3,11 +3,11 @@
 
 The numbers (the rooms' corners, heights, light, the player's start, the texture names) are
 ViZDoom's maps' as its scenario WADs have them (Farama-Foundation/ViZDoom, ``scenarios/``);
-the files written here are plain polygons of ours and ship no ViZDoom data.  The maze of
-my_way_home and the corridor of deadly_corridor are converted by our UDMF importer
-(``--vizdoom DIR``: ViZDoom's ``scenarios`` folder, from ``pip download vizdoom``): their
-geometry only, with the things' places in ``<name>.spots.json``.  What runs in
-them (monsters, items, rewards) is the Python of ``wallbsp/envs/vizdoom.py``.  The levels
+the files written here are plain polygons of ours and ship no ViZDoom data.  The maps that
+are more than a room (my_way_home's maze, deadly_corridor, health_gathering_supreme,
+predict_position) are not written here: ``wallbsp.envs.vizdoom_source`` converts them from
+the user's ViZDoom installation when they are first used.  What runs in them (monsters,
+items, rewards) is the Python of ``wallbsp/envs/vizdoom.py``.  The levels
 name no texture source: the environments add Freedoom's IWAD when it is installed.
 """
 from __future__ import annotations
@@ -67,25 +67,6 @@ LEVELS = {
 }
 
 
-# maps with corridors and rooms: converted from ViZDoom's UDMF map by our importer when
-# its scenario folder is given (--vizdoom DIR); the things become the scenario's spots
-CONVERTED = ("deadly_corridor", "my_way_home", "health_gathering_supreme", "predict_position")
-
-
-def converted(folder: Path, name: str):
-    """Our level of ViZDoom's ``name``.wad (its geometry, heights, light, texture names;
-    no things, no texture source) and its things as spots."""
-    from wallbsp.level.wadmap import import_wad
-    data = import_wad(folder / f"{name}.wad", "MAP01", warnings=[])
-    spots = [{"type": t["type"], "x": t["x"], "y": t["y"], "angle": t.get("angle", 0)}
-             for t in data.get("things", [])]
-    data["things"], data["name"] = [], name
-    for sector in data["sectors"]:
-        sector.pop("special", None)          # the acid is the scenario's (ZDoom's type 83)
-    data.pop("resources", None)
-    return data, {"things": spots}
-
-
 def main(argv=None) -> int:
     argv = list(argv or [])
     OUT.mkdir(parents=True, exist_ok=True)
@@ -93,13 +74,6 @@ def main(argv=None) -> int:
         path = OUT / f"{name}.json"
         path.write_text(json.dumps(level, indent=1) + "\n")
         print(path)
-    if "--vizdoom" in argv:
-        folder = Path(argv[argv.index("--vizdoom") + 1])
-        for name in CONVERTED:
-            level, spots = converted(folder, name)
-            (OUT / f"{name}.json").write_text(json.dumps(level, indent=1) + "\n")
-            (OUT / f"{name}.spots.json").write_text(json.dumps(spots, indent=1) + "\n")
-            print(OUT / f"{name}.json")
     return 0
 
 

@@ -31,6 +31,7 @@ import numpy as np
 from wallbsp.envs import gamevars
 from wallbsp.envs.base import WallbspEnv
 from wallbsp.envs.levels import given_tree
+from wallbsp.envs.vizdoom_source import CONVERTED, converted_level
 from wallbsp.game.playsim.game import GA_COMPLETED, GA_VICTORY
 from wallbsp.game.scenario import SCENARIO_DIR
 from wallbsp.game.world import World
@@ -53,7 +54,10 @@ def scenario_tree(level):
         import os
         from wallbsp.bsp.build import compile_level
         from wallbsp.level.io import level_from_dict
-        data = json.loads((SCENARIO_DIR / f"{level}.json").read_text())
+        if level in CONVERTED:
+            data = converted_level(level)
+        else:
+            data = json.loads((SCENARIO_DIR / f"{level}.json").read_text())
         iwad = os.environ.get("WALLBSP_IWAD") or next(
             (p for p in IWAD_PATHS if os.path.isfile(p)), None)
         if iwad:

@@ -1,18 +1,14 @@
-"""ViZDoom's scenarios on converted maps (my_way_home, deadly_corridor,
+"""ViZDoom's scenarios on ViZDoom's own maps (my_way_home, deadly_corridor,
 health_gathering_supreme, predict_position) as ``Scenario`` classes
-(``wallbsp.envs.vizdoom``); their things' places are in ``<name>.spots.json``."""
+(``wallbsp.envs.vizdoom``): the maps and their things' places are converted from a ViZDoom
+installation when first used (``vizdoom_source``)."""
 from __future__ import annotations
 
-import json
-
 from wallbsp.envs.vizdoom_rooms import HealthGathering
-from wallbsp.game.scenario import SCENARIO_DIR, Scenario
+from wallbsp.envs.vizdoom_source import spots as map_spots
+from wallbsp.game.scenario import Scenario
 
 __all__ = ["MyWayHome", "DeadlyCorridor", "HealthGatheringSupreme", "PredictPosition"]
-
-
-def _spots(name):
-    return json.loads((SCENARIO_DIR / f"{name}.spots.json").read_text())["things"]
 
 
 class MyWayHome(Scenario):
@@ -25,7 +21,7 @@ class MyWayHome(Scenario):
     variables = ()
 
     def reset(self, world, rng):
-        things = _spots(self.level)
+        things = map_spots(self.level)
         spots = [(t["x"], t["y"]) for t in things if t["type"] == 9001]
         x, y = spots[int(rng.integers(len(spots)))]     # ACS: random(10, 26), the tids
         turn = int(rng.integers(0, 65536, endpoint=True))  # ACS: random(0, 1.0)
@@ -56,7 +52,7 @@ class DeadlyCorridor(Scenario):
     MONSTERS = {9: "ShotgunGuy", 3004: "ZombieMan", 65: "ChaingunGuy"}
 
     def reset(self, world, rng):
-        for t in _spots(self.level):
+        for t in map_spots(self.level):
             if t["type"] in self.MONSTERS:
                 mo = self.spawn(world, self.MONSTERS[t["type"]], t["x"], t["y"],
                                 angle=t["angle"], check=False)
@@ -96,7 +92,7 @@ class HealthGatheringSupreme(HealthGathering):
         for _ in range(self.poisons):
             self._poison(world)
         self._loop(world)
-        spots = [(t["x"], t["y"]) for t in _spots(self.level) if t["type"] == 9001]
+        spots = [(t["x"], t["y"]) for t in map_spots(self.level) if t["type"] == 9001]
         x, y = spots[int(rng.integers(len(spots)))]     # ACS: random(10, 21), the tids
         turn = int(rng.integers(0, 65536, endpoint=True))
         world.place_player(x, y, turn * 360.0 / 65536 % 360.0)
