@@ -45,12 +45,11 @@ to 45°).  If it holds one, the things alone place the player, as in DOOM.
 from __future__ import annotations
 
 from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACBITS, FRACUNIT, fixed_div, wrap32
+from wallbsp.sim.fixed import FRACBITS, FRACUNIT
 
-from .levelbsp import (BOXBOTTOM, BOXLEFT, BOXRIGHT, BOXTOP, ML_TWOSIDED, NF_SUBSECTOR,
-                       LevelMapError)
-from .structs import (COMMERCIAL, EXE_DOOM_1_9, ST_HORIZONTAL, ST_NEGATIVE, ST_POSITIVE,
-                      ST_VERTICAL, Line, MapThing, Sector, Side, Vertex)
+from .levelbsp import ML_TWOSIDED, NF_SUBSECTOR, LevelMapError
+from .mapload import set_line_ends
+from .structs import COMMERCIAL, EXE_DOOM_1_9, Line, MapThing, Sector, Side, Vertex
 
 __all__ = ["LevelMap", "LevelMapError", "start_level", "ML_BLOCKING", "ML_TWOSIDED",
            "NF_SUBSECTOR"]
@@ -156,21 +155,7 @@ class LevelMap:
             if wall.lower_unpegged:
                 flags |= ML_DONTPEGBOTTOM
             ld.flags, ld.special, ld.tag = flags, int(wall.special), int(wall.tag)
-            v1 = ld.v1 = vertexes[wall.v1]
-            v2 = ld.v2 = vertexes[wall.v2]
-            ld.dx = wrap32(v2.x - v1.x)
-            ld.dy = wrap32(v2.y - v1.y)       # as P_LoadLineDefs
-            if not ld.dx:
-                ld.slopetype = ST_VERTICAL
-            elif not ld.dy:
-                ld.slopetype = ST_HORIZONTAL
-            elif fixed_div(ld.dy, ld.dx) > 0:
-                ld.slopetype = ST_POSITIVE
-            else:
-                ld.slopetype = ST_NEGATIVE
-            box = ld.bbox
-            box[BOXLEFT], box[BOXRIGHT] = (v1.x, v2.x) if v1.x < v2.x else (v2.x, v1.x)
-            box[BOXBOTTOM], box[BOXTOP] = (v1.y, v2.y) if v1.y < v2.y else (v2.y, v1.y)
+            set_line_ends(ld, vertexes[wall.v1], vertexes[wall.v2])    # as P_LoadLineDefs
             ld.sidenum = list(self._wall_sides[i])
             ld.frontsector = sides[ld.sidenum[0]].sector
             ld.backsector = sides[ld.sidenum[1]].sector if ld.sidenum[1] != -1 else None

@@ -52,6 +52,25 @@ _NULL_SECTOR_FLOOR, _NULL_SECTOR_CEILING = 0x00199257, 0x007006F4
 _REJECTPAD_ZONE = (0, 50, 0x1D4A11)        # block header word, PU_LEVEL, ZONEID
 
 
+def set_line_ends(ld, v1, v2):
+    """P_LoadLineDefs' geometry of a line from its two vertexes: ``dx``, ``dy`` (32-bit, as
+    C's sums), the slope type and the bounding box."""
+    ld.v1, ld.v2 = v1, v2
+    ld.dx = wrap32(v2.x - v1.x)
+    ld.dy = wrap32(v2.y - v1.y)
+    if not ld.dx:
+        ld.slopetype = ST_VERTICAL
+    elif not ld.dy:
+        ld.slopetype = ST_HORIZONTAL
+    elif fixed_div(ld.dy, ld.dx) > 0:
+        ld.slopetype = ST_POSITIVE
+    else:
+        ld.slopetype = ST_NEGATIVE
+    box = ld.bbox
+    box[BOXLEFT], box[BOXRIGHT] = (v1.x, v2.x) if v1.x < v2.x else (v2.x, v1.x)
+    box[BOXBOTTOM], box[BOXTOP] = (v1.y, v2.y) if v1.y < v2.y else (v2.y, v1.y)
+
+
 class MapLoadError(ValueError):
     """A WAD or map that DOOM could not load (I_Error's cases)."""
 
@@ -186,21 +205,7 @@ class MapLoad(BspTables):
                 enumerate(_records(raw, MAPLINEDEF)):
             ld = Line(i)
             ld.flags, ld.special, ld.tag = flags, special, tag
-            v1 = ld.v1 = vertexes[v1]
-            v2 = ld.v2 = vertexes[v2]
-            ld.dx = wrap32(v2.x - v1.x)
-            ld.dy = wrap32(v2.y - v1.y)
-            if not ld.dx:
-                ld.slopetype = ST_VERTICAL
-            elif not ld.dy:
-                ld.slopetype = ST_HORIZONTAL
-            elif fixed_div(ld.dy, ld.dx) > 0:
-                ld.slopetype = ST_POSITIVE
-            else:
-                ld.slopetype = ST_NEGATIVE
-            box = ld.bbox
-            box[BOXLEFT], box[BOXRIGHT] = (v1.x, v2.x) if v1.x < v2.x else (v2.x, v1.x)
-            box[BOXBOTTOM], box[BOXTOP] = (v1.y, v2.y) if v1.y < v2.y else (v2.y, v1.y)
+            set_line_ends(ld, vertexes[v1], vertexes[v2])
             ld.sidenum = [side0, side1]
             ld.frontsector = sides[side0].sector if side0 != -1 else None
             ld.backsector = sides[side1].sector if side1 != -1 else None
