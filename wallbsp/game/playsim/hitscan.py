@@ -8,7 +8,7 @@ C's globals of this part are attributes of ``self`` with C's names (``linetarget
 they keep their values from one level to the next.
 """
 from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACUNIT, ANGLETOFINESHIFT, FINESINE, FINECOSINE, \
+from wallbsp.sim.fixed import c_div, FRACUNIT, ANGLETOFINESHIFT, FINESINE, FINECOSINE, \
     fixed_mul, fixed_div, wrap32
 
 PT_ADDLINES, PT_ADDTHINGS, PT_EARLYOUT = 1, 2, 4
@@ -18,12 +18,6 @@ MAXRADIUS = 32 * FRACUNIT
 MAPBLOCKSHIFT = 16 + 7
 SCREENWIDTH, SCREENHEIGHT = 320, 200
 SKYFLATNAME = "F_SKY1"          # skyflatnum: flats are held by name
-
-
-def _cdiv(a, b):
-    """C's integer division: truncates toward zero."""
-    q = abs(a) // abs(b)
-    return -q if (a < 0) != (b < 0) else q
 
 
 class Hitscan:
@@ -82,7 +76,7 @@ class Hitscan:
             thingtopslope = self.topslope
         if thingbottomslope < self.bottomslope:
             thingbottomslope = self.bottomslope
-        self.aimslope = _cdiv(thingtopslope + thingbottomslope, 2)
+        self.aimslope = c_div(thingtopslope + thingbottomslope, 2)
         self.linetarget = th
         return False                    # don't go any farther
 

@@ -11,7 +11,7 @@ from wallbsp.game.playsim.structs import EXE_ULTIMATE
 from wallbsp.game.playsim.mobjspawn import (
     MobjSpawn, FRACUNIT, GRAVITY, VIEWHEIGHT, ANG45, MTF_AMBUSH, ONFLOORZ, ONCEILINGZ)
 from wallbsp.sim import info
-from wallbsp.sim.fixed import fixed_mul, aprox_distance, wrap32
+from wallbsp.sim.fixed import c_div, fixed_mul, aprox_distance, wrap32
 
 MAXMOVE = 30 * FRACUNIT
 STOPSPEED = 0x1000
@@ -36,12 +36,6 @@ def _state_rows():
                                for st in info.STATES)
         _STATE_ROWS[0] = info.STATES
     return _STATE_ROWS[1]
-
-
-def _cdiv(a, b):
-    """C's integer division: truncates toward zero."""
-    q = abs(a) // abs(b)
-    return -q if (a < 0) != (b < 0) else q
 
 
 class Mobjs(MobjSpawn):
@@ -96,8 +90,8 @@ class Mobjs(MobjSpawn):
             # vanilla halves the step only for big positive moves
             # (C's sums are 32 bits: a thing flying off the map comes back on the other side)
             if xmove > MAXMOVE // 2 or ymove > MAXMOVE // 2:
-                ptryx = wrap32(mo.x + _cdiv(xmove, 2))
-                ptryy = wrap32(mo.y + _cdiv(ymove, 2))
+                ptryx = wrap32(mo.x + c_div(xmove, 2))
+                ptryy = wrap32(mo.y + c_div(ymove, 2))
                 xmove >>= 1
                 ymove >>= 1
             else:
@@ -216,7 +210,7 @@ class Mobjs(MobjSpawn):
         # the new monster inherits the spawn point of the dead one
         mo = self.p_spawn_mobj(x, y, z, mobj.type)
         mo.spawnpoint = self._copy_mapthing(mobj.spawnpoint)
-        mo.angle = (ANG45 * _cdiv(mthing.angle, 45)) & 0xFFFFFFFF
+        mo.angle = (ANG45 * c_div(mthing.angle, 45)) & 0xFFFFFFFF
         if mthing.options & MTF_AMBUSH:
             mo.flags |= info.MF_AMBUSH
         mo.reactiontime = 18

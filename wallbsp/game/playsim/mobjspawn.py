@@ -5,7 +5,7 @@ players, puffs, blood, missiles) and deathmatch's item respawning.  ``Mobjs``
 from wallbsp.game.playsim.structs import Mobj, MapThing, MAXPLAYERS, NUMCARDS, PST_LIVE, \
     PST_REBORN
 from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACUNIT, ANG45, ANGLETOFINESHIFT, FINESINE, FINECOSINE, \
+from wallbsp.sim.fixed import c_div, FRACUNIT, ANG45, ANGLETOFINESHIFT, FINESINE, FINECOSINE, \
     fixed_mul, point_to_angle2, aprox_distance, wrap32
 
 ONFLOORZ = info.ONFLOORZ        # INT_MIN: spawn on the floor
@@ -26,15 +26,9 @@ def _mobj_type_of(doomednum):
     return info.DOOMEDNUM.get(doomednum)
 
 
-def _cdiv(a, b):
-    """C's integer division: truncates toward zero."""
-    q = abs(a) // abs(b)
-    return -q if (a < 0) != (b < 0) else q
-
-
 def _spawn_angle(mthing):
     """``ANG45 * (mthing->angle/45)``: a map thing's facing, snapped to 45 degrees."""
-    return (ANG45 * _cdiv(mthing.angle, 45)) & 0xFFFFFFFF
+    return (ANG45 * c_div(mthing.angle, 45)) & 0xFFFFFFFF
 
 
 class MobjSpawn:
@@ -262,10 +256,10 @@ class MobjSpawn:
         th.momx = fixed_mul(th.info.speed, FINECOSINE[an])
         th.momy = fixed_mul(th.info.speed, FINESINE[an])
         dist = aprox_distance(dest.x - source.x, dest.y - source.y)
-        dist = _cdiv(dist, th.info.speed)
+        dist = c_div(dist, th.info.speed)
         if dist < 1:
             dist = 1
-        th.momz = _cdiv(dest.z - source.z, dist)
+        th.momz = c_div(dest.z - source.z, dist)
         self.p_check_missile_spawn(th)
         return th
 
