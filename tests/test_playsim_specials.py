@@ -83,7 +83,7 @@ class _Play(Ticker, Doors, Floors, Ceilings, Plats, Lights, Switches, Teleport, 
         ld = Line(len(self.lines))
         ld.special, ld.tag = special, tag
         ld.frontsector, ld.backsector = front, back
-        ld.flags = st.ML_TWOSIDED if back is not None else st.ML_BLOCKING
+        ld.flags = info.ML_TWOSIDED if back is not None else info.ML_BLOCKING
         ld.sidenum = [self._side(front, top, mid, bottom),
                       self._side(back, "-", "-", back_bottom) if back is not None else -1]
         for sec in (front, back):
@@ -557,9 +557,9 @@ def test_switch_is_used_once_and_exit_switch_exits():
 def test_monsters_use_only_plain_doors_and_never_the_back_side():
     p, a, d, b = _door_map()
     assert p.p_use_special_line(_monster(), p.lines[0], 1) is False
-    p.lines[0].flags |= st.ML_SECRET
+    p.lines[0].flags |= info.ML_SECRET
     assert p.p_use_special_line(_monster(), p.lines[0], 0) is False
-    p.lines[0].flags &= ~st.ML_SECRET
+    p.lines[0].flags &= ~info.ML_SECRET
     assert p.p_use_special_line(_monster(), p.lines[0], 0) is True
     assert d.specialdata is not None
     sw = p.line(a, special=63, tag=5)

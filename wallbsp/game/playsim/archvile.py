@@ -8,7 +8,8 @@ scratch globals (``corpsehit``, ``vileobj``, ``viletryx``, ``viletryy``) are set
 from wallbsp.sim import info
 from wallbsp.sim.fixed import FRACUNIT, ANGLETOFINESHIFT, FINECOSINE, FINESINE, fixed_mul, \
     wrap32
-from wallbsp.game.playsim.monsters import DI_NODIR, XSPEED, YSPEED, MAXRADIUS, MAPBLOCKSHIFT
+from wallbsp.game.playsim.monsters import DI_NODIR, XSPEED, YSPEED
+from wallbsp.sim.info import MAPBLOCKSHIFT, MAXRADIUS
 
 
 class ArchVile:

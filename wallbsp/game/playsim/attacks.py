@@ -11,9 +11,10 @@ from wallbsp.sim import info
 from wallbsp.sim.fixed import FRACUNIT, ANG90, ANG180, ANG270, ANGLETOFINESHIFT, \
     FINECOSINE, FINESINE, c_div, fixed_mul, point_to_angle2, wrap32
 from wallbsp.game.playsim.structs import EXE_DOOM_1_2
-from wallbsp.game.playsim.monsters import MELEERANGE, mobj_thinkers
+from wallbsp.game.playsim.monsters import mobj_thinkers
+from wallbsp.sim.info import MELEERANGE
+from wallbsp.sim.info import MISSILERANGE
 
-MISSILERANGE = 32 * 64 * FRACUNIT
 TRACEANGLE = 0xC000000                        # the revenant missile's turn per adjustment
 FATSPREAD = ANG90 // 8
 SKULLSPEED = 20 * FRACUNIT

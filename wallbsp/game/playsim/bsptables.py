@@ -15,8 +15,7 @@ import numpy as np
 
 from wallbsp.sim import nodewalks
 from wallbsp.sim.fixed import FRACBITS, fixed_mul, wrap32
-
-ML_TWOSIDED = 4
+from wallbsp.sim.info import ML_TWOSIDED
 
 
 class BspTables:

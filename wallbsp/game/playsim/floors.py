@@ -9,10 +9,11 @@ No per-level state of its own.
 """
 from wallbsp.sim import info
 from wallbsp.sim.fixed import FRACUNIT, INT_MAX, wrap32
+from wallbsp.sim.info import ML_TWOSIDED
 
 from .spectypes import (BUILD8, CRUSHED, DONUTRAISE, FLOORSPEED, LOWERANDCHANGE, LOWERFLOOR,
-                        LOWERFLOORTOLOWEST, ML_TWOSIDED, OK, PASTDEST, RAISEFLOOR,
-                        RAISEFLOOR24, RAISEFLOOR24ANDCHANGE, RAISEFLOOR512, RAISEFLOORCRUSH,
+                        LOWERFLOORTOLOWEST, OK, PASTDEST, RAISEFLOOR, RAISEFLOOR24,
+                        RAISEFLOOR24ANDCHANGE, RAISEFLOOR512, RAISEFLOORCRUSH,
                         RAISEFLOORTONEAREST, RAISEFLOORTURBO, RAISETOTEXTURE,
                         STAIRS_UNINITIALIZED_CRUSH_FIELD_VALUE, TURBO16, TURBOLOWER,
                         floormove_t)

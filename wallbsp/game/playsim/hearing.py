@@ -2,9 +2,7 @@
 two-sided lines, and at most one sound-blocking line, waking the monsters there
 (``P_NoiseAlert``, ``P_RecursiveSound``).  ``Hearing`` is the mixin for ``Play``."""
 
-# doomdata.h line flags
-ML_TWOSIDED = 4
-ML_SOUNDBLOCK = 64
+from wallbsp.sim.info import ML_SOUNDBLOCK, ML_TWOSIDED
 
 
 class Hearing:

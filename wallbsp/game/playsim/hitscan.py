@@ -10,12 +10,10 @@ they keep their values from one level to the next.
 from wallbsp.sim import info
 from wallbsp.sim.fixed import c_div, FRACUNIT, ANGLETOFINESHIFT, FINESINE, FINECOSINE, \
     fixed_mul, fixed_div, wrap32
+from wallbsp.sim.info import MAPBLOCKSHIFT, MAXRADIUS, ML_TWOSIDED
 
 PT_ADDLINES, PT_ADDTHINGS, PT_EARLYOUT = 1, 2, 4
-ML_TWOSIDED = 4                 # doomdata.h's line flag
 USERANGE = 64 * FRACUNIT
-MAXRADIUS = 32 * FRACUNIT
-MAPBLOCKSHIFT = 16 + 7
 SCREENWIDTH, SCREENHEIGHT = 320, 200
 SKYFLATNAME = "F_SKY1"          # skyflatnum: flats are held by name
 

@@ -33,11 +33,10 @@ DOOM's limits hold: fewer than 32768 nodes and subsectors (``NF_SUBSECTOR``), a
 import math
 
 from wallbsp.sim.fixed import FRACBITS, FRACUNIT
+from wallbsp.sim.info import ML_TWOSIDED, NF_SUBSECTOR
 
 from .structs import Node, Seg, Subsector, Vertex
 
-NF_SUBSECTOR = 0x8000
-ML_TWOSIDED = 4
 BOXTOP, BOXBOTTOM, BOXLEFT, BOXRIGHT = range(4)
 MAX_PARTITION = 32767               # a node's dx, dy in map units (a mapnode_t's shorts)
 

@@ -46,15 +46,15 @@ from __future__ import annotations
 
 from wallbsp.sim import info
 from wallbsp.sim.fixed import FRACBITS, FRACUNIT
+from wallbsp.sim.info import ML_BLOCKING, ML_DONTPEGBOTTOM, ML_DONTPEGTOP, ML_TWOSIDED, NF_SUBSECTOR
 
-from .levelbsp import ML_TWOSIDED, NF_SUBSECTOR, LevelMapError
+from .levelbsp import LevelMapError
 from .mapload import set_line_ends
 from .structs import COMMERCIAL, EXE_DOOM_1_9, Line, MapThing, Sector, Side, Vertex
 
 __all__ = ["LevelMap", "LevelMapError", "start_level", "ML_BLOCKING", "ML_TWOSIDED",
            "NF_SUBSECTOR"]
 
-ML_BLOCKING, ML_DONTPEGTOP, ML_DONTPEGBOTTOM = 1, 8, 16
 SKY_FLAT = "F_SKY1"
 MAX_COORD = 32767                   # DOOM's map units: a fixed_t holds ±32768
 MAXPLAYERS = 4

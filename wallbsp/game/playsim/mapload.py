@@ -25,10 +25,9 @@ from wallbsp.sim.fixed import FRACBITS, MAXINT, MININT, c_div, fixed_div, wrap32
 from .bsptables import BspTables
 from .structs import (COMMERCIAL, ST_HORIZONTAL, ST_NEGATIVE, ST_POSITIVE, ST_VERTICAL, Line,
                       MapThing, Node, Sector, Seg, Side, Subsector, Vertex)
+from wallbsp.sim.info import MAPBLOCKSHIFT, MAXRADIUS
 
 BOXTOP, BOXBOTTOM, BOXLEFT, BOXRIGHT = range(4)
-MAXRADIUS = 32 << FRACBITS
-MAPBLOCKSHIFT = FRACBITS + 7
 MAXPLAYERS = 4
 
 # the map lumps' records (doomdata.h), all little-endian

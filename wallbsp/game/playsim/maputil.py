@@ -7,8 +7,8 @@ State (``init_maputil``, set once: C never resets these globals between levels):
 ``opentop``, ``openbottom``, ``openrange``, ``lowfloor`` (P_LineOpening's results).
 """
 from wallbsp.sim.fixed import FRACBITS, aprox_distance, fixed_div, fixed_mul, wrap32
+from wallbsp.sim.info import MAPBLOCKSHIFT
 
-MAPBLOCKSHIFT = FRACBITS + 7
 
 BOXTOP, BOXBOTTOM, BOXLEFT, BOXRIGHT = range(4)
 

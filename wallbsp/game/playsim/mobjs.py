@@ -9,14 +9,13 @@ reset by ``P_SetupLevel``); call it before the map's things are spawned.
 from wallbsp.game.playsim import cname
 from wallbsp.game.playsim.structs import EXE_ULTIMATE
 from wallbsp.game.playsim.mobjspawn import (
-    MobjSpawn, FRACUNIT, GRAVITY, VIEWHEIGHT, ANG45, MTF_AMBUSH, ONFLOORZ, ONCEILINGZ)
+    MobjSpawn, FRACUNIT, VIEWHEIGHT, ANG45, MTF_AMBUSH, ONFLOORZ, ONCEILINGZ)
 from wallbsp.sim import info
 from wallbsp.sim.fixed import c_div, fixed_mul, aprox_distance, wrap32
+from wallbsp.sim.info import FLOATSPEED, GRAVITY, MAXMOVE
 
-MAXMOVE = 30 * FRACUNIT
 STOPSPEED = 0x1000
 FRICTION = 0xE800
-FLOATSPEED = 4 * FRACUNIT
 TICRATE = 35
 CF_NOMOMENTUM = 4              # d_player.h's cheat flag: no sliding at all
 MOBJ_CYCLE_LIMIT = 1000000     # Chocolate Doom's guard against endless zero-tic cycles

@@ -7,12 +7,11 @@ from wallbsp.game.playsim.structs import Mobj, MapThing, MAXPLAYERS, NUMCARDS, P
 from wallbsp.sim import info
 from wallbsp.sim.fixed import c_div, FRACUNIT, ANG45, ANGLETOFINESHIFT, FINESINE, FINECOSINE, \
     fixed_mul, point_to_angle2, aprox_distance, wrap32
+from wallbsp.sim.info import MELEERANGE
 
 ONFLOORZ = info.ONFLOORZ        # INT_MIN: spawn on the floor
 ONCEILINGZ = info.ONCEILINGZ    # INT_MAX: spawn hanging from the ceiling
-GRAVITY = FRACUNIT
 VIEWHEIGHT = 41 * FRACUNIT
-MELEERANGE = 64 * FRACUNIT
 ITEMQUESIZE = 128
 TICRATE = 35
 MTF_AMBUSH = 8                  # doomdata.h's mapthing option bits

@@ -16,6 +16,7 @@ levels as C keeps it.
 from wallbsp.sim import info
 from wallbsp.sim.fixed import FRACBITS, FRACUNIT, ANG90, ANG270, point_to_angle2, wrap32
 from wallbsp.game.playsim.structs import EXE_DOOM_1_2
+from wallbsp.sim.info import FLOATSPEED, MELEERANGE
 
 # dirtype_t
 DI_EAST, DI_NORTHEAST, DI_NORTH, DI_NORTHWEST, DI_WEST, DI_SOUTHWEST, DI_SOUTH, \
@@ -30,10 +31,6 @@ XSPEED = (FRACUNIT, 47000, 0, -47000, -FRACUNIT, -47000, 0, 47000)
 YSPEED = (0, 47000, FRACUNIT, 47000, 0, -47000, -FRACUNIT, -47000)
 
 # doomdata.h line flags, p_local.h distances
-MELEERANGE = 64 * FRACUNIT
-FLOATSPEED = 4 * FRACUNIT
-MAXRADIUS = 32 * FRACUNIT
-MAPBLOCKSHIFT = FRACBITS + 7
 
 # doomdef.h skill_t
 SK_NIGHTMARE = 4

@@ -10,9 +10,9 @@ State (``init_path_traverse``, set once: C never resets these globals between le
 P_PathTraverse fills), ``earlyout``.
 """
 from wallbsp.sim.fixed import FRACBITS, FRACUNIT, c_abs, fixed_div, fixed_mul, wrap32
+from wallbsp.sim.info import MAPBLOCKSHIFT
 
 MAPBLOCKSIZE = 128 * FRACUNIT
-MAPBLOCKSHIFT = FRACBITS + 7
 MAPBTOFRAC = MAPBLOCKSHIFT - FRACBITS
 
 PT_ADDLINES, PT_ADDTHINGS, PT_EARLYOUT = 1, 2, 4

@@ -10,9 +10,9 @@ State (``init_slide``, set once: C never resets these globals between levels):
 from wallbsp.sim.fixed import ANG180, ANGLETOFINESHIFT, FINECOSINE, FINESINE, FRACUNIT, \
     fixed_mul, point_to_angle2
 
-from .structs import ST_HORIZONTAL, ST_VERTICAL
+from wallbsp.sim.info import ML_TWOSIDED
 
-ML_TWOSIDED = 4
+from .structs import ST_HORIZONTAL, ST_VERTICAL
 PT_ADDLINES = 1
 
 

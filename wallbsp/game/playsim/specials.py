@@ -12,10 +12,11 @@ only changes what is drawn, so it is not here.
 """
 from wallbsp.sim import info
 from wallbsp.sim.fixed import FRACUNIT, INT_MAX, wrap32
+from wallbsp.sim.info import ML_TWOSIDED
 
-from .spectypes import (CF_GODMODE, DONUTRAISE, FASTDARK, FLOORSPEED, LOWERFLOOR,
-                        MAXBUTTONS, MAXCEILINGS, MAXPLATS, ML_TWOSIDED, SLOWDARK, TICRATE,
-                        TOP, MIDDLE, BOTTOM, floormove_t, button_t)
+from .spectypes import (CF_GODMODE, DONUTRAISE, FASTDARK, FLOORSPEED, LOWERFLOOR, MAXBUTTONS,
+                        MAXCEILINGS, MAXPLATS, SLOWDARK, TICRATE, TOP, MIDDLE, BOTTOM,
+                        floormove_t, button_t)
 from .structs import EXE_DOOM_1_2
 
 # p_spec.c: how many scrolling walls the executables take

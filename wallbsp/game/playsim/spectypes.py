@@ -70,7 +70,6 @@ MAXBUTTONS = 16
 BUTTONTIME = 35
 
 # line flags (doomdata.h) used by the specials
-ML_BLOCKING, ML_BLOCKMONSTERS, ML_TWOSIDED, ML_SECRET = 1, 2, 4, 32
 
 
 class vldoor_t(Thinker):

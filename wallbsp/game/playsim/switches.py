@@ -7,14 +7,14 @@ Per-level state: ``init_switches()`` sets ``buttonlist`` (``MAXBUTTONS`` free
 ``P_InitSwitchList`` makes from ``self.gamemode`` (called at game start, or on first use).
 """
 from wallbsp.sim import info
+from wallbsp.sim.info import ML_SECRET
 
 from .spectypes import (BLAZEDWUS, BOTTOM, BUILD8, BUTTONTIME, CRUSHANDRAISE, DOWNWAITUPSTAY,
                         LOWERFLOOR, LOWERFLOORTOLOWEST, LOWERTOFLOOR, MAXBUTTONS, MIDDLE,
-                        ML_SECRET, RAISEANDCHANGE, RAISEFLOOR, RAISEFLOOR512,
-                        RAISEFLOORCRUSH, RAISEFLOORTONEAREST, RAISEFLOORTURBO,
-                        RAISETONEARESTANDCHANGE, TOP, TURBO16, TURBOLOWER, VLD_BLAZECLOSE,
-                        VLD_BLAZEOPEN, VLD_BLAZERAISE, VLD_CLOSE, VLD_NORMAL, VLD_OPEN,
-                        button_t)
+                        RAISEANDCHANGE, RAISEFLOOR, RAISEFLOOR512, RAISEFLOORCRUSH,
+                        RAISEFLOORTONEAREST, RAISEFLOORTURBO, RAISETONEARESTANDCHANGE, TOP,
+                        TURBO16, TURBOLOWER, VLD_BLAZECLOSE, VLD_BLAZEOPEN, VLD_BLAZERAISE,
+                        VLD_CLOSE, VLD_NORMAL, VLD_OPEN, button_t)
 from .structs import COMMERCIAL, REGISTERED, RETAIL
 
 # alphSwitchList: (off, on, the first "episode" that has it: 1 shareware, 2 registered and
