@@ -10,8 +10,8 @@ A_BrainSpit's static ``easy``, as ``brainspit_easy``) are set by ``init_monsters
 from wallbsp.sim import info
 from wallbsp.sim.fixed import FRACUNIT, c_div, wrap32
 from wallbsp.game.playsim.monsters import mobj_thinkers
+from wallbsp.game.playsim.structs import SK_EASY
 
-SK_EASY = 1                                   # doomdef.h skill_t
 
 # A_SpawnFly's monster by P_Random: (the first r it is not for, type), decreasing odds
 SPAWNFLY_ODDS = ((50, "MT_TROOP"), (90, "MT_SERGEANT"), (120, "MT_SHADOWS"),

@@ -4,12 +4,11 @@
 ``self.players``, ``self.gameskill``, ``self.gameversion`` and ``self.netgame``, and calls
 ``p_spawn_mobj``, ``p_set_mobj_state`` and ``p_drop_weapon`` through ``self``.
 """
-from wallbsp.game.playsim.structs import PST_DEAD, EXE_DOOM_1_2, EXE_CHEX
+from wallbsp.game.playsim.structs import SK_BABY, PST_DEAD, EXE_DOOM_1_2, EXE_CHEX
 from wallbsp.sim import info
 from wallbsp.sim.fixed import FRACUNIT, ANG180, ANGLETOFINESHIFT, FINESINE, FINECOSINE, \
     c_div, fixed_mul, wrap32, point_to_angle2
 
-SK_BABY = 0                             # skill_t's first
 
 # what a dying monster drops (P_KillMobj)
 DROPS = {

@@ -21,13 +21,13 @@ from wallbsp.sim.rng import Random
 
 from .demos import DemoError, wad_entries
 from .structs import (BT_SPECIAL, COMMERCIAL, EXE_DOOM_1_9, EXE_FINAL, EXE_ULTIMATE, MAXPLAYERS,
-                      PST_DEAD, PST_REBORN, REGISTERED, RETAIL, SHAREWARE, MapThing, Player)
+                      PST_DEAD, PST_REBORN, REGISTERED, RETAIL, SHAREWARE, SK_BABY, SK_NIGHTMARE,
+                      MapThing, Player)
 
 # gamestate_t and gameaction_t (d_event.h / doomdef.h)
 GS_LEVEL, GS_INTERMISSION, GS_FINALE, GS_DEMOSCREEN = range(4)
 (GA_NOTHING, GA_LOADLEVEL, GA_NEWGAME, GA_LOADGAME, GA_SAVEGAME, GA_PLAYDEMO, GA_COMPLETED,
  GA_VICTORY, GA_WORLDDONE, GA_SCREENSHOT) = range(10)
-SK_BABY, SK_EASY, SK_MEDIUM, SK_HARD, SK_NIGHTMARE = range(5)
 BTS_PAUSE, BTS_SAVEGAME, BTS_SPECIALMASK = 1, 2, 3
 
 

@@ -7,12 +7,11 @@ It reads ``self.players``, ``self.gameskill``, ``self.gamemode``, ``self.gamever
 decides who hears a pickup), and calls ``p_remove_mobj`` and ``s_start_sound`` through
 ``self``.
 """
-from wallbsp.game.playsim.structs import NUMAMMO, COMMERCIAL, EXE_DOOM_1_2
+from wallbsp.game.playsim.structs import SK_BABY, SK_NIGHTMARE, NUMAMMO, COMMERCIAL, EXE_DOOM_1_2
 from wallbsp.sim import info
 from wallbsp.sim.fixed import FRACUNIT
 
 BONUSADD = 6
-SK_BABY, SK_NIGHTMARE = 0, 4            # skill_t's first and last
 
 # Chocolate Doom's dehacked defaults (deh_misc.h)
 DEH_MAX_HEALTH = 200

@@ -2,7 +2,7 @@
 players, puffs, blood, missiles) and deathmatch's item respawning.  ``Mobjs``
 (``mobjs.py``) derives from ``MobjSpawn``; compose ``Play`` with ``Mobjs``.
 """
-from wallbsp.game.playsim.structs import Mobj, MapThing, MAXPLAYERS, NUMCARDS, PST_LIVE, \
+from wallbsp.game.playsim.structs import SK_BABY, SK_NIGHTMARE, Mobj, MapThing, MAXPLAYERS, NUMCARDS, PST_LIVE, \
     PST_REBORN
 from wallbsp.sim import info
 from wallbsp.sim.fixed import c_div, FRACUNIT, ANG45, ANGLETOFINESHIFT, FINESINE, FINECOSINE, \
@@ -16,7 +16,6 @@ ITEMQUESIZE = 128
 TICRATE = 35
 MTF_AMBUSH = 8                  # doomdata.h's mapthing option bits
 MTF_NOTSINGLE = 16
-SK_BABY, SK_NIGHTMARE = 0, 4
 
 
 def _mobj_type_of(doomednum):

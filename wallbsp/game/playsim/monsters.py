@@ -15,7 +15,7 @@ levels as C keeps it.
 """
 from wallbsp.sim import info
 from wallbsp.sim.fixed import FRACBITS, FRACUNIT, ANG90, ANG270, point_to_angle2, wrap32
-from wallbsp.game.playsim.structs import EXE_DOOM_1_2
+from wallbsp.game.playsim.structs import SK_NIGHTMARE, EXE_DOOM_1_2
 from wallbsp.sim.info import FLOATSPEED, MELEERANGE
 
 # dirtype_t
@@ -29,11 +29,6 @@ DIAGS = (DI_NORTHWEST, DI_NORTHEAST, DI_SOUTHWEST, DI_SOUTHEAST)
 # a step of speed 1 in each direction (47000 is FRACUNIT/sqrt(2), rounded as id did)
 XSPEED = (FRACUNIT, 47000, 0, -47000, -FRACUNIT, -47000, 0, 47000)
 YSPEED = (0, 47000, FRACUNIT, 47000, 0, -47000, -FRACUNIT, -47000)
-
-# doomdata.h line flags, p_local.h distances
-
-# doomdef.h skill_t
-SK_NIGHTMARE = 4
 
 
 class Monsters:

@@ -193,6 +193,9 @@ class PspDef:
         self.tics = self.sx = self.sy = 0
 
 
+# skill_t (doomdef.h)
+SK_BABY, SK_EASY, SK_MEDIUM, SK_HARD, SK_NIGHTMARE = range(5)
+
 # playerstate_t
 PST_LIVE, PST_DEAD, PST_REBORN = range(3)
 NUMPOWERS, NUMCARDS, NUMWEAPONS, NUMAMMO, NUMPSPRITES, MAXPLAYERS = 6, 6, 9, 4, 2, 4
