@@ -14,6 +14,8 @@ import os
 import struct
 from dataclasses import dataclass, field
 
+from wallbsp.files import InputError, read_input
+
 from .structs import MAXPLAYERS, TicCmd
 
 DEMO_VERSION = 109                  # v1.9: the only format the port plays
@@ -126,16 +128,15 @@ def parse_demo(data: bytes, source: str = "<demo>") -> Demo:
 
 
 def read_demo(path) -> Demo:
-    """The demo in the ``.lmp`` file at ``path``."""
+    """The demo in the ``.lmp`` file at ``path`` (a regular file of at most
+    ``MAX_DEMO_BYTES``, read as every user file is: ``wallbsp.files.read_input``)."""
     label = os.fspath(path)
     try:
-        with open(path, "rb") as f:
-            data = f.read(MAX_DEMO_BYTES + 1)
+        data = read_input(path, MAX_DEMO_BYTES)
+    except InputError as e:
+        raise DemoError(f"{label}: byte 0: {e.reason}") from None
     except OSError as e:
         raise DemoError(f"{label}: byte 0: cannot read: {e.strerror or e}") from None
-    if len(data) > MAX_DEMO_BYTES:
-        raise DemoError(f"{label}: byte {MAX_DEMO_BYTES}: larger than {MAX_DEMO_BYTES} bytes; "
-                        f"not a DOOM demo")
     return parse_demo(data, label)
 
 
