@@ -17,7 +17,8 @@ weapon of the slot is held), ``SELECTED_WEAPON`` (its slot), ``SELECTED_WEAPON_A
 ``KILLCOUNT``, ``ITEMCOUNT``, ``SECRETCOUNT``, ``DAMAGECOUNT`` (damage the player dealt),
 ``DAMAGE_TAKEN``, ``HITCOUNT`` (hits the player landed), ``HITS_TAKEN``, ``DEAD``,
 ``POSITION_X/Y/Z``, ``ANGLE`` (degrees), ``VELOCITY_X/Y/Z`` (map units a tic),
-``ON_GROUND``.  The damage and hit counters come from a scenario's ``Events``.
+``ON_GROUND``, ``FRAGCOUNT`` (DOOM's status-bar frags).  The damage and hit counters come
+from a scenario's ``Events``; ``player=k`` reads player ``k`` of a net game.
 """
 from __future__ import annotations
 
@@ -51,7 +52,7 @@ VARIABLES = ("HEALTH", "ARMOR") + tuple(f"AMMO{i}" for i in range(10)) + tuple(
     "SELECTED_WEAPON", "SELECTED_WEAPON_AMMO", "KILLCOUNT", "ITEMCOUNT", "SECRETCOUNT",
     "DAMAGECOUNT", "DAMAGE_TAKEN", "HITCOUNT", "HITS_TAKEN", "DEAD", "POSITION_X",
     "POSITION_Y", "POSITION_Z", "ANGLE", "VELOCITY_X", "VELOCITY_Y", "VELOCITY_Z",
-    "ON_GROUND")
+    "ON_GROUND", "FRAGCOUNT")
 
 
 def check_buttons(names) -> tuple:
@@ -137,13 +138,16 @@ def _next_slot(p, step):
     return min(owned) if step > 0 else max(owned)
 
 
-def game_variables(world, names, events=None) -> dict:
+def game_variables(world, names, events=None, player=0) -> dict:
     """``{name: value}`` of ViZDoom's ``names`` now (floats; ``events``: a scenario's
-    ``Events`` for the damage and hit counters, 0 without)."""
-    p = world.play.players[0]
+    ``Events`` for the damage and hit counters, 0 without) of player ``player``."""
+    p = world.play.players[player]
     mo = p.mo
     out = {}
     for name in names:
+        if name == "FRAGCOUNT":        # others killed, less suicides (ST's frags)
+            out[name] = float(sum(p.frags) - 2 * p.frags[player])
+            continue
         out[name] = float(_variable(name, p, mo, events))
     return out
 
@@ -202,6 +206,6 @@ def _variable(name, p, mo, events):
     raise ValueError(f"unknown game variable {name!r}")
 
 
-def variables_array(world, names, events=None) -> np.ndarray:
-    values = game_variables(world, names, events)
+def variables_array(world, names, events=None, player=0) -> np.ndarray:
+    values = game_variables(world, names, events, player)
     return np.array([values[n] for n in names], dtype=np.float32)
