@@ -101,6 +101,10 @@ class PlayThings(Things):
         mo = self.mobjs[i] if 0 <= i < len(self.mobjs) else None
         return mo if mo is not None and self.alive[i] else None
 
+    def index_of(self, mo) -> int:
+        """The thing index of map object ``mo`` (-1 for one not in the world)."""
+        return self._slot.get(mo, -1)
+
     def _grow(self, n: int) -> None:
         """Arrays for ``n`` things (new ones not alive)."""
         extra = n - len(self.x)
