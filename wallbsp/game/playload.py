@@ -15,7 +15,9 @@ thing P_SpawnMapThing is given is matched to the next of ``level_things`` with i
 position, type and flags, so things DOOM skips or leaves out keep their numbers) and
 ``loads`` (how many times a level was loaded, so a reload after a death is noticed), and
 ``secret_exit_taken`` (whether the level was left by its secret exit: DOOM's own
-``secretexit`` stays false in a Doom II game without MAP31, as with no WAD at all).
+``secretexit`` stays false in a Doom II game without MAP31, as with no WAD at all), and
+``extra_starts`` (THINGS entries spawned before the map's own: the player and deathmatch
+starts a net game needs and the level lacks, ``game.multiplayer``).
 """
 from __future__ import annotations
 
@@ -113,6 +115,19 @@ def world_play_class():
             loads = 0
             level_things = ()
             secret_exit_taken = False
+            extra_starts = ()
+
+            def p_load_things(self):
+                self.spawn_extra_starts()
+                return super().p_load_things()
+
+            def p_load_level_things(self, level):
+                self.spawn_extra_starts()
+                return super().p_load_level_things(level)
+
+            def spawn_extra_starts(self):
+                for mthing in self.extra_starts:
+                    self.p_spawn_map_thing(mthing)
 
             def p_setup_level(self, *args, **kwargs):
                 self.begin_things()

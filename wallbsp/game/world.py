@@ -27,6 +27,12 @@ things is the object its ``i``-th thing spawned), ``exited`` (None, ``"normal"``
 
 A dead player stays dead until ``use`` is pressed; then, as DOOM does in a single-player
 game, the level starts again (the thing indices start again too).
+
+Several players (``World(tree, skill, players=N, deathmatch=0|1|2)``, ``game.multiplayer``):
+DOOM's net game, cooperative or deathmatch; ``tic([cmd1, cmd2, ...])`` takes one command a
+player each tic; ``players[k]`` (a ``PlayerView``: ``frags``, ``kills``, ``camera()``, ...)
+and ``camera(fov, player=k)`` are player ``k``'s; ``player`` is ``players[0]``.  A dead
+player comes back with ``use`` at its start (or a deathmatch start); the level goes on.
 """
 from __future__ import annotations
 
@@ -35,169 +41,45 @@ from collections import deque
 import numpy as np
 
 from wallbsp.camera import Camera
+from wallbsp.game.multiplayer import check_deathmatch, check_players, join_players
+from wallbsp.game.playerview import (AMMO_NAMES, KEY_NAMES, POWER_NAMES, WEAPON_NAMES,
+                                     PlayerView)
 from wallbsp.game.playload import level_thing_keys, map_numbers, wad_map_of, world_play_class
 from wallbsp.files import LevelError
 from wallbsp.game.playsim.game import GA_COMPLETED, GA_VICTORY, GS_LEVEL
 from wallbsp.game.playsim.levelbsp import LevelMapError
-from wallbsp.game.playsim.structs import PST_DEAD, TicCmd
-from wallbsp.game.playstate import ANGLE_DEGREES, FRAC, PlayState, ThingsView
+from wallbsp.game.playsim.structs import TicCmd
+from wallbsp.game.playstate import PlayState, ThingsView
 from wallbsp.game.ticcmds import MAX_TURN, as_ticcmd, checked_number, ticcmd
 from wallbsp.sim import info
 from wallbsp.sim.fixed import ANG90
 
 __all__ = ["World", "PlayerView", "MAX_TURN", "MESSAGE_LOG", "SKILLS", "TICRATE",
-           "AMMO_NAMES", "WEAPON_NAMES", "KEY_NAMES"]
+           "AMMO_NAMES", "WEAPON_NAMES", "KEY_NAMES", "POWER_NAMES"]
 
 TICRATE = 35
 MESSAGE_LOG = 16
 SKILLS = range(1, 6)
 MAX_COORDINATE = float(1 << 15)         # DOOM's maps: 16-bit coordinates
 MAX_ANGLE = 36000.0
-AMMO_NAMES = ("bullets", "shells", "cells", "rockets")          # am_clip .. am_misl
-AMMO_SHOWN = (0, 1, 3, 2)               # the order they are listed in: bullets .. cells
-WEAPON_NAMES = ("fist", "pistol", "shotgun", "chaingun", "rocket launcher", "plasma rifle",
-                "BFG 9000", "chainsaw", "super shotgun")         # wp_fist .. wp_supershotgun
-KEY_NAMES = ("blue card", "yellow card", "red card", "blue skull", "yellow skull",
-             "red skull")                                       # it_bluecard .. it_redskull
-POWER_NAMES = ("invulnerability", "berserk", "invisibility", "radiation suit", "computer map",
-               "light amplification")                           # pw_invulnerability ..
-
-
-class PlayerView:
-    """The player of a ``World`` as floats and names, read from the play each time (DOOM's
-    ``player_t`` and its mobj)."""
-
-    def __init__(self, world):
-        self._world = world
-
-    @property
-    def _p(self):
-        return self._world.play.players[0]
-
-    @property
-    def _mo(self):
-        return self._world.play.players[0].mo
-
-    @property
-    def x(self) -> float:
-        return self._mo.x * FRAC
-
-    @property
-    def y(self) -> float:
-        return self._mo.y * FRAC
-
-    @property
-    def z(self) -> float:
-        """The feet."""
-        return self._mo.z * FRAC
-
-    @property
-    def angle(self) -> float:
-        """Degrees counter-clockwise from +x, in [0, 360)."""
-        return (self._mo.angle & 0xFFFFFFFF) * ANGLE_DEGREES
-
-    @property
-    def eye(self) -> float:
-        """DOOM's ``viewz``: the feet, the view height and the walking bob (before the
-        level's first tic, where DOOM has not set it yet: the feet and the view height)."""
-        p = self._p
-        if self._world.play.leveltime == 0:
-            return (p.mo.z + p.viewheight) * FRAC
-        return p.viewz * FRAC
-
-    viewz = eye
-
-    @property
-    def floor(self) -> float:
-        return self._mo.floorz * FRAC
-
-    @property
-    def ceiling(self) -> float:
-        return self._mo.ceilingz * FRAC
-
-    @property
-    def momx(self) -> float:
-        return self._mo.momx * FRAC
-
-    @property
-    def momy(self) -> float:
-        return self._mo.momy * FRAC
-
-    @property
-    def momz(self) -> float:
-        return self._mo.momz * FRAC
-
-    @property
-    def health(self) -> int:
-        return int(self._p.health)
-
-    @property
-    def armour(self) -> int:
-        return int(self._p.armorpoints)
-
-    @property
-    def armour_class(self) -> int:
-        """0 none, 1 green (a third absorbed), 2 blue (a half)."""
-        return int(self._p.armortype)
-
-    @property
-    def ammo(self) -> dict:
-        """Rounds of each kind: bullets, shells, rockets, cells."""
-        ammo = self._p.ammo
-        return {AMMO_NAMES[k]: int(ammo[k]) for k in AMMO_SHOWN}
-
-    @property
-    def max_ammo(self) -> dict:
-        most = self._p.maxammo
-        return {AMMO_NAMES[k]: int(most[k]) for k in AMMO_SHOWN}
-
-    @property
-    def weapon(self) -> str:
-        """The weapon in hand (``WEAPON_NAMES``)."""
-        return WEAPON_NAMES[self._p.readyweapon]
-
-    @property
-    def weapons(self) -> set:
-        return {name for name, owned in zip(WEAPON_NAMES, self._p.weaponowned) if owned}
-
-    @property
-    def keys(self) -> set:
-        return {name for name, held in zip(KEY_NAMES, self._p.cards) if held}
-
-    @property
-    def powers(self) -> dict:
-        """Power-ups held: name -> DOOM's counter (tics left; berserk counts up)."""
-        return {name: left for name, left in zip(POWER_NAMES, self._p.powers) if left}
-
-    @property
-    def backpack(self) -> bool:
-        return bool(self._p.backpack)
-
-    @property
-    def dead(self) -> bool:
-        return self._p.playerstate == PST_DEAD or self._p.health <= 0
-
-    def camera(self, fov=90.0) -> Camera:
-        return Camera(self.x, self.y, self.eye, self.angle, fov)
-
-    def __repr__(self):
-        return (f"PlayerView(x={self.x:g}, y={self.y:g}, z={self.z:g}, angle={self.angle:g}, "
-                f"health={self.health})")
-
-
 class World:
     """A level in play (module docstring)."""
 
-    def __init__(self, tree, skill: int = 3):
+    def __init__(self, tree, skill: int = 3, players: int = 1, deathmatch: int = 0):
         if isinstance(skill, bool) or not isinstance(skill, (int, np.integer)) \
                 or skill not in SKILLS:
             raise ValueError(f"World: skill must be an integer 1 to 5, not {skill!r}")
         self.tree, self.level, self.skill = tree, tree.level, int(skill)
-        self.messages: deque = deque(maxlen=MESSAGE_LOG)
+        self.player_count = check_players(players)
+        self.deathmatch = check_deathmatch(deathmatch)
+        self.player_messages = tuple(deque(maxlen=MESSAGE_LOG)
+                                     for _ in range(self.player_count))
+        self.messages: deque = self.player_messages[0]
         self.exited = None
         self._tics = 0
         self.wad_map = wad_map_of(self.level)
-        self.player = PlayerView(self)
+        self.players = tuple(PlayerView(self, k) for k in range(self.player_count))
+        self.player = self.players[0]
         self._start()
 
     def _start(self) -> None:
@@ -206,12 +88,13 @@ class World:
             wad, map_name = self.wad_map
             play = play_cls(wad)
             play.level_things = level_thing_keys(self.level)
-            play.playeringame[0] = True
+            join_players(play, self.level, self.tree, self.player_count, self.deathmatch)
             episode, gamemap = map_numbers(map_name)
             play.g_init_new(self.skill - 1, episode, gamemap)
         else:
             play = play_cls(None)
             play.level_things = level_thing_keys(self.level)
+            join_players(play, self.level, self.tree, self.player_count, self.deathmatch)
             try:
                 play.g_init_new_level(self.level, self.tree, self.skill - 1)
             except LevelMapError as err:      # beyond DOOM's map: bad input, one line
@@ -267,9 +150,9 @@ class World:
         """``(floor, ceiling, light)`` of sector ``i`` now."""
         return self.state.sector(i)
 
-    def camera(self, fov=90.0) -> Camera:
-        """The player's view: the eye at DOOM's ``viewz``, facing ``player.angle``."""
-        return self.player.camera(fov)
+    def camera(self, fov=90.0, player: int = 0) -> Camera:
+        """Player ``player``'s view: the eye at DOOM's ``viewz``, facing its ``angle``."""
+        return self.players[player].camera(fov)
 
     def status(self) -> dict:
         """Plain JSON values (``wallbsp play --json``)."""
@@ -281,17 +164,20 @@ class World:
                 "kills": self.kills[0], "items": self.items[0],
                 "secrets_found": found, "secrets_total": total,
                 "active_movers": self.active_movers, "leveltime": int(self.play.leveltime),
-                "prndindex": int(self.play.rng.prndindex)}
+                "prndindex": int(self.play.rng.prndindex),
+                **({"players": [v.status() for v in self.players]}
+                   if self.player_count > 1 else {})}
 
     # -- changing it --------------------------------------------------------------------------
-    def place_player(self, x, y, angle) -> None:
-        """Put the player at (x, y) facing ``angle``, feet on the floor there, at rest (no
-        momentum, the view at its height).  Nothing is picked up or crossed on the way."""
+    def place_player(self, x, y, angle, player: int = 0) -> None:
+        """Put player ``player`` at (x, y) facing ``angle``, feet on the floor there, at
+        rest (no momentum, the view at its height).  Nothing is picked up or crossed on
+        the way."""
         x, y = checked_number("x", x, MAX_COORDINATE), checked_number("y", y, MAX_COORDINATE)
         angle = checked_number("angle", angle, MAX_ANGLE)
         if self.tree.locate(x, y) is None:
             raise ValueError(f"place_player: ({x}, {y}) is outside the map")
-        play, p = self.play, self.play.players[0]
+        play, p = self.play, self.play.players[self.players[player].number]
         mo = p.mo
         play.p_unset_thing_position(mo)
         mo.x, mo.y = int(round(x * 65536)), int(round(y * 65536))
@@ -314,26 +200,39 @@ class World:
 
     def tic(self, *args, **keywords) -> None:
         """Advance the world one tic: ``tic(cmd)`` with a ``TicCmd``, or the keyword form
-        ``tic(forward, strafe, turn, use, run, fire, weapon)`` (``game.ticcmds``)."""
-        if len(args) == 1 and not keywords and isinstance(args[0], TicCmd):
-            cmd = as_ticcmd(args[0])
+        ``tic(forward, strafe, turn, use, run, fire, weapon)`` (``game.ticcmds``); with
+        several players, ``tic([cmd, ...])``: one a player, each a ``TicCmd``, a dict of
+        the keyword form or None (nothing pressed)."""
+        if len(args) == 1 and not keywords and isinstance(args[0], (list, tuple)):
+            cmds = self._commands(args[0])
+        elif len(args) == 1 and not keywords and isinstance(args[0], TicCmd):
+            cmds = [as_ticcmd(args[0])]
         else:
-            cmd = ticcmd(*args, **keywords)
+            cmds = [ticcmd(*args, **keywords)]
+        if len(cmds) != self.player_count:
+            raise ValueError(f"World.tic: {self.player_count} players need "
+                             f"{self.player_count} commands a tic, not {len(cmds)}")
         if self.exited:
             return
         play = self.play
-        play.g_ticker([cmd])
+        play.g_ticker(cmds)
         self._tics += 1
         if play.loads != self._loads:        # the level started again (after a death)
             self._adopt()
         else:
             self.state.sync()
-        p = play.players[0]
-        if p.message:
-            self.messages.append((self._tics, p.message))
-            p.message = None
+        for view, messages in zip(self.players, self.player_messages):
+            p = play.players[view.number]
+            if p.message:
+                messages.append((self._tics, p.message))
+                p.message = None
         if play.gameaction in (GA_COMPLETED, GA_VICTORY) or play.gamestate != GS_LEVEL:
             self.exited = "secret" if play.secret_exit_taken else "normal"
+
+    @staticmethod
+    def _commands(given) -> list:
+        return [as_ticcmd(c) if isinstance(c, TicCmd) else ticcmd(**(c or {}))
+                for c in given]
 
     def _say(self, text: str) -> None:
         self.messages.append((self._tics, text))

@@ -1,0 +1,88 @@
+"""Write ``wallbsp/data/arena.json``: a small arena for several players (the multi-agent
+environment's default map, ``wallbsp.envs.multiagent``), made of our own textures.
+
+A 1024 x 1024 room with four square pillars and a raised platform (one step, 24 units) in
+the middle holding a shotgun; a chaingun, shells, bullets, a medikit and a stimpack around
+it; player starts 1-4 in the corners facing the middle and eight deathmatch starts (the
+corners and the middle of each side).  Run from the repository:
+
+    python tools/make_arena.py
+"""
+from __future__ import annotations
+
+import json
+import sys
+from pathlib import Path
+
+OUT = Path(__file__).resolve().parent.parent / "wallbsp" / "data" / "arena.json"
+HALF, PILLAR, PILLAR_AT, PLATFORM, CORNER = 512, 48, 288, 96, 416
+FLOOR, CEILING, STEP, LIGHT = 0, 160, 24, 192
+SHOTGUN, CHAINGUN, SHELLS, CLIP, MEDIKIT, STIMPACK = 2001, 2002, 2008, 2007, 2012, 2011
+DEATHMATCH_START = 11
+
+
+def square(cx, cy, half):
+    """Corners counter-clockwise from the bottom left."""
+    return [(cx - half, cy - half), (cx + half, cy - half), (cx + half, cy + half),
+            (cx - half, cy + half)]
+
+
+def arena() -> dict:
+    vertices, walls = [], []
+
+    def loop(corners, front, back, sides):
+        """Walls round ``corners`` in order (a wall's front is on its right)."""
+        first = len(vertices)
+        vertices.extend([list(c) for c in corners])
+        n = len(corners)
+        for i in range(n):
+            walls.append({"v1": first + i, "v2": first + (i + 1) % n, "front": front,
+                          "back": back, "color": "#7a6a5a", **sides})
+
+    # the outer wall clockwise (the room on its right), the pillars counter-clockwise
+    loop(square(0, 0, HALF)[::-1], 0, None, {"front_side": {"middle": "BRICK1"}})
+    for sx in (-1, 1):
+        for sy in (-1, 1):
+            loop(square(sx * PILLAR_AT, sy * PILLAR_AT, PILLAR), 0, None,
+                 {"front_side": {"middle": "STONE2"}})
+    # the platform: two-sided walls, the room in front, a step of STEP1 below
+    loop(square(0, 0, PLATFORM), 0, 1, {"front_side": {"lower": "STEP1"}})
+    sectors = [{"floor": FLOOR, "ceiling": CEILING, "light": LIGHT, "floor_color": "#4b4137",
+                "ceiling_color": "#2e2e38", "floor_texture": "FLOOR3",
+                "ceiling_texture": "CEIL1"},
+               {"floor": FLOOR + STEP, "ceiling": CEILING, "light": LIGHT + 16,
+                "floor_color": "#5a5040", "ceiling_color": "#2e2e38",
+                "floor_texture": "FLOOR1", "ceiling_texture": "CEIL2"}]
+    things = []
+
+    def thing(x, y, angle, kind):
+        things.append({"x": x, "y": y, "angle": angle, "type": kind, "flags": 7})
+
+    corners = [(-CORNER, -CORNER, 45), (CORNER, CORNER, 225), (CORNER, -CORNER, 135),
+               (-CORNER, CORNER, 315)]
+    for number, (x, y, angle) in enumerate(corners, start=1):
+        thing(x, y, angle, number)
+    for x, y, angle in corners + [(0, -CORNER, 90), (0, CORNER, 270), (-CORNER, 0, 0),
+                                  (CORNER, 0, 180)]:
+        thing(x, y, angle, DEATHMATCH_START)
+    thing(0, 0, 90, SHOTGUN)
+    thing(0, PILLAR_AT, 90, CHAINGUN)
+    thing(PILLAR_AT, 0, 90, SHELLS)
+    thing(-PILLAR_AT, 0, 90, CLIP)
+    thing(0, -PILLAR_AT, 90, MEDIKIT)
+    thing(-PILLAR_AT, -PILLAR_AT + 2 * PILLAR + 32, 90, STIMPACK)
+    x, y, angle = corners[0]
+    return {"format": "wallbsp-level", "version": 2, "name": "Arena (several players)",
+            "vertices": vertices, "sectors": sectors, "walls": walls,
+            "start": {"x": x, "y": y, "angle": angle}, "resources": ["textures"],
+            "things": things}
+
+
+def main(argv=None) -> int:
+    OUT.write_text(json.dumps(arena(), indent=1) + "\n")
+    print(OUT)
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main(sys.argv[1:]))
