@@ -172,7 +172,8 @@ def test_painter_toggle_renders_the_same_picture(walk):
 def test_resolution_keys_cycle_the_internal_size(walk):
     press(pygame.K_RIGHTBRACKET)
     frames(walk, 1)
-    assert walk.frame.color.shape == (200, 320, 3)
+    assert walk.picture.shape == (200, 320, 3)
+    assert walk.frame.color.shape == (168, 320, 3)            # the view above the status bar
     press(pygame.K_LEFTBRACKET)
     press(pygame.K_LEFTBRACKET)
     frames(walk, 1)
@@ -233,17 +234,26 @@ def test_headless_run_returns_the_summary(tree):
                         r"order=front_to_back", str(summary))
 
 
-def test_screenshot_is_the_last_frame_at_the_internal_size(tree, tmp_path):
+def test_screenshot_is_the_last_picture_at_the_internal_size(tree, tmp_path):
+    """The picture as shown: the view above DOOM's status bar, the weapon over it, each
+    as a world and Hud ticked the same way draw them."""
+    from wallbsp.app.hudframe import hud_frame
+    from wallbsp.screen.hud import Hud, view_size
     path = tmp_path / "last.png"
-    app.run_walkthrough(tree, frames=3, turn=10.0, size=(160, 100), screenshot=path)
+    app.run_walkthrough(tree, frames=3, turn=10.0, size=(160, 100), screenshot=path,
+                        sound=False, music=False)
     picture = load_png(path)
-    start = tree.level.start
-    world = World(tree)
-    world.tic(turn=10.0)
-    world.tic(turn=10.0)
+    world, shown = World(tree), Hud()
+    for _ in range(2):
+        world.tic(turn=10.0)
+        shown.tick(world.play)
     camera = world.camera()                       # the frame before the third tic
     assert picture.shape == (100, 160, 3)
-    assert np.array_equal(picture, render(tree, camera, 160, 100).color)
+    expected, view = hud_frame(world, camera, 160, 100, hud=shown)
+    assert np.array_equal(picture, expected)
+    assert np.array_equal(picture[:view_size(160, 100)[1]][:20],
+                          render(tree, camera, *view_size(160, 100)).color[:20])
+    assert not np.array_equal(picture[-16:], expected[-16:] * 0)      # a status bar is there
 
 
 def test_without_a_display_headless_runs_use_the_dummy_driver(tree, monkeypatch):

@@ -16,6 +16,7 @@ from wallbsp.game.maporder import following_maps, next_map
 from wallbsp.game.ticcmds import ticcmd
 from wallbsp.game.world import TICRATE
 from wallbsp.level.model import Side
+from wallbsp.screen.hud import view_size
 
 from game_levels import corridor, north_wall, room   # noqa: E402
 
@@ -87,7 +88,7 @@ def test_the_view_is_blended_between_the_last_two_tics(opened):
     tic = walk.world.tic_count
     app.step_frame(walk, 0.5 * DT)                  # half a tic: no tic, the view in between
     assert walk.world.tic_count == tic
-    drawn = render(walk.world, app.view_camera(walk, 0.5), *walk.size).color
+    drawn = render(walk.world, app.view_camera(walk, 0.5), *view_size(*walk.size)).color
     assert np.array_equal(walk.frame.color, drawn)
     assert app.view_camera(walk, 0.5).x != walk.world.camera().x      # still moving
 
@@ -179,47 +180,60 @@ def things_tree():
         Thing(230, 100, 0, BLUE_CARD, 7), Thing(24, 104, 0, BARREL, 7)]))
 
 
-def colour_near(walk, x, y, colour):
-    """Whether ``colour`` is on the window within 3 pixels of the map point (x, y)."""
-    from wallbsp.app.mapview import MapView, level_bounds
-    view = MapView.centred(level_bounds(walk.tree), walk.display.get_size())
+def colour_near(walk, x, y, colour, reach=3):
+    """Whether ``colour`` is on the window within ``reach`` pixels of the map point (x, y)
+    (the automap fills the window above the status bar)."""
+    from wallbsp.app.automap import MapView, level_bounds
+    view = MapView.centred(level_bounds(walk.tree), hud.map_area(walk))
     px, py = (round(v) for v in view(x, y))
-    patch = pygame.surfarray.array3d(walk.display)[px - 3:px + 4, py - 3:py + 4]
+    patch = pygame.surfarray.array3d(walk.display)[px - reach:px + reach + 1,
+                                                   py - reach:py + reach + 1]
     return bool((patch == colour).all(axis=-1).any())
 
 
-def test_the_automap_shows_things_by_kind_and_t_toggles_them(opened):
-    from wallbsp.app.mapview import THING_KINDS
+def thing_reach(walk):
+    """Pixels from a thing's centre to its triangle's farthest corner, and a little."""
+    from wallbsp.app.automap import THING_SIZE, MapView, level_bounds
+    view = MapView.centred(level_bounds(walk.tree), hud.map_area(walk))
+    return round(THING_SIZE * view.scale) + 2
+
+
+def test_the_automap_shows_things_as_doom_does_and_t_toggles_them(opened):
+    from wallbsp.app.automap import COLOURS
     walk = opened(things_tree())
     walk.display = pygame.display.set_mode((640, 400))
-    shown = {(200, 24): "monsters", (160, 100): "pickups", (230, 100): "keys",
-             (24, 104): "decorations"}
+    shown = [(200, 24), (160, 100), (230, 100), (24, 104)]   # monster, medikit, key, barrel
     pygame.event.post(pygame.event.Event(pygame.KEYDOWN, key=pygame.K_TAB, mod=0))
     frames(walk, 1)
     assert walk.show_map and walk.show_things
-    for (x, y), kind in shown.items():
-        assert colour_near(walk, x, y, THING_KINDS[kind]), kind
+    reach = thing_reach(walk)
+    for x, y in shown:
+        assert colour_near(walk, x, y, COLOURS["thing"], reach), (x, y)
     pygame.event.post(pygame.event.Event(pygame.KEYDOWN, key=pygame.K_t, mod=0))
     frames(walk, 1)
     assert not walk.show_things and "off" in walk.message
-    for (x, y), kind in shown.items():
-        assert not colour_near(walk, x, y, THING_KINDS[kind]), kind
+    for x, y in shown:
+        assert not colour_near(walk, x, y, COLOURS["thing"], reach), (x, y)
     assert "T things" in " ".join(hud.HELP)
 
 
 def test_a_thing_picked_up_leaves_the_automap(opened):
-    from wallbsp.app.mapview import THING_KINDS
+    from wallbsp.app.automap import COLOURS
     walk = opened(things_tree())
     walk.display = pygame.display.set_mode((640, 400))
     walk.show_map = True
     set_health(walk.world, 50)
-    walk.world.place_player(160, 70, 90)
+    walk.world.place_player(160, 60, 90)
     frames(walk, 1)
-    assert colour_near(walk, 160, 100, THING_KINDS["pickups"])
+    reach = thing_reach(walk)
+    assert colour_near(walk, 160, 100, COLOURS["thing"], reach)
     walk.held = {pygame.K_w}
-    frames(walk, 6)
+    frames(walk, 8)
     assert walk.world.inventory.health == 75 and "medikit" in walk.message
-    assert not colour_near(walk, 160, 100, THING_KINDS["pickups"])
+    walk.held = set()
+    walk.world.place_player(100, 40, 90)           # the player's arrow out of the way
+    frames(walk, 1)
+    assert not colour_near(walk, 160, 100, COLOURS["thing"], reach)
 
 
 def test_the_readout_shows_health_armour_ammo_and_keys(opened):
@@ -240,12 +254,12 @@ def test_textures_by_default_and_x_toggles_flat_colours(opened):
     walk = opened(compile_level(load_level(files("wallbsp") / "data" / "textured.json")))
     frames(walk, 1)
     camera = walk.world.camera(walk.fov)
-    textured = render(walk.world, camera, *walk.size).color
+    textured = render(walk.world, camera, *view_size(*walk.size)).color
     assert walk.textures and np.array_equal(walk.frame.color, textured)
     assert hud.readout_lines(walk)[0].endswith("textures")
     pygame.event.post(pygame.event.Event(pygame.KEYDOWN, key=pygame.K_x, mod=0))
     frames(walk, 1)
-    flat = render(walk.world, camera, *walk.size, textures=False).color
+    flat = render(walk.world, camera, *view_size(*walk.size), textures=False).color
     assert not walk.textures and np.array_equal(walk.frame.color, flat)
     assert not np.array_equal(flat, textured)
     assert walk.message == "view: flat colours"

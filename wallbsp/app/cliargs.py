@@ -134,6 +134,10 @@ def build_parser(commands) -> argparse.ArgumentParser:
                    help="write the inputs of every tic on the first level to this demo (JSON)")
     p.add_argument("--skill", type=_bounded(1, 5, _integer, "a whole number"), default=3,
                    help="DOOM's skill, 1-5: which of the level's things are there (default 3)")
+    p.add_argument("--nosound", action="store_true", help="no sound effects")
+    p.add_argument("--nomusic", action="store_true", help="no music")
+    p.add_argument("--keys", metavar="FILE", help="key bindings ('action = key, key' lines; "
+                   "default ~/.config/wallbsp/keys.ini when it exists)")
     _finish(p, commands["walk"])
 
     p = sub.add_parser("play", help="replay a demo headless and print the final state")

@@ -1,5 +1,7 @@
-"""The walkthrough's heads-up display, drawn over the view: the automap (``mapview``'s
-transform and layers), the readout, the help line and the last message.
+"""The walkthrough's overlays, drawn over the scaled picture in the window: the automap
+(``automap``: DOOM's colours, over the view above the status bar), the readout and the help
+line; and ``say``, which puts a line up as DOOM's message (``screen.Hud``, drawn into the
+picture with the game's font) and keeps it as ``walk.message``.
 
 Functions of the walkthrough's state (``app.Walkthrough``) and its open window; the app
 calls ``draw_overlays`` once a frame.  No physics, no events.
@@ -8,37 +10,38 @@ from __future__ import annotations
 
 import time
 
-from wallbsp.app.mapview import (THING_KINDS, MapView, automap_layer, draw_marker, draw_things,
-    level_bounds, partition_pieces)
-from wallbsp.sim.queries import PLAYER_RADIUS
+from wallbsp.app.automap import (MapView, automap_layer, draw_arrow, draw_things,
+    level_bounds, line_kinds, partition_pieces)
+from wallbsp.screen.hud import view_size
 
 __all__ = ["HELP", "MESSAGE_SECONDS", "draw_overlays", "readout_lines", "inventory_lines",
-           "texture_mode", "draw_automap", "say"]
+           "texture_mode", "draw_automap", "say", "map_area"]
 
-HELP = ("WASD/arrows move   Left/Right or mouse (M grab) turn   Shift run   E/Space use   "
-        "Ctrl/click fire   1-7 weapons   Esc quit",
+HELP = ("WASD/arrows move   Left/Right or mouse (M grab) turn   Shift run   Alt strafe   "
+        "E/Space use   Ctrl/click fire   1-7 weapons   Pause   Esc quit",
         "Tab map  O overlay  L lines  T things  X textures  R stats  P painter  "
-        "[ ] resolution  F fullscreen  K shot  H help")
+        "[ ] resolution  - = status bar  F fullscreen  K shot  H help")
 TEXT, SHADOW = (235, 235, 235), (0, 0, 0)
 MESSAGE_SECONDS = 2.0
 
 
 def say(walk, text, seconds=MESSAGE_SECONDS):
-    """Show ``text`` as the walkthrough's message for ``seconds``."""
+    """Put ``text`` up as the player's message (the Hud's, for DOOM's four seconds of
+    tics); ``walk.message`` keeps it for ``seconds`` of wall time."""
     walk.message, walk.message_until = text, time.perf_counter() + seconds
+    if walk.hud is not None:
+        walk.hud.say(text)
 
 
 def draw_overlays(walk):
-    """Whatever the walkthrough's toggles ask for, over the view in the window."""
+    """Whatever the walkthrough's toggles ask for, over the picture in the window."""
     if walk.show_map:
         draw_automap(walk)
     if walk.show_readout:
         _draw_text_block(walk, readout_lines(walk), (8, 8))
     if walk.show_help:
-        height = walk.display.get_height()
-        _draw_text_block(walk, HELP, (8, height - 8 - len(HELP) * walk.font.get_linesize()))
-    if walk.message and time.perf_counter() < walk.message_until:
-        _draw_text_block(walk, [walk.message], (walk.display.get_width() // 2 - 100, 8))
+        bottom = map_area(walk)[1]
+        _draw_text_block(walk, HELP, (8, bottom - 8 - len(HELP) * walk.font.get_linesize()))
 
 
 def readout_lines(walk):
@@ -86,35 +89,37 @@ def _draw_text_block(walk, lines, topleft):
 
 # -- the automap ------------------------------------------------------------------------------
 
+def map_area(walk):
+    """``(width, height)`` of the window above the status bar (all of it without one)."""
+    width, height = walk.display.get_size()
+    w, h = walk.size
+    return width, height * view_size(w, h, walk.statusbar)[1] // h
+
+
 def draw_automap(walk):
-    """The static layer (cached per window size and mode), the things as they are now
-    (toggled by ``show_things``, with their colour key), then the player and view cone."""
-    size = walk.display.get_size()
+    """The lines in DOOM's colours (redrawn when a height changes, else cached per window
+    size and mode), the things as they are now (toggled by ``show_things``), then the
+    player's arrow; over the window above the status bar."""
+    size = map_area(walk)
     view = MapView.centred(level_bounds(walk.tree), size)
-    key = (size, walk.map_overlay, walk.show_partitions)
+    state = walk.world.state
+    key = (size, walk.map_overlay, walk.show_partitions, id(state), state.version)
     if walk.map_cache[0] != key:
         walk.map_cache = (key, _map_layer(walk, size, view))
     walk.display.blit(walk.map_cache[1], (0, 0))
     if walk.show_things:
         draw_things(walk.display, view, walk.world.things)
-        _draw_thing_key(walk)
     player = walk.player
-    draw_marker(walk.display, view, (player.x, player.y), PLAYER_RADIUS, player.angle, walk.fov)
-
-
-def _draw_thing_key(walk):
-    """The things' colours, one word each, along the map's top right."""
-    x = walk.display.get_width() - 8
-    for kind, colour in reversed(THING_KINDS.items()):
-        word = walk.font.render(kind, True, colour)
-        x -= word.get_width()
-        walk.display.blit(word, (x, 8))
-        x -= 10
+    draw_arrow(walk.display, view, player.x, player.y, player.angle)
 
 
 def _map_layer(walk, size, view):
-    """The automap's static layer; partition lines computed on first use and kept."""
+    """The automap's lines now; partition lines computed on first use and kept."""
     if walk.show_partitions and walk.partitions is None:
         walk.partitions = partition_pieces(walk.tree, level_bounds(walk.tree))
-    return automap_layer(walk.tree, view, size, walk.display, walk.map_overlay,
+    state, lines = walk.world.state, walk.world.play.lines
+    flags = [line.flags for line in lines] if len(lines) == len(walk.tree.level.walls) \
+        else None
+    kinds = line_kinds(walk.tree.level, state.floor, state.ceiling, flags)
+    return automap_layer(walk.tree, kinds, view, size, walk.display, walk.map_overlay,
                          walk.partitions if walk.show_partitions else None)

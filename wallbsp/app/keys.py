@@ -1,5 +1,6 @@
 """The walkthrough's held keys as one DOOM tic command a tic (``G_BuildTiccmd``'s part that
-a single player needs): moves, DOOM's key turning, the mouse, the buttons."""
+a single player needs): moves, DOOM's key turning, the strafe key (turning keys strafe
+while it is held), the mouse, the buttons."""
 from __future__ import annotations
 
 from wallbsp.game.ticcmds import ticcmd
@@ -26,12 +27,14 @@ def tic_command(walk, keys):
     running = any(k in held for k in keys.run)
     turning = _axis(held, keys.turn_left, keys.turn_right)
     walk.turn_tics = walk.turn_tics + 1 if turning else 0
+    strafe = _axis(held, keys.strafe_right, keys.strafe_left)
+    if any(k in held for k in keys.strafe):       # DOOM's strafe key: turning keys strafe
+        strafe, turning = max(-1, min(1, strafe - turning)), 0
     speed = TURN_SLOW if walk.turn_tics <= SLOW_TURN_TICS else (TURN_RUN if running else TURN_WALK)
     turn = max(-360.0, min(360.0, turning * speed - walk.mouse_dx * MOUSE_TURN))
     using = walk.use_tapped or any(k in held for k in keys.use)
     firing = walk.fire_tapped or any(k in held for k in keys.fire)
     weapon = walk.weapon_tapped
     walk.mouse_dx, walk.use_tapped, walk.fire_tapped, walk.weapon_tapped = 0.0, False, False, None
-    return ticcmd(_axis(held, keys.forward, keys.back),
-                  _axis(held, keys.strafe_right, keys.strafe_left), turn, using, running,
+    return ticcmd(_axis(held, keys.forward, keys.back), strafe, turn, using, running,
                   firing, weapon)

@@ -3,7 +3,8 @@
 One transform, ``MapView`` (map units to pixels, y up in the map and down in the picture),
 serves both pictures: the ``draw`` command's PNG of the partition (walls, every partition
 line clipped to the convex cell it splits, the segs coloured by the depth of their node, a
-legend) and the walkthrough's automap.  Drawn with pygame on off-screen surfaces, imported
+legend) and the environments' automap (the walkthrough's, in DOOM's colours, is
+``automap``'s).  Drawn with pygame on off-screen surfaces, imported
 when a picture is drawn; no window is opened here.
 """
 from __future__ import annotations
@@ -17,17 +18,13 @@ from wallbsp.image import save_png
 
 __all__ = ["MapView", "level_bounds", "node_depths", "depth_color", "clip_polygon",
            "partition_pieces", "draw_segs_by_depth", "draw_partition", "automap_layer",
-           "draw_marker", "THING_KINDS", "thing_kind", "draw_things"]
+           "draw_marker"]
 
 BACKGROUND = (16, 16, 20)
 WALL = (70, 70, 78)
 PARTITION = (48, 84, 120)
 TEXT = (230, 230, 230)
 MAP_BACKGROUND, MARKER = (12, 12, 16), (255, 255, 255)
-# the automap's things, by kind (``thing_kind``), in the order of its colour key
-THING_KINDS = {"pickups": (90, 220, 90), "keys": (255, 215, 40), "monsters": (235, 70, 60),
-               "decorations": (150, 150, 165)}
-THING_MIN_PIXELS = 3     # a thing's triangle is never smaller than this (half its length)
 PICTURE_MARGIN = 20      # pixels around the map in the draw command's picture
 LEGEND_HEIGHT = 50       # pixels above the map for the legend
 
@@ -222,37 +219,3 @@ def draw_marker(surface, view, centre, radius, angle, fov):
         a = math.radians(angle + side * fov / 2)
         pygame.draw.line(surface, MARKER, (cx, cy), (cx + reach * math.cos(a),
                                                       cy - reach * math.sin(a)), 1)
-
-
-def thing_kind(info) -> str:
-    """The automap's kind of a thing type (a ``thingtypes.ThingInfo``, None: unknown): one
-    of ``THING_KINDS``."""
-    if info is not None and info.pickup is not None:
-        return "keys" if info.pickup.kind == "key" else "pickups"
-    if info is not None and info.monster:
-        return "monsters"
-    return "decorations"
-
-
-def draw_things(surface, view, things) -> int:
-    """Every alive, drawn thing of ``things`` (``wallbsp.sim.things.Things``) as a triangle
-    pointing the way it faces (DOOM's automap things), its radius long (at least
-    ``THING_MIN_PIXELS``), coloured by kind.  Returns how many were drawn."""
-    import pygame
-    shown = np.flatnonzero(things.alive & things.drawn)
-    if not shown.size:
-        return 0
-    types, first = np.unique(things.type[shown], return_index=True)
-    colour = {t: THING_KINDS[thing_kind(things.info(shown[i]))]
-              for t, i in zip(types.tolist(), first.tolist())}
-    px = view.ox + (things.x[shown] - view.x0) * view.scale
-    py = view.oy + (view.y1 - things.y[shown]) * view.scale
-    size = np.maximum(THING_MIN_PIXELS, things.radius[shown] * view.scale)
-    corners = []
-    for turn in (0.0, 140.0, -140.0):          # the tip, then the two back corners
-        a = np.radians(things.angle[shown] + turn)
-        corners.append((px + size * np.cos(a), py - size * np.sin(a)))
-    points = np.stack([np.stack(c, axis=1) for c in corners], axis=1).tolist()
-    for thing_type, triangle in zip(things.type[shown].tolist(), points):
-        pygame.draw.polygon(surface, colour[thing_type], triangle)
-    return len(points)

@@ -1,23 +1,27 @@
-"""The pygame walkthrough (SPEC §6 ``wallbsp walk``): the window around the game.
+"""The pygame walkthrough (SPEC §6 ``wallbsp walk``): the game a person plays.
 
 The only module that opens pygame's display, and only when a walkthrough starts: importing
-it loads no pygame.  It initialises the display and fonts only, never audio.  What happens
-is the game's ``World`` (pure code, tic by tic: the player, doors, lifts, switches, exits);
-this module turns events into its inputs and draws the view and the HUD.  One frame:
-``handle_events`` -> ``run_tics`` (the tics due, 35 a second, each with the inputs held
-now) -> ``draw_frame`` (render at the internal resolution the view between the last two
-tics, by the part of the next tic already elapsed, so motion is smooth at any frame rate;
-scale into the window; ``hud.draw_overlays``) -> flip.  No ``clock.tick`` unless a frame
-cap (``max_fps``) is asked for.  When the level is left the walkthrough says so and starts
-it again, or goes on to the tree that ``next_level(exit)`` gives (a WAD's next map).
+it loads no pygame.  What happens is the game's ``World`` (DOOM's play simulation, tic by
+tic); this module runs it and puts the pieces around it together.  One frame:
+``controls.handle_events`` (a key goes to ``walk.overlay`` first, when there is one) ->
+``run_tics`` (the tics due, 35 a second, each with the inputs held now; none while paused,
+or while an overlay with ``pauses`` is up; after each tic the ``screen.Hud`` ticks, the
+world's messages go to it, the sound system hears the listener move) -> ``gamescreen``'s
+``draw_frame`` (the view between the last two tics above DOOM's status bar, the weapon,
+message and flashes over it, scaled into the window; then the automap, readout and help)
+-> flip.  No ``clock.tick`` unless a frame cap (``max_fps``) is asked for.  When the level
+is left, ``leave_level`` says so and starts it again, or goes on to the tree that
+``next_level(exit)`` gives (a WAD's next map).
 
-Keys: W/S or Up/Down forward/back, A/D strafe, Left/Right or the mouse (grab with M) to turn
-(DOOM's key turning: slow for ``SLOW_TURN_TICS`` tics, then ``TURN_WALK``/``TURN_RUN`` a
-tic), Shift run, E or Space use, Ctrl or the left mouse button fire, 1-7 weapons (DOOM's
-number keys: a second 1 or 3 picks the chainsaw or the super shotgun), Tab automap, O map overlay/full, L partition lines on the
-map, T things on the map, X textures / flat colours (textures by default), R or F1 readout,
-P front-to-back / painter's, [ ] internal resolution, F or F11 fullscreen, K or F12
-screenshot (``wallbsp-shot-NNN.png`` here), H help line, Esc quit.
+Keys (``config``, DOOM's by default; a key file changes them): W/S or Up/Down forward/back,
+A/D strafe, Left/Right or the mouse (grab with M) to turn (DOOM's key turning: slow for
+``SLOW_TURN_TICS`` tics, then ``TURN_WALK``/``TURN_RUN`` a tic), Alt with Left/Right
+strafes, Shift run, E or Space use, Ctrl or the left mouse button fire, 1-7 weapons (a
+second 1 or 3 picks the chainsaw or the super shotgun), Pause, Tab automap, O map
+overlay/full, L partition lines, T things on the map, X textures / flat colours, R or F1
+readout, P front-to-back / painter's, [ ] internal resolution, - = status bar on / off
+(DOOM's screen size), F or F11 fullscreen, K or F12 screenshot (the picture as shown,
+``wallbsp-shot-NNN.png`` here), H help line, Esc quit.
 
 Headless (``frames=N``): N frames with no input, each followed by one tic turning ``turn``
 degrees, under SDL's dummy driver when there is no window system.  An interactive
@@ -30,32 +34,32 @@ the first level is recorded into it.  Each tic's input is one DOOM tic command
 """
 from __future__ import annotations
 
-import functools
 import os
 import statistics
 import sys
 import threading
 import time
 from dataclasses import dataclass, field
-from types import SimpleNamespace
 
 from wallbsp.camera import Camera
 from wallbsp.game.playsim.structs import BT_USE
 from wallbsp.game.ticcmds import ticcmd
 from wallbsp.game.world import TICRATE, World
-from wallbsp.app.hud import draw_overlays, say, texture_mode
+from wallbsp.app.audio import close_sound, hear, open_sound, tic_sound
+from wallbsp.app.controls import bindings, handle_events  # noqa: F401 - the app's names
+from wallbsp.app.gamescreen import NO_BLEND, draw_frame, view_camera  # noqa: F401
+from wallbsp.app.hud import say
 from wallbsp.app.keys import (MOUSE_FIRE, MOUSE_TURN, SLOW_TURN_TICS, TURN_RUN,  # noqa: F401
     TURN_SLOW, TURN_WALK, tic_command)
 from wallbsp.image import save_png
 from wallbsp.render import render
-from wallbsp.app.window import (RESOLUTIONS, NoDisplayError, check_display, close_display,
-    next_resolution, no_window_system, on_resize, open_display, save_screenshot, show_caption,
-    toggle_fullscreen, toggle_mouse_grab)
+from wallbsp.screen.hud import Hud
+from wallbsp.app.window import (RESOLUTIONS, NoDisplayError, check_display,  # noqa: F401
+    close_display, no_window_system, open_display, show_caption)
 
 MAX_FRAME_TIME = 0.1      # seconds: a hitch (window drag, swap) runs no more tics than this
 EXIT_SECONDS = 2.0        # the exit message stays this long on the next level
-NO_BLEND = 64.0           # map units: a jump this long (a teleport) is not interpolated
-
+GS_LEVEL = 0              # DOOM's gamestate of a level in play: the Hud ticks then
 
 
 class Summary(dict):
@@ -75,6 +79,13 @@ class Walkthrough:
     order: str = "front_to_back"
     fov: float = 90.0
     running: bool = True
+    paused: bool = False             # DOOM's pause: no tics
+    statusbar: bool = True           # the view above DOOM's status bar, else the whole screen
+    hud: Hud = None                  # status bar, weapon, messages, flashes (screen.Hud)
+    sound: object = None             # a sound.SoundSystem hearing the world, or None
+    overlay: object = None           # a menu over the game: takes keys first (controls)
+    key_names: dict = None           # action -> SDL key names (config); None: DOOM's
+    keys: object = None              # the bindings as key codes (controls.bindings)
     held: set = field(default_factory=set)     # keys down, from KEYDOWN/KEYUP events
     mouse_dx: float = 0.0
     pending: float = 0.0             # seconds of game time not yet run as tics
@@ -96,15 +107,21 @@ class Walkthrough:
     show_readout: bool = False
     mouse_grab: bool = False
     fullscreen: bool = False
-    frame: object = None             # the last rendered Frame
+    frame: object = None             # the last rendered Frame (the 3-D view)
+    screen: object = None            # the picture, column-major (width, height, 3)
+    picture: object = None           # the same memory as rows (height, width, 3)
     frame_ms: float = 0.0            # smoothed measured frame time, for the readout
     message: str = ""
     message_until: float = 0.0
     display: object = None
     surface: object = None           # cached internal-resolution surface
     font: object = None
-    map_cache: tuple = (None, None)  # (key, surface) of the automap's static layer
+    map_cache: tuple = (None, None)  # (key, surface) of the automap's lines
     partitions: list = None          # partition_pieces, computed on first use
+
+    def __post_init__(self):
+        if self.hud is None:
+            self.hud = Hud(statusbar=self.statusbar)
 
     @classmethod
     def at_start(cls, tree, size=(320, 200), window=(960, 600), skill=3, **options):
@@ -123,24 +140,29 @@ class Walkthrough:
 
 def run_walkthrough(tree, *, size=(320, 200), window=(960, 600), frames=None, turn=0.0,
                     screenshot=None, max_fps=None, order="front_to_back", fov=90.0,
-                    demo=None, next_level=None, skill=3) -> Summary:
+                    demo=None, next_level=None, skill=3, sound=True, music=True,
+                    keys=None, statusbar=True) -> Summary:
     """Walk ``tree`` in a window; with ``frames=N`` render N frames headless and return the
-    summary.  ``screenshot``: save the last frame (internal resolution) as a PNG.
-    ``demo``: record the tics into it; ``next_level(exit)``: the tree to go on to;
-    ``skill``: DOOM's skill 1-5 (which things are there; a demo records it)."""
+    summary.  ``screenshot``: save the last picture (internal resolution, as shown) as a
+    PNG.  ``demo``: record the tics into it; ``next_level(exit)``: the tree to go on to;
+    ``skill``: DOOM's skill 1-5 (which things are there; a demo records it); ``sound``,
+    ``music``: DOOM's sound effects and music; ``keys``: action -> key names
+    (``config.read_bindings``); ``statusbar``: the view above DOOM's status bar."""
     if frames is None:
         check_display()
     elif no_window_system():
         os.environ["SDL_VIDEODRIVER"] = "dummy"
     walk = Walkthrough.at_start(tree, size, window, skill, order=order, fov=fov, demo=demo,
-                                next_level=next_level)
+                                next_level=next_level, key_names=keys, statusbar=statusbar)
     prepare_renderer(walk)
     open_display(walk)
     try:
+        open_sound(walk, sound, music)
         times = run_frames(walk, frames, turn, max_fps)
-        if screenshot is not None and walk.frame is not None:
-            save_png(screenshot, walk.frame.color)
+        if screenshot is not None and walk.picture is not None:
+            save_png(screenshot, walk.picture.copy())
     finally:
+        close_sound(walk)
         close_display(walk)
     return _summary(walk, times)
 
@@ -211,107 +233,25 @@ def _summary(walk, times) -> Summary:
                    order=walk.order, line=line)
 
 
-# -- input ----------------------------------------------------------------------------------------
-
-@functools.cache
-def bindings():
-    """The key bindings (pygame key codes, read when first needed)."""
-    import pygame
-    return SimpleNamespace(
-        forward=(pygame.K_w, pygame.K_UP), back=(pygame.K_s, pygame.K_DOWN),
-        strafe_left=(pygame.K_a,), strafe_right=(pygame.K_d,),
-        turn_left=(pygame.K_LEFT,), turn_right=(pygame.K_RIGHT,),
-        run=(pygame.K_LSHIFT, pygame.K_RSHIFT), use=(pygame.K_e, pygame.K_SPACE),
-        fire=(pygame.K_LCTRL, pygame.K_RCTRL, MOUSE_FIRE),
-        weapons={getattr(pygame, f"K_{n}"): n for n in range(1, 8)},
-        actions={
-            pygame.K_ESCAPE: _quit,
-            pygame.K_TAB: _toggle("show_map"),
-            pygame.K_o: _toggle("map_overlay"),
-            pygame.K_l: _toggle("show_partitions"),
-            pygame.K_t: _toggle_things,
-            pygame.K_x: _toggle_textures,
-            pygame.K_r: _toggle("show_readout"), pygame.K_F1: _toggle("show_readout"),
-            pygame.K_h: _toggle("show_help"),
-            pygame.K_p: _toggle_order,
-            pygame.K_m: toggle_mouse_grab,
-            pygame.K_f: toggle_fullscreen, pygame.K_F11: toggle_fullscreen,
-            pygame.K_k: save_screenshot, pygame.K_F12: save_screenshot,
-            pygame.K_LEFTBRACKET: lambda walk: next_resolution(walk, -1),
-            pygame.K_RIGHTBRACKET: lambda walk: next_resolution(walk, 1),
-        })
-
-
-def handle_events(walk, keys=True):
-    """Drain the event queue: quit, resize, and (unless ``keys`` is False) keys and mouse."""
-    import pygame
-    for event in pygame.event.get():
-        if event.type == pygame.QUIT:
-            walk.running = False
-        elif event.type in (pygame.VIDEORESIZE, pygame.WINDOWSIZECHANGED):
-            on_resize(walk)
-        elif not keys:
-            continue
-        elif event.type == pygame.KEYDOWN:
-            walk.held.add(event.key)
-            walk.use_tapped |= event.key in bindings().use
-            walk.fire_tapped |= event.key in bindings().fire
-            walk.weapon_tapped = bindings().weapons.get(event.key, walk.weapon_tapped)
-            handle_key(walk, event.key)
-        elif event.type == pygame.KEYUP:
-            walk.held.discard(event.key)
-        elif event.type == pygame.MOUSEBUTTONDOWN and event.button == 1:
-            walk.held.add(MOUSE_FIRE)
-            walk.fire_tapped = True
-        elif event.type == pygame.MOUSEBUTTONUP and event.button == 1:
-            walk.held.discard(MOUSE_FIRE)
-        elif event.type == pygame.MOUSEMOTION and walk.mouse_grab:
-            walk.mouse_dx += event.rel[0]
-        elif event.type == pygame.WINDOWFOCUSLOST:
-            walk.held.clear()          # the key-ups go to another window
-
-
-def handle_key(walk, key):
-    """The one-shot keys (toggles and commands); held keys are read in update_player."""
-    action = bindings().actions.get(key)
-    if action is not None:
-        action(walk)
-
-
-def _quit(walk):
-    walk.running = False
-
-
-def _toggle(name):
-    def toggle(walk):
-        setattr(walk, name, not getattr(walk, name))
-    return toggle
-
-
-def _toggle_things(walk):
-    walk.show_things = not walk.show_things
-    say(walk, f"things on the map: {'on' if walk.show_things else 'off'}")
-
-
-def _toggle_textures(walk):
-    walk.textures = not walk.textures
-    say(walk, f"view: {texture_mode(walk)}")
-
-
-def _toggle_order(walk):
-    walk.order = "back_to_front" if walk.order == "front_to_back" else "front_to_back"
-    say(walk, f"order: {walk.order}")
-
-
 # -- the world: held keys -> one tic's inputs ---------------------------------------------
 
 def tic_inputs(walk):
     """The tic command of the next tic (``keys.tic_command``)."""
-    return tic_command(walk, bindings())
+    return tic_command(walk, bindings(walk))
+
+
+def ticking(walk) -> bool:
+    """Whether tics run: not paused, and no overlay up that pauses the game (DOOM's
+    single player stops the level while the menu is up)."""
+    return not walk.paused and not (walk.overlay is not None
+                                    and getattr(walk.overlay, "pauses", True))
 
 
 def run_tics(walk, dt):
-    """Run the tics that ``dt`` more seconds make due (TICRATE a second)."""
+    """Run the tics that ``dt`` more seconds make due (TICRATE a second); none while the
+    game stands still (``ticking``), and the part of a tic already run stays for after."""
+    if not ticking(walk):
+        return
     walk.pending += dt
     tics = int(walk.pending * TICRATE + 1e-9)     # a hair: k/35 s is k tics despite rounding
     walk.pending -= tics / TICRATE
@@ -321,19 +261,15 @@ def run_tics(walk, dt):
 
 def run_tic(walk, cmd):
     """One tic of the world with the tic command ``cmd`` (recorded while on the first
-    level); its messages; an exit."""
+    level); the Hud's tic, the sound's, the messages; an exit or a restart."""
     walk.previous = walk.world.camera(walk.fov)
     walk.world.tic(cmd)
     if walk.demo is not None:
         walk.demo.record(cmd)
-    messages = walk.world.messages
-    dead = walk.world.dead
-    if messages and messages[-1][0] >= walk.seen_message:
-        say(walk, messages[-1][1] + (" Press E to start again." if dead else ""))
-        walk.seen_message = messages[-1][0] + 1
-    elif dead and not walk.was_dead:
-        say(walk, "You died. Press E to start again.")
-    walk.was_dead = dead
+    if walk.world.play.gamestate == GS_LEVEL:       # G_Ticker: ST_Ticker, HU_Ticker
+        walk.hud.tick(walk.world.play)
+    tic_sound(walk)
+    _show_messages(walk)
     if walk.world.exited:
         leave_level(walk)
     elif walk.world.dead and cmd.buttons & BT_USE:
@@ -341,8 +277,20 @@ def run_tic(walk, cmd):
         start_level(walk, walk.world.tree, "The level again")
 
 
+def _show_messages(walk):
+    """The world's newest message (DOOM's pickups, locked doors), or that the player died."""
+    messages, dead = walk.world.messages, walk.world.dead
+    if messages and messages[-1][0] >= walk.seen_message:
+        say(walk, messages[-1][1] + (" Press E to start again." if dead else ""))
+        walk.seen_message = messages[-1][0] + 1
+    elif dead and not walk.was_dead:
+        say(walk, "You died. Press E to start again.")
+    walk.was_dead = dead
+
+
 def leave_level(walk):
-    """The level was left: say so, then the next level (``next_level``) or this one again."""
+    """The level was left: say so, then the next level (``next_level``) or this one again.
+    (The one place a level's end is handled: an intermission goes here.)"""
     kind = walk.world.exited
     following = walk.next_level(kind) if walk.next_level is not None else None
     tree = following if following is not None else walk.world.tree
@@ -352,44 +300,12 @@ def leave_level(walk):
 
 def start_level(walk, tree, text):
     """A fresh World of ``tree`` at the same skill (the recording stops: a demo is one
-    level from its start), and ``text`` said."""
+    level from its start), heard by the sound, and ``text`` said."""
     skill = walk.world.skill
     walk.world, walk.previous, walk.demo, walk.seen_message = World(tree, skill), None, None, 0
     walk.was_dead = False
     walk.map_cache, walk.partitions = (None, None), None
+    hear(walk)
     say(walk, text, EXIT_SECONDS)
     if walk.display is not None:
         show_caption(walk)
-
-
-# -- drawing --------------------------------------------------------------------------------------
-
-def draw_frame(walk, blend=1.0):
-    import pygame
-    render_view(walk, blend)
-    draw_overlays(walk)
-    pygame.display.flip()
-
-
-def view_camera(walk, blend=1.0) -> Camera:
-    """The camera ``blend`` (0..1) of the way from the last tic's view to this tic's (a
-    jump such as a teleport is not blended)."""
-    now, before = walk.world.camera(walk.fov), walk.previous
-    if before is None or blend >= 1.0 or abs(now.x - before.x) + abs(now.y - before.y) > NO_BLEND:
-        return now
-    turn = (now.angle - before.angle + 180.0) % 360.0 - 180.0
-    mix = lambda a, b: a + (b - a) * blend            # noqa: E731
-    return Camera(mix(before.x, now.x), mix(before.y, now.y), mix(before.z, now.z),
-                  (before.angle + turn * blend) % 360.0, now.fov)
-
-
-def render_view(walk, blend=1.0):
-    """Render at the internal resolution; one blit_array, one scale into the window."""
-    import pygame
-    width, height = walk.size
-    walk.frame = render(walk.world, view_camera(walk, blend), width, height, order=walk.order,
-                        textures=walk.textures)
-    if walk.surface is None or walk.surface.get_size() != walk.size:
-        walk.surface = pygame.Surface(walk.size, 0, walk.display)   # the window's format
-    pygame.surfarray.blit_array(walk.surface, walk.frame.color_columns)
-    pygame.transform.scale(walk.surface, walk.display.get_size(), walk.display)

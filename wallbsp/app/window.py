@@ -111,13 +111,14 @@ def next_resolution(walk, step):
 
 
 def save_screenshot(walk):
-    """The last frame at the internal resolution, as the first free wallbsp-shot-NNN.png."""
-    if walk.frame is None:
+    """The last picture at the internal resolution (the view, status bar and weapon as
+    shown), as the first free wallbsp-shot-NNN.png."""
+    if walk.picture is None:
         return None
     number = 1
     while os.path.exists(SHOT_NAME.format(number)):
         number += 1
     path = SHOT_NAME.format(number)
-    save_png(path, walk.frame.color)
+    save_png(path, walk.picture.copy())
     say(walk, f"saved {path}")
     return path

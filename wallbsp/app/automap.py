@@ -1,0 +1,109 @@
+"""The walkthrough's automap in DOOM's colours (``am_map.c``, the cheat view of IDDT, which
+shows every line and thing): one-sided walls red, a floor-height change brown, a ceiling
+change yellow, two-sided walls without a change grey, teleporter lines dark red, secret
+doors red as walls (DOOM hides them), lines flagged "never on the map" not drawn; the things
+as green thin triangles pointing the way they face, the player as DOOM's white arrow.
+Colours are PLAYPAL's (DOOM's palette indices below), heights the world's now, so a door
+that opens changes its line's colour.  Drawn with pygame on off-screen surfaces (``MapView``
+of ``mapview``); no window is opened here.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+from wallbsp.app.mapview import MapView, level_bounds, partition_pieces
+
+__all__ = ["COLOURS", "MapView", "level_bounds", "partition_pieces", "line_kinds",
+           "automap_layer", "draw_things", "draw_arrow", "THING_SIZE", "ARROW_SIZE"]
+
+# am_map.c's colours as PLAYPAL (palette 0) gives them: REDS 176, REDS + REDRANGE/2 184,
+# BROWNS 64, YELLOWS 231, GRAYS 96, GREENS 112, WHITE 209, BLACK 0
+COLOURS = {"wall": (255, 0, 0), "teleporter": (155, 0, 0), "floor_change": (191, 123, 75),
+           "ceiling_change": (255, 255, 0), "two_sided": (131, 131, 131),
+           "thing": (119, 255, 111), "player": (255, 235, 219), "background": (0, 0, 0),
+           "partition": (48, 84, 120)}
+ML_SECRET, ML_DONTDRAW = 32, 128          # DOOM's line flags
+TELEPORT = 39                             # the special AM_drawWalls draws apart
+KINDS = ("wall", "teleporter", "floor_change", "ceiling_change", "two_sided")
+THING_SIZE = 16.0                         # map units: AM_drawThings' 16<<FRACBITS
+ARROW_SIZE = 8 * 16 / 7                   # map units: R = 8 * PLAYERRADIUS / 7
+MIN_PIXELS = 3.0                          # a triangle or arrow is never smaller on screen
+
+
+def line_kinds(level, floor, ceiling, flags=None) -> np.ndarray:
+    """AM_drawWalls' choice for every wall of ``level`` (index into ``KINDS``, -1: not
+    drawn) from the sectors' heights now (``floor``, ``ceiling``: arrays by sector) and
+    the lines' DOOM ``flags`` (None: no flags)."""
+    walls = level.walls
+    front = np.array([w.front for w in walls], np.int64)
+    back = np.array([-1 if w.back is None else w.back for w in walls], np.int64)
+    special = np.array([w.special for w in walls], np.int64)
+    flags = np.zeros(len(walls), np.int64) if flags is None else np.asarray(flags, np.int64)
+    two = back >= 0
+    b = np.where(two, back, 0)
+    kind = np.full(len(walls), KINDS.index("two_sided"))
+    kind[ceiling[front] != ceiling[b]] = KINDS.index("ceiling_change")
+    kind[floor[front] != floor[b]] = KINDS.index("floor_change")
+    kind[(flags & ML_SECRET) != 0] = KINDS.index("wall")
+    kind[special == TELEPORT] = KINDS.index("teleporter")
+    kind[~two] = KINDS.index("wall")
+    kind[(flags & ML_DONTDRAW) != 0] = -1
+    return kind
+
+
+def automap_layer(tree, kinds, view, size, like, overlay=False, partitions=None):
+    """The automap's lines (``line_kinds``) on a ``size`` surface of ``like``'s format;
+    ``partitions`` (from ``partition_pieces``) under them if given.  In ``overlay`` mode
+    black is transparent, so the view shows through."""
+    import pygame
+    layer = pygame.Surface(size, 0, like)
+    layer.fill(COLOURS["background"])
+    if overlay:
+        layer.set_colorkey(COLOURS["background"])
+    for _node, p, q in partitions or ():
+        pygame.draw.line(layer, COLOURS["partition"], view(*p), view(*q), 1)
+    colours = [COLOURS[k] for k in KINDS]
+    for wall, kind in enumerate(kinds.tolist()):
+        if kind >= 0:
+            p, q = tree.wall_ends(wall)
+            pygame.draw.line(layer, colours[kind], view(*p), view(*q), 1)
+    return layer
+
+
+def _shape(points, x, y, angle, size):
+    """``points`` (unit shape, x forward) turned to ``angle`` degrees, ``size`` pixels a
+    unit, at pixel (x, y) (picture y down)."""
+    c, s = math.cos(math.radians(angle)), math.sin(math.radians(angle))
+    return [(x + size * (px * c - py * s), y - size * (px * s + py * c)) for px, py in points]
+
+
+THIN_TRIANGLE = ((-0.5, -0.7), (1.0, 0.0), (-0.5, 0.7))          # am_map.c thintriangle_guy
+ARROW = (((-7 / 8, 0), (1, 0)), ((1, 0), (0.5, 0.25)), ((1, 0), (0.5, -0.25)),
+         ((-7 / 8, 0), (-9 / 8, 0.25)), ((-7 / 8, 0), (-9 / 8, -0.25)),
+         ((-5 / 8, 0), (-7 / 8, 0.25)), ((-5 / 8, 0), (-7 / 8, -0.25)))   # player_arrow
+
+
+def draw_things(surface, view, things) -> int:
+    """Every alive, drawn thing of ``things`` (``wallbsp.sim.things.Things``) as DOOM's
+    green thin triangle facing its angle; returns how many were drawn."""
+    import pygame
+    shown = np.flatnonzero(things.alive & things.drawn)
+    size = max(MIN_PIXELS, THING_SIZE * view.scale)
+    px = view.ox + (things.x[shown] - view.x0) * view.scale
+    py = view.oy + (view.y1 - things.y[shown]) * view.scale
+    for x, y, angle in zip(px.tolist(), py.tolist(), things.angle[shown].tolist()):
+        pygame.draw.polygon(surface, COLOURS["thing"], _shape(THIN_TRIANGLE, x, y, angle, size),
+                            1)
+    return len(shown)
+
+
+def draw_arrow(surface, view, x, y, angle):
+    """The player as DOOM's white arrow at map point (x, y) facing ``angle``."""
+    import pygame
+    size = max(2 * MIN_PIXELS, ARROW_SIZE * view.scale)
+    px, py = view(x, y)
+    for a, b in ARROW:
+        p, q = _shape((a, b), px, py, angle, size)
+        pygame.draw.line(surface, COLOURS["player"], p, q, 1)

@@ -1,0 +1,117 @@
+"""The walkthrough's picture: DOOM's screen at the internal resolution, scaled to the window.
+
+A frame: the camera between the last two tics (``view_camera``), the 3-D view rendered into
+the rows above the status bar (``screen.view_size``; the whole picture when the bar is
+off), the ``screen.Hud`` over it (weapon with its bob and flash, the status bar, the
+message, the palette flash), DOOM's "pause" picture while paused, an overlay's own drawing
+(``walk.overlay.draw(walk, picture)``: a menu), then one ``blit_array`` and one scale into
+the window, where ``hud.draw_overlays`` adds the automap, readout and help.
+
+The picture is kept column-major (``walk.screen``, ``(width, height, 3)``), the layout
+pygame's ``blit_array`` takes and the renderer writes, so the view is one copy in;
+``walk.picture`` is the same memory as rows ``(height, width, 3)``, which the Hud draws on
+and screenshots save.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+from wallbsp.camera import Camera
+from wallbsp.app.hud import draw_overlays
+from wallbsp.render import render
+from wallbsp.screen.art import art_for
+from wallbsp.screen.hud import view_size
+from wallbsp.screen.messages import paint_text
+from wallbsp.screen.remap import paste
+
+__all__ = ["NO_BLEND", "draw_frame", "view_camera", "render_view", "compose", "pause_picture"]
+
+NO_BLEND = 64.0           # map units: a jump this long (a teleport) is not interpolated
+SCREENWIDTH, SCREENHEIGHT = 320, 200
+PAUSE_Y = 4               # D_Display: M_PAUSE at y = viewwindowy + 4, centred on 68 pixels
+PAUSE_WIDTH = 68
+
+
+def draw_frame(walk, blend=1.0):
+    import pygame
+    render_view(walk, blend)
+    draw_overlays(walk)
+    pygame.display.flip()
+
+
+def view_camera(walk, blend=1.0) -> Camera:
+    """The camera ``blend`` (0..1) of the way from the last tic's view to this tic's (a
+    jump such as a teleport is not blended)."""
+    now, before = walk.world.camera(walk.fov), walk.previous
+    if before is None or blend >= 1.0 or abs(now.x - before.x) + abs(now.y - before.y) > NO_BLEND:
+        return now
+    turn = (now.angle - before.angle + 180.0) % 360.0 - 180.0
+    mix = lambda a, b: a + (b - a) * blend            # noqa: E731
+    return Camera(mix(before.x, now.x), mix(before.y, now.y), mix(before.z, now.z),
+                  (before.angle + turn * blend) % 360.0, now.fov)
+
+
+def render_view(walk, blend=1.0):
+    """The picture at the internal resolution (``compose``); one blit_array, one scale."""
+    import pygame
+    compose(walk, blend)
+    if walk.surface is None or walk.surface.get_size() != walk.size:
+        walk.surface = pygame.Surface(walk.size, 0, walk.display)   # the window's format
+    pygame.surfarray.blit_array(walk.surface, walk.screen)
+    pygame.transform.scale(walk.surface, walk.display.get_size(), walk.display)
+
+
+def compose(walk, blend=1.0) -> np.ndarray:
+    """``walk.picture``: the view rendered above the status bar, the Hud, pause, overlay."""
+    width, height = walk.size
+    vw, vh = view_size(width, height, walk.statusbar)
+    walk.frame = render(walk.world, view_camera(walk, blend), vw, vh, order=walk.order,
+                        textures=walk.textures)
+    if walk.screen is None or walk.screen.shape[:2] != (width, height):
+        walk.screen = np.zeros((width, height, 3), np.uint8)
+        walk.picture = walk.screen.transpose(1, 0, 2)
+    walk.screen[:, :vh] = walk.frame.color_columns
+    walk.hud.draw(walk.picture, walk.world.play)
+    if walk.paused:
+        draw_pause(walk.picture, walk.hud.art or art_for(walk.world.play), vh)
+    if walk.overlay is not None and hasattr(walk.overlay, "draw"):
+        walk.overlay.draw(walk, walk.picture)
+    return walk.picture
+
+
+def draw_pause(picture, art, view_height):
+    """DOOM's paused screen: ``M_PAUSE`` (or "PAUSE" in the font, for art without it)
+    centred at the top of the view, scaled from 320 × 200 as the Hud's pictures are."""
+    rgb, mask, left, top = pause_picture(art)
+    height, width = picture.shape[:2]
+    rows = -(-mask.shape[0] * height // SCREENHEIGHT)
+    cols = -(-mask.shape[1] * width // SCREENWIDTH)
+    x0 = max(0, ((SCREENWIDTH - PAUSE_WIDTH) // 2 - left) * width // SCREENWIDTH)
+    y0 = max(0, (PAUSE_Y - top) * height // SCREENHEIGHT)
+    rows, cols = min(rows, view_height - y0), min(cols, width - x0)
+    if rows <= 0 or cols <= 0:
+        return
+    ys = np.arange(rows) * SCREENHEIGHT // height
+    xs = np.arange(cols) * SCREENWIDTH // width
+    paste(picture[y0:y0 + rows, x0:x0 + cols], rgb[ys[:, None], xs[None, :]],
+          mask[ys[:, None], xs[None, :]])
+
+
+def pause_picture(art):
+    """``(rgb, mask, left, top)`` of the pause picture at DOOM's scale, with its offsets
+    (cached on the art)."""
+    cache = art.__dict__.setdefault("_pause", {})
+    if "picture" not in cache:
+        patch = art.patch("M_PAUSE")
+        left = top = 0
+        if patch is not None:
+            rgb, mask = art.rgb(patch)
+            left, top = patch.left, patch.top
+        else:
+            rgb, mask = paint_text("PAUSE", art) or (np.zeros((1, 1, 3), np.uint8),
+                                                     np.zeros((1, 1), bool))
+            used = np.flatnonzero(mask.any(axis=0))
+            right = used[-1] + 1 if used.size else 1
+            rgb, mask = rgb[:, :right], mask[:, :right]
+        cache["picture"] = (rgb, mask, left, top)
+    return cache["picture"]
