@@ -381,8 +381,11 @@ class Scenario:
 
 
 def _inside(world, mo) -> bool:
-    """The thing's box lies within the map (each corner is in one of the level's sectors)."""
-    r = mo.radius / FRAC
+    """The thing's box lies within the map (each corner is in one of the level's sectors).
+    The corners are taken a fixed-point unit inside the box: a box that touches a wall is
+    in the map, as DOOM's PIT_CheckLine lets it be (ACS's ``Spawn`` at y = 20 of a radius-20
+    imp against the wall at y = 0, in take_cover)."""
+    r = (mo.radius - 1) / FRAC
     x, y = mo.x / FRAC, mo.y / FRAC
     return all(world.tree.locate(x + dx, y + dy) is not None
                for dx in (-r, r) for dy in (-r, r))
