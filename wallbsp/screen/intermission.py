@@ -30,6 +30,7 @@ __all__ = ["IntermissionScreen", "paint_intermission", "background_name", "level
 
 TICRATE = 35
 WI_TITLEY = 2
+NAME_LINE = 12                  # a name written in the font takes a line of M_WriteText
 SP_STATSX, SP_STATSY = 50, 50
 SP_TIMEX, SP_TIMEY = 16, 200 - 32
 STAT_COUNT, SHOW_NEXT_LOC, NO_STATE = range(3)
@@ -175,12 +176,9 @@ def _level_name(canvas, art, lump, text, y) -> int:
     picture = art.patch(lump) if lump else None
     if picture is not None:
         canvas.patch(art, lump, (SCREENWIDTH - picture.width) // 2, y)
-        return picture.height
-    if text:
+    elif text:
         canvas.text(art, (SCREENWIDTH - string_width(art, text)) // 2, y, text)
-        first = art.patch("STCFN033")
-        return first.height if first is not None else 8
-    return 0
+    return _name_height(art, lump, text)
 
 
 def _centred(canvas, art, lump, y) -> None:
@@ -231,13 +229,16 @@ def _paint_entering(canvas, art, play, name) -> None:
     """WI_drawEL: WIENTER, then the next level's name 5/4 of its height lower."""
     _centred(canvas, art, "WIENTER", WI_TITLEY)
     lump = level_lump(play.gamemode, play.gameepisode, play.wbs["next"])
+    height = _name_height(art, lump, name)
+    _level_name(canvas, art, lump, name, WI_TITLEY + 5 * height // 4)
+
+
+def _name_height(art, lump, text) -> int:
+    """The height of a level's name picture, or of the font it is written in instead."""
     picture = art.patch(lump)
-    if picture is None and name:
-        first = art.patch("STCFN033")
-        picture_height = first.height if first is not None else 8
-    else:
-        picture_height = picture.height if picture is not None else 0
-    _level_name(canvas, art, lump, name, WI_TITLEY + 5 * picture_height // 4)
+    if picture is None:
+        return NAME_LINE if text else 0
+    return picture.height
 
 
 def _on_node(canvas, art, epsd, n, lumps) -> None:

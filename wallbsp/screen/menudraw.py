@@ -13,15 +13,17 @@ gets our pictures, and a WAD that lacks a lump (a Doom II WAD's ``WIMAP0``) gets
 """
 from __future__ import annotations
 
+import json
 from pathlib import Path
 
 import numpy as np
 
+from wallbsp.assets.pictures import Picture
 from wallbsp.screen.art import OWN_ART, OwnArt
 from wallbsp.screen.menudefs import HU_FONTEND, HU_FONTSTART, LINEHEIGHT, SKULLXOFF
 from wallbsp.screen.remap import paste
 
-__all__ = ["Canvas", "ArtChain", "menu_art", "MenuScreen", "paint_menu", "string_width",
+__all__ = ["Canvas", "ArtChain", "OwnMenuArt", "menu_art", "MenuScreen", "paint_menu", "string_width",
            "OWN_MENU", "SCREENWIDTH", "SCREENHEIGHT"]
 
 SCREENWIDTH, SCREENHEIGHT = 320, 200
@@ -49,10 +51,30 @@ class ArtChain:
         return None if found is None else found[1]
 
 
+class OwnMenuArt(OwnArt):
+    """Our own menu pictures, placed by the offsets ``offsets.json`` gives (a PNG has
+    none): ``{"M_LSCNTR": [left, top], ...}``."""
+
+    def __init__(self, folder=OWN_MENU):
+        super().__init__(folder)
+        path = Path(folder) / "offsets.json"
+        self.offsets = json.loads(path.read_text()) if path.is_file() else {}
+        self._placed_menu: dict = {}
+
+    def patch(self, name: str):
+        if name not in self._placed_menu:
+            picture = super().patch(name)
+            if picture is not None and name in self.offsets:
+                left, top = self.offsets[name]
+                picture = Picture(picture.pixels, picture.mask, int(left), int(top))
+            self._placed_menu[name] = picture
+        return self._placed_menu[name]
+
+
 def menu_art(art) -> ArtChain:
     """``art`` (a WadArt or OwnArt), then our own menu pictures, then our own font."""
     if not _OWN:
-        _OWN["menu"], _OWN["hud"] = OwnArt(OWN_MENU), OwnArt(OWN_ART)
+        _OWN["menu"], _OWN["hud"] = OwnMenuArt(OWN_MENU), OwnArt(OWN_ART)
     if isinstance(art, ArtChain):
         return art
     key = ("chain", id(art))
