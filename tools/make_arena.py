@@ -1,7 +1,8 @@
 """Write ``wallbsp/data/arena.json``: a small arena for several players (the multi-agent
 environment's default map, ``wallbsp.envs.multiagent``), made of our own textures.
 
-A 1024 x 1024 room with four square pillars and a raised platform (one step, 24 units) in
+A 1024 x 1024 room with four square pillars in a pinwheel (none on a start's line of
+sight to the middle) and a raised platform (one step, 24 units) in
 the middle holding a shotgun; a chaingun, shells, bullets, a medikit and a stimpack around
 it; player starts 1-4 in the corners facing the middle and eight deathmatch starts (the
 corners and the middle of each side).  Run from the repository:
@@ -15,7 +16,8 @@ import sys
 from pathlib import Path
 
 OUT = Path(__file__).resolve().parent.parent / "wallbsp" / "data" / "arena.json"
-HALF, PILLAR, PILLAR_AT, PLATFORM, CORNER = 512, 48, 288, 96, 416
+HALF, PILLAR, PLATFORM, CORNER, ITEM = 512, 48, 96, 416, 288
+PILLARS = ((-320, 160), (160, 320), (320, -160), (-160, -320))     # a quarter turn apart
 FLOOR, CEILING, STEP, LIGHT = 0, 160, 24, 192
 SHOTGUN, CHAINGUN, SHELLS, CLIP, MEDIKIT, STIMPACK = 2001, 2002, 2008, 2007, 2012, 2011
 DEATHMATCH_START = 11
@@ -41,10 +43,8 @@ def arena() -> dict:
 
     # the outer wall clockwise (the room on its right), the pillars counter-clockwise
     loop(square(0, 0, HALF)[::-1], 0, None, {"front_side": {"middle": "BRICK1"}})
-    for sx in (-1, 1):
-        for sy in (-1, 1):
-            loop(square(sx * PILLAR_AT, sy * PILLAR_AT, PILLAR), 0, None,
-                 {"front_side": {"middle": "STONE2"}})
+    for x, y in PILLARS:
+        loop(square(x, y, PILLAR), 0, None, {"front_side": {"middle": "STONE2"}})
     # the platform: two-sided walls, the room in front, a step of STEP1 below
     loop(square(0, 0, PLATFORM), 0, 1, {"front_side": {"lower": "STEP1"}})
     sectors = [{"floor": FLOOR, "ceiling": CEILING, "light": LIGHT, "floor_color": "#4b4137",
@@ -66,11 +66,11 @@ def arena() -> dict:
                                   (CORNER, 0, 180)]:
         thing(x, y, angle, DEATHMATCH_START)
     thing(0, 0, 90, SHOTGUN)
-    thing(0, PILLAR_AT, 90, CHAINGUN)
-    thing(PILLAR_AT, 0, 90, SHELLS)
-    thing(-PILLAR_AT, 0, 90, CLIP)
-    thing(0, -PILLAR_AT, 90, MEDIKIT)
-    thing(-PILLAR_AT, -PILLAR_AT + 2 * PILLAR + 32, 90, STIMPACK)
+    thing(0, ITEM, 90, CHAINGUN)
+    thing(ITEM, 0, 90, SHELLS)
+    thing(-ITEM, 0, 90, CLIP)
+    thing(0, -ITEM, 90, MEDIKIT)
+    thing(256, 256, 90, STIMPACK)
     x, y, angle = corners[0]
     return {"format": "wallbsp-level", "version": 2, "name": "Arena (several players)",
             "vertices": vertices, "sectors": sectors, "walls": walls,

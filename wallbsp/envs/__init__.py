@@ -18,6 +18,10 @@ or, without the import, with the module named in the id (gymnasium imports it)::
 ``make_vec(env_id, num_envs, workers=...)`` runs many as one gymnasium ``VectorEnv`` with
 shared-memory batches and EnvPool's ``send``/``recv`` (``vector``).
 
+``parallel_env(players=2, mode="deathmatch", ...)``: several agents in one world, a
+PettingZoo ``ParallelEnv`` (``multiagent``; needs the ``multi`` extra, imported on first
+call); ``aec_env(...)`` the same turned into PettingZoo's AEC form.
+
 The tasks are in ``tasks``, the options every environment takes in ``base``, the action
 tables in ``actions``, the observation keys in ``observations``.  gymnasium is imported
 here and below only: ``import wallbsp`` does not need it.
@@ -34,11 +38,25 @@ from wallbsp.envs.vector import WorkerError, make_vec
 
 __all__ = ["DEFAULT_OBSERVATIONS", "DISCRETE_ACTIONS", "ENV_IDS", "OBSERVATIONS",
            "TURN_DEGREES", "Buttons", "ExitEnv", "ExploreEnv", "FindEnv", "WallbspEnv",
-           "WorkerError", "make_vec"]
+           "WorkerError", "make_vec", "parallel_env", "aec_env"]
 
 ENV_IDS = {"wallbsp/Exit-v0": "wallbsp.envs.tasks:ExitEnv",
            "wallbsp/Explore-v0": "wallbsp.envs.tasks:ExploreEnv",
            "wallbsp/Find-v0": "wallbsp.envs.tasks:FindEnv"}
+
+
+
+def parallel_env(**options):
+    """The multi-agent ``ParallelEnv`` (``multiagent.MultiAgentEnv``; needs pettingzoo)."""
+    from wallbsp.envs.multiagent import MultiAgentEnv
+    return MultiAgentEnv(**options)
+
+
+def aec_env(**options):
+    """``parallel_env(**options)`` in PettingZoo's agent-by-agent (AEC) form."""
+    from pettingzoo.utils.conversions import parallel_to_aec
+    return parallel_to_aec(parallel_env(**options))
+
 
 # ViZDoom's scenarios (wallbsp/envs/vizdoom.py, docs/scenarios.md)
 from wallbsp.envs.vizdoom import SCENARIOS as _SCENARIOS          # noqa: E402

@@ -1,0 +1,110 @@
+"""The multi-agent environment (``wallbsp.envs.multiagent``): a PettingZoo ``ParallelEnv`` of
+2-4 players in one world.  Skips without pettingzoo (the ``multi`` extra)."""
+import warnings
+
+import numpy as np
+import pytest
+
+pytest.importorskip("pettingzoo")
+
+from pettingzoo.test import api_test, parallel_api_test, parallel_seed_test  # noqa: E402
+
+from wallbsp.envs import aec_env, parallel_env  # noqa: E402
+from wallbsp.game.scenario import Scenario  # noqa: E402
+
+SMALL = {"size": (32, 24), "max_tics": 40}
+ATTACK = 1                            # DEFAULT_BUTTONS[0]: discrete action 1
+
+
+def test_parallel_api_and_seeding():
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")          # no "live agent was not given ..."
+        parallel_api_test(parallel_env(players=3, observations=("rgb", "pose", "gamevars"),
+                                       **SMALL), num_cycles=60)
+    parallel_seed_test(lambda: parallel_env(mode="altdeath", action_space="multibinary",
+                                            observations=("rgb", "labels"), **SMALL),
+                       num_cycles=20)
+    # (the AEC test warns that a dict observation is no NumPy array: our spaces are Dicts)
+    api_test(aec_env(mode="coop", action_space="box", observations=("depth",), **SMALL),
+             num_cycles=20)
+
+
+def _run(seed, steps=30, **options):
+    env = parallel_env(players=2, observations=("rgb", "pose"), **SMALL, **options)
+    obs, _ = env.reset(seed=seed)
+    out = [obs]
+    for a in env.possible_agents:
+        env.action_space(a).seed(seed)
+    for _ in range(steps):
+        if not env.agents:
+            break
+        out.append(env.step({a: env.action_space(a).sample() for a in env.agents})[0])
+    return out
+
+
+def test_an_episode_reproduces_from_its_seed_and_agents_see_their_own_views():
+    a, b, c = _run(7), _run(7), _run(8)
+    assert len(a) == len(b)
+    for x, y in zip(a, b):
+        for agent in x:
+            assert np.array_equal(x[agent]["rgb"], y[agent]["rgb"])
+            assert np.array_equal(x[agent]["pose"], y[agent]["pose"])
+    # another seed: other deathmatch starts
+    assert not np.array_equal(a[0]["player_0"]["pose"], c[0]["player_0"]["pose"]) \
+        or not np.array_equal(a[0]["player_1"]["pose"], c[0]["player_1"]["pose"])
+    first = a[0]
+    assert not np.array_equal(first["player_0"]["rgb"], first["player_1"]["rgb"])
+    assert not np.array_equal(first["player_0"]["pose"], first["player_1"]["pose"])
+
+
+def test_deathmatch_rewards_a_frag_and_punishes_the_death():
+    env = parallel_env(players=2, mode="deathmatch", size=(32, 24), max_tics=2000,
+                       frag_limit=1, observations=("labels",))
+    env.reset(seed=0)
+    env.world.place_player(0, -420, 90, player=0)
+    env.world.place_player(0, -320, 270, player=1)
+    victim = env.world.players[1].thing
+    obs, rewards, terms, truncs, infos = env.step({"player_0": 0, "player_1": 0})
+    assert victim in obs["player_0"]["labels"][..., 1][obs["player_0"]["labels"][..., 0] == 4]
+    total = {"player_0": 0.0, "player_1": 0.0}
+    for _ in range(400):
+        obs, rewards, terms, truncs, infos = env.step({"player_0": ATTACK, "player_1": 0})
+        for agent, r in rewards.items():
+            total[agent] += r
+        if not env.agents:
+            break
+    assert total == {"player_0": 1.0, "player_1": -1.0}
+    assert terms == {"player_0": True, "player_1": True}        # the frag limit
+    assert infos["player_0"]["frags"] == 1 and infos["player_1"]["deaths"] == 1
+    assert not truncs["player_0"]
+
+
+def test_cooperative_players_share_a_kill_and_the_dead_come_back():
+    env = parallel_env(players=2, mode="coop", size=(32, 24), max_tics=2000,
+                       observations=("pose",))
+    env.reset(seed=0)
+    world = env.world
+    world.place_player(0, -420, 90, player=0)
+    Scenario.spawn(world, "ZombieMan", 0, -300, angle=270)
+    total = np.zeros(2)
+    for _ in range(300):
+        _, rewards, *_ = env.step({"player_0": ATTACK, "player_1": 0})
+        total += [rewards["player_0"], rewards["player_1"]]
+        if world.players[0].kills:
+            break
+    assert world.players[0].kills == 1 and world.players[1].kills == 0
+    assert total[1] == 1.0 and total[0] in (1.0, 0.0)     # shared; 0 if shot back dead
+    world.play.p_damage_mobj(world.play.players[1].mo, None, None, 1000)
+    _, rewards, _, _, infos = env.step({})
+    assert rewards["player_1"] == -1.0 and infos["player_1"]["dead"]
+    _, rewards, _, _, infos = env.step({})            # respawn: use pressed for it
+    assert not infos["player_1"]["dead"] and infos["player_1"]["health"] == 100
+    assert infos["player_1"]["deaths"] == 1
+
+
+def test_options_are_checked():
+    for bad in ({"players": 1}, {"players": 5}, {"mode": "ctf"},
+                {"action_space": "continuous"}, {"observations": ("automap",)},
+                {"buttons": ("JUMP",)}, {"frag_limit": 0}, {"render_mode": "human"}):
+        with pytest.raises(ValueError):
+            parallel_env(**bad)
