@@ -25,6 +25,9 @@ things is the object its ``i``-th thing spawned), ``exited`` (None, ``"normal"``
 ``"secret"``; once left, a tic does nothing), ``tic_count``, ``camera()`` (the eye at
 ``viewz``), ``messages`` (``(tic, text)``: DOOM's pickup and locked-door messages).
 
+``World(tree, skill, play=play)`` goes on with a play of the tree's level already under way
+(a loaded save: ``playsim.savegame.load_game(..., cls=world_play_class())``).
+
 A dead player stays dead until ``use`` is pressed; then, as DOOM does in a single-player
 game, the level starts again (the thing indices start again too).
 
@@ -65,7 +68,8 @@ MAX_ANGLE = 36000.0
 class World:
     """A level in play (module docstring)."""
 
-    def __init__(self, tree, skill: int = 3, players: int = 1, deathmatch: int = 0):
+    def __init__(self, tree, skill: int = 3, players: int = 1, deathmatch: int = 0,
+                 play=None):
         if isinstance(skill, bool) or not isinstance(skill, (int, np.integer)) \
                 or skill not in SKILLS:
             raise ValueError(f"World: skill must be an integer 1 to 5, not {skill!r}")
@@ -80,7 +84,11 @@ class World:
         self.wad_map = wad_map_of(self.level)
         self.players = tuple(PlayerView(self, k) for k in range(self.player_count))
         self.player = self.players[0]
-        self._start()
+        if play is None:
+            self._start()
+        else:                           # a play of this level already under way (a save)
+            self.play = play
+            self._adopt()
 
     def _start(self) -> None:
         play_cls = world_play_class()
