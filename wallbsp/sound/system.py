@@ -26,6 +26,7 @@ from wallbsp.sim import info
 
 from . import dmx
 from .channels import Channels, NUM_CHANNELS
+from .folders import play_lumps
 
 TICRATE = 35
 
@@ -89,7 +90,10 @@ class SoundSystem:
     """DOOM's sound for one ``Play`` (see the module docstring).  ``wad``: a WAD path for the
     ``DS*`` lumps, or None to read them through the attached Play (``play.w_lump``, PWADs
     included); ``lumps``: a mapping ``"DSPISTOL"`` → DMX bytes used before either (our own
-    levels' synthesised sounds).  ``sfx_volume``/``music_volume``: the menu's 0-15.
+    levels' synthesised sounds).  Last, a level without a WAD plays the sounds of its
+    resource folders (``folders.py``: ``sounds/DS*.lmp``, as the game level's
+    ``wallbsp/data/game`` holds), found when ``attach`` is given its Play: nothing to pass.
+    ``sfx_volume``/``music_volume``: the menu's 0-15.
     ``record``: keep ``events``."""
 
     def __init__(self, wad=None, mixer=False, music=False, sfx_volume=8, music_volume=8,
@@ -103,6 +107,7 @@ class SoundSystem:
         self.play = None
         self.log = log or (lambda message: print(f"wallbsp: {message}", file=sys.stderr))
         self._sounds = {}                 # lump name -> DmxSound or None
+        self._folder_lumps = {}           # the attached level's folders' sounds (folders.py)
         self._level = None                # the attached level's sector list (S_Start)
         self.mixer = None
         if mixer:
@@ -126,8 +131,10 @@ class SoundSystem:
             with open_wad(self.wad) as w:
                 return w.lump(name) if name in w.index else None
         if self.play is not None:
-            return self.play.w_lump(name)
-        return None
+            lump = self.play.w_lump(name)
+            if lump is not None:
+                return lump
+        return self._folder_lumps.get(name)
 
     def sound_for(self, sfx_id):
         """The decoded ``DmxSound`` sfx ``sfx_id`` plays, or None (no lump, or not DMX)."""
@@ -151,6 +158,12 @@ class SoundSystem:
         self.play = play
         play.sound = self
         self._level = None
+        folder_lumps = play_lumps(play)
+        if folder_lumps != self._folder_lumps:     # another level's sounds: decode anew
+            self._folder_lumps = folder_lumps
+            self._sounds.clear()
+            if self.mixer is not None:
+                self.mixer.cache.clear()
         if self.mixer is not None:
             self.precache()
 
