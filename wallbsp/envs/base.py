@@ -15,7 +15,12 @@ Options (keyword arguments of ``gymnasium.make``):
 - ``action_space``: ``"discrete"`` (default), ``"multidiscrete"`` or ``"box"`` (``actions``);
 - ``render_mode``: ``"rgb_array"`` (``render()`` returns the view) or ``"human"`` (a
   pygame window, opened by the first ``render()`` call — nothing opens a display before);
-- ``skill``: 1 to 5, which things the level has (default 3).
+- ``skill``: 1 to 5, which things the level has (default 3);
+- ``hud``: DOOM's status bar and weapon in the ``rgb`` observation (default False): the view
+  is rendered above the bar (``screen.view_size``) and ``screen.Hud`` draws the bar,
+  weapon, messages and flashes, ticked after every tic as DOOM's ``ST_Ticker`` is;
+  ``depth`` and ``labels`` are of the view, their status-bar rows "nothing" (``inf``,
+  kind 0, index -1), the weapon not in them.
 
 An episode ends (``terminated``) when the task says so or the player dies; it is truncated
 after ``max_tics`` tics.  ``info`` has ``tics``, ``exited`` (None, "normal" or "secret"),
@@ -31,7 +36,8 @@ from wallbsp.sim.queries import PLAYER_RADIUS
 from wallbsp.render import render
 from wallbsp.envs import actions
 from wallbsp.envs.observations import (VIEW_KEYS, Automap, check_observations,
-    observation_space, pose_of, view_observation)
+    hud_observation, observation_space, pose_of, view_observation)
+from wallbsp.screen.hud import Hud, view_size
 
 __all__ = ["WallbspEnv", "DEFAULT_OBSERVATIONS", "TICRATE"]
 
@@ -50,7 +56,8 @@ class WallbspEnv(gym.Env):
 
     def __init__(self, size=(160, 120), frame_skip: int = 1, fov: float = 90.0,
                  textures: bool = True, observations=DEFAULT_OBSERVATIONS, max_tics=None,
-                 action_space: str = "discrete", render_mode=None, skill: int = 3):
+                 action_space: str = "discrete", render_mode=None, skill: int = 3,
+                 hud: bool = False):
         self.width, self.height = _size(size)
         self.frame_skip = _positive("frame_skip", frame_skip)
         self.max_tics = _positive("max_tics", self.default_max_tics if max_tics is None
@@ -67,8 +74,11 @@ class WallbspEnv(gym.Env):
         self.action_space = actions.action_space(action_space)   # checks the name
         self.observation_space = observation_space(self.keys, self.width, self.height)
         self.metadata = {**self.metadata, "render_fps": TICRATE / self.frame_skip}
+        self.hud = bool(hud)
         self.world = None
         self.frame = None
+        self._hud = self._picture = None         # the Hud and the last picture it drew on
+        self._seen_message = None
         self._automap = self._window = None
         self._tics = 0
 
@@ -90,6 +100,7 @@ class WallbspEnv(gym.Env):
             self._automap = (tree, None)        # drawn on first use, per level
         self.world = World(tree, self.skill)
         self._tics = 0
+        self._start_hud()
         return self._observe(), self._info()
 
     def step(self, action):
@@ -99,6 +110,7 @@ class WallbspEnv(gym.Env):
         reward, terminated = 0.0, False
         for i in range(self.frame_skip):
             self.world.tic(**buttons.tic_inputs(first=i == 0))
+            self._tic_hud()
             self._tics += 1
             gained, done = self.tic_reward(self.world)
             reward += gained
@@ -113,7 +125,7 @@ class WallbspEnv(gym.Env):
     def render(self):
         if self.render_mode is None or self.world is None:
             return None
-        rgb = self._view().rows("rgb")
+        rgb = self._view().rows("rgb") if self._hud is None else self._hud_picture().copy()
         if self.render_mode == "rgb_array":
             return rgb
         if self._window is None:
@@ -129,15 +141,50 @@ class WallbspEnv(gym.Env):
 
     # -- observations -----------------------------------------------------------------------
     def _view(self):
-        """The frame of the player's view now (drawn at most once per step)."""
+        """The frame of the player's view now (drawn at most once per step; above the
+        status bar with ``hud``)."""
         if self.frame is None:
-            self.frame = render(self.world, self.world.camera(self.fov), self.width,
-                                 self.height, textures=self.textures)
+            width, height = self.width, self.height
+            if self._hud is not None:
+                width, height = view_size(width, height, self._hud.statusbar)
+            self.frame = render(self.world, self.world.camera(self.fov), width, height,
+                                textures=self.textures)
         return self.frame
 
+    # -- the status bar and weapon (``hud``) --------------------------------------------------
+    def _start_hud(self) -> None:
+        """A fresh Hud for the episode's world (with ``hud``; DOOM's straight face)."""
+        self._hud = Hud() if self.hud else None
+        self._seen_message = self.world.messages[-1] if self.world.messages else None
+
+    def _tic_hud(self) -> None:
+        """After a tic: the Hud's tic (G_Ticker's ST_Ticker and HU_Ticker in a level) and
+        the world's newest message put up."""
+        hud, world = self._hud, self.world
+        if hud is None:
+            return
+        if world.play.gamestate == 0:
+            hud.tick(world.play)
+        newest = world.messages[-1] if world.messages else None
+        if newest is not self._seen_message:
+            self._seen_message = newest
+            hud.say(newest[1])
+
+    def _hud_picture(self) -> np.ndarray:
+        """The view with the status bar and weapon, ``(H, W, 3)`` (drawn once per step)."""
+        if self._picture is None:
+            frame = self._view()
+            picture = np.zeros((self.height, self.width, 3), np.uint8)
+            picture[:frame.height] = frame.color
+            self._picture = self._hud.draw(picture, self.world.play)
+        return self._picture
+
     def _observe(self) -> dict:
-        self.frame = None
-        obs = view_observation(self._view(), self.keys) if self._views else {}
+        self.frame = self._picture = None
+        if self._views and self._hud is not None:
+            obs = hud_observation(self._view(), self._hud_picture(), self.keys)
+        else:
+            obs = view_observation(self._view(), self.keys) if self._views else {}
         if "automap" in self.keys:
             obs["automap"] = self._map_picture()
         if "pose" in self.keys:

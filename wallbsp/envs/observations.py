@@ -25,7 +25,7 @@ import numpy as np
 from wallbsp.render.rows import rows_of
 
 __all__ = ["OBSERVATIONS", "VIEW_KEYS", "observation_space", "check_observations", "Automap",
-           "pose_of", "view_observation", "drawn_into"]
+           "pose_of", "view_observation", "drawn_into", "hud_observation"]
 
 OBSERVATIONS = ("rgb", "depth", "labels", "automap", "pose")
 VIEW_KEYS = frozenset({"rgb", "depth", "labels"})
@@ -85,6 +85,36 @@ def view_observation(frame, keys) -> dict:
     arrays of an enclosing ``drawn_into``)."""
     names = [name for name in ("rgb", "depth", "labels") if name in keys]
     return frame.view_rows(names, out=_INTO[-1]) if _INTO else frame.view_rows(names)
+
+
+def hud_observation(frame, picture, keys) -> dict:
+    """The view buffers among ``keys`` with DOOM's status bar (``hud=True``): ``rgb`` is
+    ``picture`` (the view, bar and weapon, ``(H, W, 3)``); ``depth`` and ``labels`` are
+    the view ``frame``'s (its top rows) with the bar's rows "nothing" (``inf``, kind 0,
+    index -1).  Into an enclosing ``drawn_into``'s arrays where they fit."""
+    height, width = picture.shape[:2]
+    names = [name for name in ("depth", "labels") if name in keys]
+    rows = frame.view_rows(names) if names else {}
+    made = {}
+    if "rgb" in keys:
+        made["rgb"] = picture
+    if "depth" in keys:
+        made["depth"] = np.full((height, width), np.inf, np.float32)
+        made["depth"][:frame.height] = rows["depth"]
+    if "labels" in keys:
+        made["labels"] = np.empty((height, width, 2), np.int32)
+        made["labels"][frame.height:] = (0, -1)
+        made["labels"][:frame.height] = rows["labels"]
+    return {name: _put(_INTO[-1].get(name) if _INTO else None, array)
+            for name, array in made.items()}
+
+
+def _put(slot, array):
+    """``array`` copied into ``slot`` when it fits, else ``array`` itself (a new array)."""
+    if slot is not None and slot.shape == array.shape and slot.dtype == array.dtype:
+        slot[...] = array
+        return slot
+    return array
 
 
 def pose_of(player) -> np.ndarray:

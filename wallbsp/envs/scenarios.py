@@ -145,6 +145,7 @@ class ScenarioEnv(WallbspEnv):
         for _ in range(sc.start_tics):
             self.world.tic()
             sc.after_tic(self.world)
+        self._start_hud()
         return self._observe(), self._info()
 
     def step(self, action):
@@ -160,6 +161,7 @@ class ScenarioEnv(WallbspEnv):
             cmd = gamevars.command(self.buttons, values, world.play.players[0],
                                    self._turnheld)
             world.tic(cmd)
+            self._tic_hud()
             self._tics += 1
             reward += sc.living_reward + sc.after_tic(world)
             if world.dead:
