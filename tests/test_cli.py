@@ -268,13 +268,15 @@ def test_walk_with_a_driver_that_shows_nothing_is_no_display(tmp_path, capsys, m
     _one_line_exit_2(["walk", _box(tmp_path)], capsys, "no display", "--frames")
 
 
-def test_walk_with_no_level_walks_the_bundled_level_textured(capsys, monkeypatch):
+def test_walk_with_no_level_walks_the_bundled_game_level(capsys, monkeypatch):
     import wallbsp.app.walkthrough
     walked = []
     monkeypatch.setattr(wallbsp.app.walkthrough, "run_walkthrough",
                         lambda tree, **options: walked.append(tree) or "summary")
     assert main(["walk", "--frames", "1"]) == 0
-    assert walked[0].level.resources and "textured" in walked[0].level.name
+    level = walked[0].level
+    assert level.resources and "a small game" in level.name
+    assert {t.type for t in level.things} >= {3004, 3001, 13}      # monsters and a key
 
 
 def test_walk_checks_its_screenshot_path_before_walking(tmp_path, capsys):

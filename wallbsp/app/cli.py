@@ -163,7 +163,7 @@ def cmd_walk(args):
     from wallbsp.game.demo import demo_for, save_demo
     if args.level is None:
         from importlib.resources import files
-        args.level = str(files("wallbsp") / "data" / "textured.json")
+        args.level = str(files("wallbsp") / "data" / "game.json")
     check_outputs("walk", [args.screenshot, args.record], [args.level])
     try:
         keys = read_bindings(args.keys)
