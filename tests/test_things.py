@@ -5,7 +5,8 @@ from game_levels import LENGTH, WIDTH, corridor, room
 
 from wallbsp import compile_level
 from wallbsp.level.model import Thing, ThingType
-from wallbsp.sim.things import Things, level_things, locate_leaves, spawned_at
+from wallbsp.sim.things import (SPRITE_MARGIN, SPRITE_REACH, Things, level_things,
+    locate_leaves, spawned_at)
 from wallbsp.sim.thingtypes import SOLID, SPECIAL
 from wallbsp.sim.state import WorldState
 
@@ -180,3 +181,24 @@ def test_solid_sides_are_the_box_sides_of_the_solid_things_in_reach():
     assert things.solid_sides(80, 64, 20) == things.box_sides([0, 2])
     things.remove(0)
     assert things.solid_sides(80, 64, 20) == things.box_sides([2])
+
+
+def test_subtree_boxes_are_the_node_boxes_grown_by_each_things_reach():
+    """The compiled growth (``leafwalk.grow_boxes``) against a walk down from the root for
+    each thing, in Python."""
+    tree = three_rooms()
+    things = Things(tree)
+    rng = np.random.default_rng(5)
+    ids = things.add(rng.uniform(1, 3 * LENGTH - 1, 60), rng.uniform(1, WIDTH - 1, 60), CLIP)
+    things.remove(ids[::7])
+    expected = np.array(tree.node_bbox, dtype=np.float64).reshape(-1, 4)
+    for i in np.flatnonzero(things.alive & things.drawn).tolist():
+        reach = SPRITE_REACH * things.radius[i] + SPRITE_MARGIN
+        x, y, node = things.x[i], things.y[i], tree.root
+        while node >= 0:
+            box = expected[node]
+            box[:2] = np.minimum(box[:2], (x - reach, y - reach))
+            box[2:] = np.maximum(box[2:], (x + reach, y + reach))
+            a, b, c = tree.node_line[node]
+            node = tree.node_child[node][0 if a * x + b * y + c <= 0 else 1]
+    assert np.array_equal(things.subtree_boxes(), expected)

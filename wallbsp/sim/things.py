@@ -38,6 +38,7 @@ import numpy as np
 from wallbsp.sim.blockmap import Blockmap
 from wallbsp.geometry import exact_side
 from wallbsp.sim.collision import box_sides
+from wallbsp.sim.leafwalk import descend, grow_boxes
 from wallbsp.sim.thingtypes import (DEATHMATCH_START, PLAYER_STARTS, SOLID, SPAWNCEILING,
     thing_info)
 
@@ -118,7 +119,7 @@ def locate_leaves(tree, x, y) -> np.ndarray:
     """The leaf holding each point (int64 array), by the tree's own side rule (``BSPTree.walk``
     and ``locate``): the sign of ``a*x + b*y + c`` in doubles where it is clear, exactly
     otherwise, a point on a line going to the line's front.  All points descend together,
-    one numpy step per tree level.  ValueError for a point that is not finite."""
+    in one compiled walk (``leafwalk.descend``).  ValueError for a point that is not finite."""
     x = np.atleast_1d(np.asarray(x, dtype=np.float64))
     y = np.atleast_1d(np.asarray(y, dtype=np.float64))
     if not (np.isfinite(x).all() and np.isfinite(y).all()):
@@ -128,16 +129,13 @@ def locate_leaves(tree, x, y) -> np.ndarray:
         return ~node
     t = _tree_lines(tree)
     tol = tree.side_tolerance(float(np.abs(x).max()), float(np.abs(y).max()))
-    active = np.arange(x.size)
-    while active.size:
-        at, px, py = node[active], x[active], y[active]
-        s = t.a[at] * px + t.b[at] * py + t.c[at]
-        unsure = np.flatnonzero(~((s < -tol) | (s > tol)))
-        for k in unsure.tolist():                  # on or next to a line: decide exactly
-            s[k] = exact_side(*t.exact[at[k]], float(px[k]), float(py[k]))
-        nxt = np.where(s <= 0, t.front[at], t.back[at])
-        node[active] = nxt
-        active = active[nxt >= 0]
+    unsure = descend(t.a, t.b, t.c, t.front, t.back, x, y, tol, node, np.arange(x.size))
+    while unsure.size:                             # on or next to a line: decide exactly
+        for k in unsure.tolist():
+            at = int(node[k])
+            side = exact_side(*t.exact[at], float(x[k]), float(y[k]))
+            node[k] = t.front[at] if side <= 0 else t.back[at]
+        unsure = descend(t.a, t.b, t.c, t.front, t.back, x, y, tol, node, unsure)
     return ~node
 
 
@@ -284,17 +282,9 @@ class Things:
         boxes = np.array(self.tree.node_bbox, dtype=np.float64).reshape(-1, 4)
         linked = np.flatnonzero(self.alive & self.drawn)
         if linked.size and len(boxes):
-            above = _tree_lines(self.tree).ancestors[self.leaf[linked]]
-            thing, depth = np.nonzero(above >= 0)
-            node, thing = above[thing, depth], linked[thing]
-            reach = SPRITE_REACH * self.radius[thing] + SPRITE_MARGIN
-            x, y = self.x[thing], self.y[thing]
-            columns = [boxes[:, k].copy() for k in range(4)]
-            np.minimum.at(columns[0], node, x - reach)
-            np.minimum.at(columns[1], node, y - reach)
-            np.maximum.at(columns[2], node, x + reach)
-            np.maximum.at(columns[3], node, y + reach)
-            boxes = np.stack(columns, axis=1)
+            reach = SPRITE_REACH * self.radius[linked] + SPRITE_MARGIN
+            grow_boxes(boxes, _tree_lines(self.tree).ancestors, self.leaf, self.x, self.y,
+                       reach, linked)
         self._boxes = (self.version, boxes)
         return boxes
 
