@@ -108,3 +108,36 @@ def test_options_are_checked():
                 {"buttons": ("JUMP",)}, {"frag_limit": 0}, {"render_mode": "human"}):
         with pytest.raises(ValueError):
             parallel_env(**bad)
+
+
+def test_four_agents_on_freedoom2_map01(freedoom_cache):
+    tree = freedoom_cache.tree("freedoom2.wad", "MAP01")
+    env = parallel_env(level=tree, players=4, mode="deathmatch", size=(48, 32),
+                       observations=("rgb", "gamevars"))
+    obs, infos = env.reset(seed=2)
+    starts = {(s.x, s.y) for s in env.world.play.deathmatchstarts}
+    assert len(env.world.play.deathmatchstarts) == 10            # MAP01's own
+    assert {(round(p.x), round(p.y)) for p in env.world.players} <= starts
+    for _ in range(5):
+        obs, *_ = env.step({a: env.action_space(a).sample() for a in env.agents})
+    views = [obs[a]["rgb"] for a in env.possible_agents]
+    assert all(not np.array_equal(views[0], v) for v in views[1:])
+    coop = parallel_env(level=tree, players=4, mode="coop", size=(48, 32))
+    coop.reset(seed=0)
+    assert [(round(p.x), round(p.y)) for p in coop.world.players] == \
+        [(-192, -160), (-192, -208), (-192, -64), (-192, -112)]    # starts 1-4
+
+
+def test_the_benchmark_runs_quick():
+    import json
+    import subprocess
+    import sys
+    from pathlib import Path
+    root = Path(__file__).resolve().parent.parent
+    done = subprocess.run([sys.executable, str(root / "tools" / "bench.py"), "multiagent",
+                           "--quick"], capture_output=True, text=True, timeout=300,
+                          check=True)
+    rows = json.loads(done.stdout)["rows"]
+    assert [r["agents"] for r in rows] == [2, 4]
+    assert all(r["steps_per_s"] > 0 and
+               abs(r["agent_steps_per_s"] - r["steps_per_s"] * r["agents"]) < 1 for r in rows)

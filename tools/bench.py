@@ -28,6 +28,7 @@ BENCHMARKS = {
     "vector": ("vector", "make_vec's batched vector env against one env and gymnasium's"),
     "playsim": ("playsim", "DOOM's play simulation: demo playback tics/s against Chocolate Doom"),
     "scenarios": ("scenarios", "ViZDoom's scenarios beside ViZDoom: steps/s, a random agent's returns"),
+    "multiagent": ("multiagent", "several agents in one world: steps/s for 2 and 4 agents"),
     "hud": ("hud", "the status bar, weapon, messages and flashes: CPU ms a frame and a tic"),
 }
 
