@@ -21,7 +21,8 @@ second 1 or 3 picks the chainsaw or the super shotgun), Pause, Tab automap, O ma
 overlay/full, L partition lines, T things on the map, X textures / flat colours, R or F1
 readout, P front-to-back / painter's, [ ] internal resolution, - = status bar on / off
 (DOOM's screen size), F or F11 fullscreen, K or F12 screenshot (the picture as shown,
-``wallbsp-shot-NNN.png`` here), H help line, Esc quit.
+``wallbsp-shot-NNN.png`` here), H help line; Esc DOOM's menu (new game, options, load,
+save, quit: ``gameflow``), F2 save, F3 load, F6 quicksave, F9 quickload, F10 quit.
 
 Headless (``frames=N``): N frames with no input, each followed by one tic turning ``turn``
 degrees, under SDL's dummy driver when there is no window system.  An interactive
@@ -46,6 +47,7 @@ from wallbsp.game.playsim.structs import BT_USE
 from wallbsp.game.ticcmds import ticcmd
 from wallbsp.game.world import TICRATE, World
 from wallbsp.app.audio import close_sound, hear, open_sound, tic_sound
+from wallbsp.app.gameflow import GameFlow
 from wallbsp.app.controls import bindings, handle_events  # noqa: F401 - the app's names
 from wallbsp.app.gamescreen import NO_BLEND, draw_frame, view_camera  # noqa: F401
 from wallbsp.app.hud import say
@@ -141,19 +143,23 @@ class Walkthrough:
 def run_walkthrough(tree, *, size=(320, 200), window=(960, 600), frames=None, turn=0.0,
                     screenshot=None, max_fps=None, order="front_to_back", fov=90.0,
                     demo=None, next_level=None, skill=3, sound=True, music=True,
-                    keys=None, statusbar=True) -> Summary:
+                    keys=None, statusbar=True, saves=None, menus=None) -> Summary:
     """Walk ``tree`` in a window; with ``frames=N`` render N frames headless and return the
     summary.  ``screenshot``: save the last picture (internal resolution, as shown) as a
     PNG.  ``demo``: record the tics into it; ``next_level(exit)``: the tree to go on to;
     ``skill``: DOOM's skill 1-5 (which things are there; a demo records it); ``sound``,
     ``music``: DOOM's sound effects and music; ``keys``: action -> key names
-    (``config.read_bindings``); ``statusbar``: the view above DOOM's status bar."""
+    (``config.read_bindings``); ``statusbar``: the view above DOOM's status bar;
+    ``menus``: DOOM's menus, intermission and saves (``gameflow``; default: interactive
+    walks only), saves in the folder ``saves`` (default ``app.saves.saves_folder``)."""
     if frames is None:
         check_display()
     elif no_window_system():
         os.environ["SDL_VIDEODRIVER"] = "dummy"
     walk = Walkthrough.at_start(tree, size, window, skill, order=order, fov=fov, demo=demo,
                                 next_level=next_level, key_names=keys, statusbar=statusbar)
+    if menus or (menus is None and frames is None):
+        walk.overlay = GameFlow(walk, start_level, saves)
     prepare_renderer(walk)
     open_display(walk)
     try:
@@ -262,6 +268,8 @@ def run_tics(walk, dt):
 def run_tic(walk, cmd):
     """One tic of the world with the tic command ``cmd`` (recorded while on the first
     level); the Hud's tic, the sound's, the messages; an exit or a restart."""
+    if walk.overlay is not None and hasattr(walk.overlay, "tic") and walk.overlay.tic(walk, cmd):
+        return                         # the overlay's tic instead (an intermission)
     walk.previous = walk.world.camera(walk.fov)
     walk.world.tic(cmd)
     if walk.demo is not None:
@@ -291,6 +299,9 @@ def _show_messages(walk):
 def leave_level(walk):
     """The level was left: say so, then the next level (``next_level``) or this one again.
     (The one place a level's end is handled: an intermission goes here.)"""
+    if walk.overlay is not None and hasattr(walk.overlay, "level_left") \
+            and walk.overlay.level_left(walk):
+        return                         # the overlay's intermission, then its next level
     kind = walk.world.exited
     following = walk.next_level(kind) if walk.next_level is not None else None
     tree = following if following is not None else walk.world.tree
@@ -298,11 +309,12 @@ def leave_level(walk):
     start_level(walk, tree, f"Level exited ({kind} exit): {where}")
 
 
-def start_level(walk, tree, text):
+def start_level(walk, tree, text, world=None):
     """A fresh World of ``tree`` at the same skill (the recording stops: a demo is one
-    level from its start), heard by the sound, and ``text`` said."""
-    skill = walk.world.skill
-    walk.world, walk.previous, walk.demo, walk.seen_message = World(tree, skill), None, None, 0
+    level from its start), heard by the sound, and ``text`` said (``world``: one already
+    made of ``tree``, a loaded save)."""
+    world = World(tree, walk.world.skill) if world is None else world
+    walk.world, walk.previous, walk.demo, walk.seen_message = world, None, None, 0
     walk.was_dead = False
     walk.map_cache, walk.partitions = (None, None), None
     hear(walk)

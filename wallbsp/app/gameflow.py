@@ -1,0 +1,236 @@
+"""The flow of a game in the walkthrough: DOOM's menus over it, the intermission after a
+level, the next map, new games, saves and loads.  A ``GameFlow`` is the walkthrough's
+``overlay`` (``controls``: it takes keys first; ``gamescreen``: it draws last):
+
+- ``key(walk, code)``: Esc and F2-F10 open DOOM's menus (``screen.menu.Menu``); while a
+  menu is up it takes the keys, and the game stands still (``pauses``, DOOM's single
+  player); its events become sounds (``sfx_`` names through the walkthrough's sound system)
+  and actions: a new game (episode and skill; Doom II and our levels have no episodes), a
+  save or load in six slots (``app.saves``, ``--saves DIR``), options (messages, the
+  sound volumes, the status bar as DOOM's screen size; mouse sensitivity and detail are
+  kept but change nothing), quit (confirmed).
+- ``level_left(walk)``: a level's exit starts the intermission (the playsim's own
+  ``WI_Ticker``, drawn by ``screen.intermission``): ``tic(walk, cmd)`` runs its tics (use
+  or fire skip as in DOOM) and, when DOOM would load the next map, the walkthrough's next
+  level starts (``start_level``).  Doom's E1M8 (its finale) goes straight on.
+- ``draw(walk, picture)``: the intermission over everything, then the menu.
+"""
+from __future__ import annotations
+
+import sys
+import time
+
+from wallbsp.app.saves import SaveError, load_world, read_slots, save_world, saves_folder
+from wallbsp.game.maporder import next_map
+from wallbsp.game.playsim.game import GA_WORLDDONE, GS_INTERMISSION
+from wallbsp.game.world import TICRATE
+from wallbsp.screen.art import art_for
+from wallbsp.screen.intermission import IntermissionScreen
+from wallbsp.screen.menu import (EndGame, LoadGame, Menu, NewGame, Option, Quit, SaveGame,
+                                 Sound)
+from wallbsp.screen.menudraw import MenuScreen, menu_art, string_width
+from wallbsp.sim import info
+
+__all__ = ["GameFlow", "menu_key_name", "wad_trees"]
+
+COMMERCIAL = 2
+
+
+def wad_trees(world):
+    """``map name -> tree`` for the maps of ``world``'s WAD (None for our own levels)."""
+    if world.wad_map is None:
+        return None
+    wad = world.wad_map[0]
+
+    def tree_of(name):
+        from wallbsp.bsp.build import compile_level
+        from wallbsp.level.wadmap import load_wad_level
+        return compile_level(load_wad_level(wad, name))
+    return tree_of
+
+
+def menu_key_name(code) -> str | None:
+    """A pygame key code as the menu's key name (None: not a key the menu reads)."""
+    import pygame
+    named = {pygame.K_ESCAPE: "escape", pygame.K_UP: "up", pygame.K_DOWN: "down",
+             pygame.K_LEFT: "left", pygame.K_RIGHT: "right", pygame.K_RETURN: "enter",
+             pygame.K_KP_ENTER: "enter", pygame.K_BACKSPACE: "backspace"}
+    named.update({getattr(pygame, f"K_F{n}"): f"f{n}" for n in range(2, 11)})
+    if code in named:
+        return named[code]
+    if isinstance(code, int) and 32 <= code < 127:
+        return chr(code)
+    return None
+
+
+class GameFlow:
+    """Menus, intermission and the next map for a walkthrough (module doc)."""
+
+    def __init__(self, walk, start_level, saves=None, tree_of=None):
+        self.start_level = start_level          # (walk, tree, text): the walkthrough's
+        self.saves = saves_folder(saves)
+        self.tree_of = tree_of or wad_trees(walk.world)   # a WAD's map name -> its tree
+        self.menu = Menu(read_slots=lambda: read_slots(self.saves))
+        self.menu_screen = MenuScreen()
+        self.intermission = None                # an IntermissionScreen while one runs
+        self.names = (None, None)
+        self.following = None                   # the tree after the intermission
+        self._clock = None
+        self._game_of(walk.world)
+
+    def _game_of(self, world) -> None:
+        """What the menu must know of the game: Doom II or not, how many episodes."""
+        play = world.play
+        self.menu.commercial = play.gamemode == COMMERCIAL or world.wad_map is None
+        names = set(getattr(play, "wad_dir", ()) or ())
+        self.menu.episodes = max(1, sum(f"E{e}M1" in names for e in range(1, 5)))
+        art = menu_art(art_for(play))
+        self.menu.char_width = lambda ch: string_width(art, ch)
+
+    @property
+    def pauses(self) -> bool:
+        """The game stands still while a menu or a question is up."""
+        return self.menu.active or self.menu.message is not None
+
+    # -- keys -------------------------------------------------------------------------------
+    def key(self, walk, code) -> bool:
+        name = menu_key_name(code)
+        self.menu.in_level = self.intermission is None and not walk.world.exited
+        events = self.menu.key(name) if name is not None else None
+        if events is None:
+            return self.pauses              # the menu up takes every key; else the game's
+        for event in events:
+            self._do(walk, event)
+        return True
+
+    def _do(self, walk, event) -> None:
+        if isinstance(event, Sound):
+            self._sound(walk, event.name)
+        elif isinstance(event, Quit):
+            self._sound(walk, event.sound)
+            walk.running = False
+        elif isinstance(event, NewGame):
+            self._new_game(walk, event)
+        elif isinstance(event, SaveGame):
+            self._save(walk, event)
+        elif isinstance(event, LoadGame):
+            self._load(walk, event)
+        elif isinstance(event, EndGame):
+            self._new_game(walk, NewGame(1, walk.world.skill))
+        elif isinstance(event, Option):
+            self._option(walk, event)
+
+    def _sound(self, walk, name: str) -> None:
+        sound = getattr(walk, "sound", None)
+        sfx = getattr(info, f"sfx_{name}", None)
+        if sound is not None and sfx is not None and getattr(sound, "play", None) is not None:
+            sound.start_sound(None, sfx)
+
+    def _say(self, walk, text: str) -> None:
+        walk.hud.say(text)
+
+    def _new_game(self, walk, event) -> None:
+        """G_DeferedInitNew: the episode's first map (a WAD), or our level again, at the
+        skill chosen."""
+        world, tree = walk.world, walk.world.tree
+        if world.wad_map is not None and self.tree_of is not None:
+            name = "MAP01" if self.menu.commercial else f"E{event.episode}M1"
+            try:
+                tree = self.tree_of(name)
+            except (OSError, ValueError) as e:
+                self._say(walk, f"cannot start {name}: {e}")
+                return
+        self.intermission = None
+        world.skill = event.skill           # start_level starts the new World at this skill
+        self.start_level(walk, tree, f"New game: {tree.level.name}")
+
+    def _save(self, walk, event) -> None:
+        try:
+            path = save_world(walk.world, self.saves, event.slot, event.name)
+        except (SaveError, OSError) as e:
+            print(f"wallbsp: {e}", file=sys.stderr)
+            self._say(walk, "game not saved (see the terminal)")
+            return
+        self._say(walk, f"game saved ({path.name})")
+
+    def _load(self, walk, event) -> None:
+        try:
+            world = load_world(self.saves, event.slot, walk.world, self.tree_of)
+        except SaveError as e:
+            print(f"wallbsp: {e}", file=sys.stderr)
+            self._say(walk, "not loaded: the save cannot be read (see the terminal)")
+            return
+        self.intermission = None
+        self.start_level(walk, world.tree, "game loaded", world=world)
+
+    def _option(self, walk, event) -> None:
+        name, value = event
+        if name == "messages":
+            walk.hud.messages = bool(value)
+            walk.hud.say("Messages ON" if value else "Messages OFF")
+        elif name == "screen_size" and hasattr(walk, "statusbar"):
+            walk.statusbar = walk.hud.statusbar = value < 8
+        elif name == "sfx" and getattr(walk, "sound", None) is not None:
+            walk.sound.channels.sfx_volume = value * 8          # S_SetSfxVolume
+        elif name == "music" and getattr(walk, "sound", None) is not None \
+                and walk.sound.music is not None:
+            walk.sound.music.volume = value                     # S_SetMusicVolume
+            import pygame
+            if pygame.mixer.get_init():
+                pygame.mixer.music.set_volume(value / 15)
+
+    # -- the intermission -------------------------------------------------------------------
+    def level_left(self, walk) -> bool:
+        """A level's exit: the intermission starts (True), the next tree chosen now."""
+        world = walk.world
+        following = self._next_tree(walk, world.exited)
+        self.following = following
+        self.names = (world.level.name, following.level.name if following is not None
+                      else world.level.name)
+        self.intermission = IntermissionScreen()
+        return True
+
+    def _next_tree(self, walk, exit_kind):
+        world = walk.world
+        if world.wad_map is not None and self.tree_of is not None:
+            from wallbsp.level.wadmap import list_maps
+            name = next_map(list_maps(world.wad_map[0]), world.wad_map[1], exit_kind)
+            return self.tree_of(name) if name is not None else None
+        return walk.next_level(exit_kind) if walk.next_level is not None else None
+
+    def tic(self, walk, cmd) -> bool:
+        """One tic of the intermission (True), or False when none runs."""
+        if self.intermission is None:
+            return False
+        play = walk.world.play
+        play.g_ticker([cmd])
+        if play.gamestate == GS_INTERMISSION:
+            self.intermission.tick(play)
+        if getattr(walk, "sound", None) is not None:
+            walk.sound.update()
+        if play.gamestate != GS_INTERMISSION or play.gameaction == GA_WORLDDONE:
+            self.intermission = None
+            tree = self.following if self.following is not None else walk.world.tree
+            self.start_level(walk, tree, f"Entering {tree.level.name}")
+        return True
+
+    # -- drawing ----------------------------------------------------------------------------
+    def draw(self, walk, picture) -> None:
+        self._menu_ticks()
+        play = walk.world.play
+        art = walk.hud.art or art_for(play)
+        if self.intermission is not None and play.gamestate == GS_INTERMISSION:
+            picture[...] = 0
+            self.intermission.draw(picture, play, art, self.names)
+        self.menu_screen.draw(picture, self.menu, art)
+
+    def _menu_ticks(self) -> None:
+        """M_Ticker once for every 35th of a second of real time (the skull blinks while
+        the game stands still)."""
+        now = time.perf_counter()
+        if self._clock is None:
+            self._clock = now
+        while now - self._clock >= 1.0 / TICRATE:
+            self._clock += 1.0 / TICRATE
+            self.menu.tick()
+
