@@ -1,0 +1,131 @@
+"""The flow of a game in the walkthrough (app.gameflow, app.saves): DOOM's menus over the
+game (which stands still under them), saves and loads through them, a bad save one line
+with nothing changed, the intermission after an exit and then the next level."""
+from __future__ import annotations
+
+import os
+from pathlib import Path
+
+import numpy as np
+import pytest
+
+os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
+os.environ.setdefault("SDL_AUDIODRIVER", "dummy")
+
+pygame = pytest.importorskip("pygame")
+
+from wallbsp import compile_level, load_level  # noqa: E402
+from wallbsp.app import walkthrough as wt  # noqa: E402
+from wallbsp.app.controls import press  # noqa: E402
+from wallbsp.app.gameflow import GameFlow  # noqa: E402
+from wallbsp.app.saves import DAMAGED, read_slots, slot_path  # noqa: E402
+from wallbsp.game.playsim.game import GS_INTERMISSION, GS_LEVEL  # noqa: E402
+from wallbsp.game.ticcmds import ticcmd  # noqa: E402
+
+LEVEL = Path(__file__).resolve().parent.parent / "wallbsp" / "data" / "textured.json"
+
+
+@pytest.fixture(scope="module")
+def tree():
+    return compile_level(load_level(LEVEL))
+
+
+@pytest.fixture
+def walk(tree, tmp_path):
+    walk = wt.Walkthrough.at_start(tree, (320, 200), (320, 200), 3)
+    walk.overlay = GameFlow(walk, wt.start_level, tmp_path / "saves")
+    return walk
+
+
+def keys(walk, *names):
+    for name in names:
+        code = getattr(pygame, f"K_{name}") if len(name) > 1 else ord(name)
+        press(walk, code)
+
+
+def run(walk, tics, **command):
+    for _ in range(tics):
+        wt.run_tic(walk, ticcmd(**command))
+
+
+def test_escape_opens_dooms_menu_and_the_game_stands_still(walk):
+    keys(walk, "ESCAPE")
+    assert walk.overlay.menu.active and not wt.ticking(walk)
+    before = walk.world.tic_count
+    wt.run_tics(walk, 1.0)
+    assert walk.world.tic_count == before
+    keys(walk, "w")                              # taken by the menu, not held by the game
+    assert not walk.held
+    keys(walk, "ESCAPE")
+    assert not walk.overlay.menu.active and wt.ticking(walk)
+    keys(walk, "w")
+    assert walk.held                             # the game's key again
+
+
+def test_a_game_saved_from_the_menu_loads_back_exactly(walk, tmp_path):
+    run(walk, 30, forward=1, turn=3)
+    keys(walk, "F2", "RETURN", "a", "b", "RETURN")          # slot 1, named AB
+    assert read_slots(tmp_path / "saves")[0] == "AB"
+    saved = (walk.player.x, walk.player.y, walk.player.angle, walk.world.play.leveltime)
+    run(walk, 40, forward=1, turn=-5)
+    assert (walk.player.x, walk.player.y) != saved[:2]
+    keys(walk, "F3", "RETURN")
+    assert (walk.player.x, walk.player.y, walk.player.angle,
+            walk.world.play.leveltime) == saved
+    again = wt.Walkthrough.at_start(walk.tree, (320, 200), (320, 200), 3)
+    run(again, 30, forward=1, turn=3)
+    run(again, 25, strafe=1)
+    run(walk, 25, strafe=1)
+    assert (walk.player.x, walk.player.y) == (again.player.x, again.player.y)
+
+
+def test_a_damaged_save_is_one_line_and_nothing_changes(walk, tmp_path, capsys):
+    folder = tmp_path / "saves"
+    folder.mkdir()
+    slot_path(folder, 0).write_bytes(b"WBSPSAVE" + b"\0" * 40)
+    assert read_slots(folder)[0] == DAMAGED
+    world = walk.world
+    keys(walk, "F3", "RETURN")
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "wallbsp0.wsg" in err[0] and "byte" in err[0]
+    assert walk.world is world
+
+
+def test_an_exit_runs_the_intermission_then_the_next_level(walk):
+    walk.world.play.g_exit_level()
+    run(walk, 1)
+    flow = walk.overlay
+    assert flow.intermission is not None and walk.world.exited
+    run(walk, 5)
+    play = walk.world.play
+    assert play.gamestate == GS_INTERMISSION and play.sp_state >= 1
+    picture = np.zeros((200, 320, 3), np.uint8)
+    flow.draw(walk, picture)
+    assert picture.any()                         # our own INTERPIC and words
+    run(walk, 3, use=True)                       # use skips the counting (WI_checkForAccelerate)
+    run(walk, 3)
+    assert play.sp_state == 10 and play.cnt_kills[0] >= 0
+    first = walk.world
+    run(walk, 2, use=True)
+    for _ in range(40):
+        if walk.world is not first:
+            break
+        run(walk, 1)
+    assert walk.world is not first and walk.world.play.gamestate == GS_LEVEL
+    assert flow.intermission is None and not walk.world.exited
+
+
+def test_new_game_from_the_menu_starts_at_the_skill_chosen(walk):
+    run(walk, 10, forward=1)
+    keys(walk, "ESCAPE", "RETURN", "DOWN", "DOWN", "RETURN")     # Doom II's menu: skill 5
+    assert walk.overlay.menu.message is not None                 # nightmare asks first
+    keys(walk, "y")
+    assert walk.world.skill == 5 and walk.world.tic_count == 0
+    assert not walk.overlay.menu.active
+
+
+def test_quit_is_confirmed(walk):
+    keys(walk, "ESCAPE", "q", "RETURN", "n")
+    assert walk.running
+    keys(walk, "F10", "y")
+    assert not walk.running
