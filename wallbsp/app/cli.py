@@ -174,7 +174,8 @@ def cmd_walk(args):
         summary = run_walkthrough(tree, size=args.size, frames=args.frames, turn=args.turn,
                                   screenshot=args.screenshot, max_fps=args.max_fps, demo=demo,
                                   next_level=_next_level(args.level, args), skill=args.skill,
-                                  sound=not args.nosound, music=not args.nomusic, keys=keys)
+                                  sound=not args.nosound, music=not args.nomusic, keys=keys,
+                                  saves=args.saves)
     except (NoDisplayError, KeyConfigError) as err:
         raise UsageError(str(err)) from None
     if demo is not None:

@@ -138,6 +138,8 @@ def build_parser(commands) -> argparse.ArgumentParser:
     p.add_argument("--nomusic", action="store_true", help="no music")
     p.add_argument("--keys", metavar="FILE", help="key bindings ('action = key, key' lines; "
                    "default ~/.config/wallbsp/keys.ini when it exists)")
+    p.add_argument("--saves", metavar="DIR", help="the folder of the menu's six save slots "
+                   "(default ~/.local/share/wallbsp/saves)")
     _finish(p, commands["walk"])
 
     p = sub.add_parser("play", help="replay a demo headless and print the final state")
