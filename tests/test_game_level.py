@@ -73,7 +73,7 @@ def test_the_red_door_opens_only_with_the_red_key(tree):
     world = started(tree)
     red = [w for w in tree.level.walls if w.special == RED_DOOR]
     door = red[0].back
-    world.place_player(1088, 290, 90)              # the courtyard, facing the red door
+    world.place_player(1088, 320, 90)              # the courtyard, facing the red door
     world.tic(use=True)
     assert world.messages[-1][1] == "You need a red key to open this door"
     for _ in range(20):
@@ -83,7 +83,7 @@ def test_the_red_door_opens_only_with_the_red_key(tree):
     for _ in range(12):
         world.tic(forward=1.0)
     assert "red card" in world.player.keys
-    world.place_player(1088, 290, 90)
+    world.place_player(1088, 320, 90)
     world.tic()
     world.tic(use=True)
     for _ in range(40):

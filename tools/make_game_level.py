@@ -43,9 +43,9 @@ MAP = """
 #bbbppppbbbbbbbcccccccc######zzzzzzzzzzzzz####
 #bbbbbbbbbbbbbb######cc######zzzzzzzzzzzzz####
 #bbbbbbbbbbbbbb######cc######zzzzzzzzzzzzz####
-#bbbbbbbbbbbbbb######cc##########rr###########
+#bbbbbbbbbbbbbb######cc##########zz###########
 #######dd############cc##########rr###########
-#######dd############cc##########rr###########
+#######aa############cc##########yy###########
 #aaaaaaaaaaaa######yyyyyyyyyyyyyyyyyyyyyy#####
 #aaaaaaaaaaaa######yyyyyyyyyyyyyyyyyyyyyyuuuu#
 #aaaaaaaaaaaa######yyyyyy##yyyyyyyyyyyyyyuuuu#
