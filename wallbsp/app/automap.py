@@ -29,7 +29,8 @@ TELEPORT = 39                             # the special AM_drawWalls draws apart
 KINDS = ("wall", "teleporter", "floor_change", "ceiling_change", "two_sided")
 THING_SIZE = 16.0                         # map units: AM_drawThings' 16<<FRACBITS
 ARROW_SIZE = 8 * 16 / 7                   # map units: R = 8 * PLAYERRADIUS / 7
-MIN_PIXELS = 3.0                          # a triangle or arrow is never smaller on screen
+MIN_PIXELS = 3.0                          # a thing's triangle is never smaller on screen
+ARROW_PIXELS = 10.0                       # nor the player's arrow (the map is fitted whole)
 
 
 def line_kinds(level, floor, ceiling, flags=None) -> np.ndarray:
@@ -102,7 +103,7 @@ def draw_things(surface, view, things) -> int:
 def draw_arrow(surface, view, x, y, angle):
     """The player as DOOM's white arrow at map point (x, y) facing ``angle``."""
     import pygame
-    size = max(2 * MIN_PIXELS, ARROW_SIZE * view.scale)
+    size = max(ARROW_PIXELS, ARROW_SIZE * view.scale)
     px, py = view(x, y)
     for a, b in ARROW:
         p, q = _shape((a, b), px, py, angle, size)

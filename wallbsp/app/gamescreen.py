@@ -7,10 +7,10 @@ message, the palette flash), DOOM's "pause" picture while paused, an overlay's o
 (``walk.overlay.draw(walk, picture)``: a menu), then one ``blit_array`` and one scale into
 the window, where ``hud.draw_overlays`` adds the automap, readout and help.
 
-The picture is kept column-major (``walk.screen``, ``(width, height, 3)``), the layout
-pygame's ``blit_array`` takes and the renderer writes, so the view is one copy in;
-``walk.picture`` is the same memory as rows ``(height, width, 3)``, which the Hud draws on
-and screenshots save.
+The picture is kept column-major as the renderer writes it (``walk.packed``, one uint32
+``(r, g, b, 0)`` a pixel; ``walk.screen`` its ``(width, height, 3)`` view, the layout
+pygame's ``blit_array`` takes), so the view is one memory copy in; ``walk.picture`` is the
+same memory as rows ``(height, width, 3)``, which the Hud draws on and screenshots save.
 """
 from __future__ import annotations
 
@@ -19,6 +19,7 @@ import numpy as np
 from wallbsp.camera import Camera
 from wallbsp.app.hud import draw_overlays
 from wallbsp.render import render
+from wallbsp.render.rows import packed_pixels
 from wallbsp.screen.art import art_for
 from wallbsp.screen.hud import view_size
 from wallbsp.screen.messages import paint_text
@@ -68,9 +69,16 @@ def compose(walk, blend=1.0) -> np.ndarray:
     walk.frame = render(walk.world, view_camera(walk, blend), vw, vh, order=walk.order,
                         textures=walk.textures)
     if walk.screen is None or walk.screen.shape[:2] != (width, height):
-        walk.screen = np.zeros((width, height, 3), np.uint8)
+        # one packed pixel (r, g, b, 0) a uint32, as the renderer fills them: the view is
+        # then one memory copy in
+        walk.packed = np.zeros((width, height), np.uint32)
+        walk.screen = walk.packed.view(np.uint8).reshape(width, height, 4)[:, :, :3]
         walk.picture = walk.screen.transpose(1, 0, 2)
-    walk.screen[:, :vh] = walk.frame.color_columns
+    packed = packed_pixels(walk.frame.color_columns)
+    if packed is not None:
+        walk.packed[:, :vh] = packed.reshape(width, vh)
+    else:
+        walk.screen[:, :vh] = walk.frame.color_columns
     walk.hud.draw(walk.picture, walk.world.play)
     if walk.paused:
         draw_pause(walk.picture, walk.hud.art or art_for(walk.world.play), vh)

@@ -110,7 +110,8 @@ class Walkthrough:
     mouse_grab: bool = False
     fullscreen: bool = False
     frame: object = None             # the last rendered Frame (the 3-D view)
-    screen: object = None            # the picture, column-major (width, height, 3)
+    packed: object = None            # the picture, column-major, a uint32 a pixel
+    screen: object = None            # the same as (width, height, 3) bytes
     picture: object = None           # the same memory as rows (height, width, 3)
     frame_ms: float = 0.0            # smoothed measured frame time, for the readout
     message: str = ""
