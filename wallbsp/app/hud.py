@@ -18,7 +18,7 @@ __all__ = ["HELP", "MESSAGE_SECONDS", "draw_overlays", "readout_lines", "invento
            "texture_mode", "draw_automap", "say", "map_area"]
 
 HELP = ("WASD/arrows move   Left/Right or mouse (M grab) turn   Shift run   Alt strafe   "
-        "E/Space use   Ctrl/click fire   1-7 weapons   Pause   Esc quit",
+        "E/Space use   Ctrl/click fire   1-7 weapons   Pause   Esc menu",
         "Tab map  O overlay  L lines  T things  X textures  R stats  P painter  "
         "[ ] resolution  - = status bar  F fullscreen  K shot  H help")
 TEXT, SHADOW = (235, 235, 235), (0, 0, 0)
