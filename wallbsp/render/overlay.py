@@ -4,9 +4,9 @@ far to near (DOOM's R_DrawMasked), and the frame layers that report them (kind 4
 The things of the leaves the front-to-back walk entered are cut to those ahead of the eye
 (``sprites.visible_things``, which also says whether a drawn piece has a masked middle:
 then ``masked.masked_columns`` makes the masked walls' slices); ``composite.draw_things``
-looks the things' pictures up in a table of the choices ``sprites.pictures`` made (a
-thing seen from a rotation not chosen before sends the frame back here once, to choose
-it), clips their columns and draws them with the masked walls' slices.  The frame's
+looks the things' pictures up in a table of the choices ``sprites.pictures`` made
+(``_Choices``, filled before the draw for the things seen from a rotation, or in a frame,
+not chosen before: ``sprites.unchosen_pictures`` finds them), clips their columns and draws them with the masked walls' slices.  The frame's
 ``kind``, ``index`` and ``depth`` layers are the walls' with the overlay's pixels written
 over them (``OverlayLayers``).
 """
@@ -21,7 +21,7 @@ from wallbsp.render.atlas import atlas_for
 from wallbsp.render import composite, masked, sprites
 from wallbsp.render.entries import entries_of
 from wallbsp.render.masked import masked_keys
-from wallbsp.render.sprites import SLICE_FLOATS, SLICE_INTS, pictures, rotations
+from wallbsp.render.sprites import SLICE_FLOATS, SLICE_INTS, pictures
 from wallbsp.render.textures import level_resources
 from wallbsp.render.walk import walk_front_to_back
 
@@ -118,14 +118,16 @@ class _Choices:
             self.chosen = np.concatenate([self.chosen, np.full((more, 8), -1, np.int64)])
         return self
 
-    def choose(self, things, ids, view, atlas):
-        """Choose the pictures of things ``ids`` as the camera sees them now."""
-        changed = ids[self.kind[ids] != things.type[ids]]
-        self.chosen[changed] = -1
-        self.kind[changed] = things.type[changed]
-        rotation = rotations(view.x, view.y, things.x[ids], things.y[ids], things.angle[ids])
-        slot, mirrored = pictures(things, ids, rotation, atlas)
-        self.chosen[ids, rotation - 1] = 2 * slot + mirrored
+    def choose(self, things, ids, seen, atlas):
+        """Choose the pictures of things ``ids``, seen in directions ``seen`` (degrees from
+        the eye), that have none for the rotation they show now (a thing whose frame
+        changed has none): ``pictures`` is asked for those only."""
+        k, rotation = sprites.unchosen_pictures(ids, seen, things.angle, things.type,
+                                                self.kind, self.chosen)
+        if len(k):
+            ids = ids[k]
+            slot, mirrored = pictures(things, ids, rotation, atlas)
+            self.chosen[ids, rotation - 1] = 2 * slot + mirrored
 
 
 _CHOICES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
@@ -167,6 +169,7 @@ def draw_masked(view, u, state, tables, scene, walk, piece_keys, drawsegs, atlas
     clip = (drawsegs.col, drawsegs.w, drawsegs.open_top, drawsegs.open_bottom, drawsegs.piece,
             piece_keys, tables.key_near, tables.key_far)
     table = _choices(atlas, things)
+    table.choose(things, ids, seen[3], atlas)      # before drawing: one draw, not two
     for _ in range(2):                       # again once the missing choices are made
         arrays = (things.angle, things.type, things.sector, things.flags, things.height,
                   things.z, things.bright, table.kind, table.chosen)     # sprites.ThingArrays
@@ -175,7 +178,7 @@ def draw_masked(view, u, state, tables, scene, walk, piece_keys, drawsegs, atlas
             clip, *wall_rows, colour_columns)
         if drawn >= 0:
             break
-        table.choose(things, ids, view, atlas)
+        table.choose(things, ids, seen[3], atlas)
     stats["things_drawn"] = int(drawn)
     if not len(pixel):
         return _NOTHING, stats

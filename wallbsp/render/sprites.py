@@ -35,7 +35,7 @@ from wallbsp.sim.thingtypes import COUNTKILL, SPAWNCEILING, SPECIAL
 from wallbsp.render.project import View
 from wallbsp.render.shading import FULL_BRIGHT, far_level, light_level
 
-__all__ = ["MIN_DEPTH", "rotations", "pictures", "ThingArrays", "Seen", "Clip",
+__all__ = ["MIN_DEPTH", "rotations", "unchosen_pictures", "pictures", "ThingArrays", "Seen", "Clip",
            "visible_things", "sprite_columns", "SLICE_INTS", "SLICE_FLOATS"]
 
 # a slice (a column of a picture to draw) is a column of two arrays: ints (column, top row,
@@ -201,10 +201,38 @@ def _chosen_pictures(seen, things):
     picture = np.empty(ids.shape[0], dtype=np.int64)
     for k in range(ids.shape[0]):
         i = ids[k]
-        facing = np.floor(angle[i] / 45.0) * 45.0
-        rotation = int(np.floor((degrees[k] - facing + 202.5) / 45.0)) % 8 + 1
+        rotation = _rotation(degrees[k], angle[i])
         picture[k] = chosen[i, rotation - 1] if chosen_kind[i] == kind[i] else -1
     return picture
+
+
+@step_kernel
+def _rotation(degrees, angle):
+    """``rotations`` of one thing seen in direction ``degrees`` from the eye."""
+    facing = np.floor(angle / 45.0) * 45.0
+    return int(np.floor((degrees - facing + 202.5) / 45.0)) % 8 + 1
+
+
+@kernel
+def unchosen_pictures(ids, degrees, angle, kind, chosen_kind, chosen):
+    """``(k, rotation)`` of the things ``ids[k]`` (seen in direction ``degrees[k]``) whose
+    picture at the rotation they show is not chosen yet (``_chosen_pictures`` would give
+    -1).  A thing whose ``kind`` is no longer its row's ``chosen_kind`` gets its row
+    cleared and the new kind first (in place)."""
+    k_out = np.empty(ids.shape[0], dtype=np.int64)
+    rotation_out = np.empty(ids.shape[0], dtype=np.int64)
+    count = 0
+    for k in range(ids.shape[0]):
+        i = ids[k]
+        if chosen_kind[i] != kind[i]:
+            chosen_kind[i] = kind[i]
+            for r in range(chosen.shape[1]):
+                chosen[i, r] = -1
+        rotation = _rotation(degrees[k], angle[i])
+        if chosen[i, rotation - 1] < 0:
+            k_out[count], rotation_out[count] = k, rotation
+            count += 1
+    return k_out[:count], rotation_out[:count]
 
 
 @kernel
