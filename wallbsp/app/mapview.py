@@ -43,7 +43,8 @@ class MapView:
         """The bounds fitted into a ``size`` window, centred, ``margin`` pixels clear."""
         x0, y0, x1, y1 = bounds
         width, height = x1 - x0, y1 - y0
-        scale = min(size[0] - 2 * margin, size[1] - 2 * margin) / max(width, height, 1)
+        scale = min((size[0] - 2 * margin) / max(width, 1),
+                    (size[1] - 2 * margin) / max(height, 1))
         return cls(bounds, scale, ((size[0] - width * scale) / 2, (size[1] - height * scale) / 2))
 
     @classmethod
