@@ -152,3 +152,41 @@ def test_the_same_commands_give_the_same_states(freedoom_cache):
         runs.append((world.player.x, world.player.y, world.player.angle,
                      world.play.rng.prndindex, len(world.things)))
     assert runs[0] == runs[1]
+
+
+@needs_freedoom
+def test_each_tics_state_is_read_from_the_play(freedoom_cache):
+    """After every tic the renderer's arrays hold each live map object and each sector as
+    the play has them now (read here directly from the mobjs and sectors), and the heights'
+    version moves exactly on the tics where a height changed."""
+    from wallbsp.game.playsim.structs import Mobj
+    world = World(freedoom_cache.tree("freedoom1.wad", "E1M1"), 3)
+    world.place_player(256 + 160, 1136, 180)          # facing a zombie: shots, puffs, blood
+    state, things = world.state, world.state.things
+    heights = [(s.floorheight, s.ceilingheight) for s in world.play.sectors]
+    for i in range(70):
+        version = state.version
+        world.tic(fire=20 <= i < 40, forward=1 if i > 45 else 0, use=i == 60)
+        now = [(s.floorheight, s.ceilingheight) for s in world.play.sectors]
+        assert (state.version != version) == (now != heights)
+        heights = now
+        sectors = world.play.sectors
+        assert state.floor.tolist() == [s.floorheight / 65536 for s in sectors]
+        assert state.ceiling.tolist() == [s.ceilingheight / 65536 for s in sectors]
+        assert state.light.tolist() == [float(s.lightlevel) for s in sectors]
+        th = world.play.thinkercap.next
+        while th is not world.play.thinkercap:
+            if isinstance(th, Mobj) and th.func is not None:
+                k = things.index_of(th)
+                st = info.STATES[th.state]
+                assert things.alive[k] and (things.x[k], things.y[k], things.z[k]) == (
+                    th.x / 65536, th.y / 65536, th.z / 65536)
+                assert things.angle[k] == (th.angle % 2**32) * 360 / 2**32
+                assert things.type[k] == picture_code(st.sprite, st.frame)
+                assert things.bright[k] == bool(st.frame & 0x8000)
+                assert (things.flags[k], things.radius[k], things.height[k]) == (
+                    th.flags, th.radius / 65536, th.height / 65536)
+                if i % 7 == 0:                 # the exact walk is slow: now and then
+                    assert things.sector[k] == state.tree.locate(th.x / 65536,
+                                                                 th.y / 65536)
+            th = th.next

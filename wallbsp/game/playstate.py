@@ -30,6 +30,8 @@ knowing it.
 from __future__ import annotations
 
 import operator
+from itertools import compress
+from operator import ne
 
 import numpy as np
 
@@ -37,6 +39,7 @@ from wallbsp.sim import info
 from wallbsp.sim.state import WorldState
 from wallbsp.sim.things import Things, leaf_sectors, locate_leaves
 from wallbsp.sim.things import spawned_at
+from wallbsp.sim.thingrows import write_rows
 from wallbsp.sim.thingtypes import COUNTKILL, NOSECTOR, ThingInfo, thing_info
 
 __all__ = ["PlayState", "PlayThings", "ThingsView", "wall_lines", "picture_code",
@@ -48,9 +51,8 @@ FF_FULLBRIGHT, FF_FRAMEMASK = 0x8000, 0x7FFF
 # what a mobj's picture and place depend on, read in one call per mobj
 _READ = operator.attrgetter("x", "y", "z", "angle", "state", "flags", "radius", "height")
 _TEXTURES = operator.attrgetter("toptexture", "midtexture", "bottomtexture")
-_HEIGHTS = operator.attrgetter("floorheight", "ceilingheight")
-_LIGHT = operator.attrgetter("lightlevel")
-_FLOORPIC = operator.attrgetter("floorpic")
+# what the renderer reads of a sector, in one call per sector
+_SECTOR = operator.attrgetter("floorheight", "ceilingheight", "lightlevel", "floorpic")
 SCROLL_SPECIAL = 48                     # the wall whose texture scrolls left
 STATIC_CODE = 1 << 24                   # picture codes of the level's own types: + type
 DOOM_TYPES = frozenset(info.DOOMEDNUM) | {1, 2, 3, 4, 11}
@@ -90,7 +92,7 @@ class PlayThings(Things):
         self._slot: dict = {}            # mobj -> slot
         self._pictures: dict = {}        # picture code -> ThingInfo (what the renderer reads)
         self.static = np.zeros(0, dtype=bool)   # a level's own type: no mobj
-        self._read, self._reads, self._live = {}, [], []   # the last sync's reads
+        self._reads, self._live = [], []     # the last sync's mobjs and reads
         self._grow(capacity)
 
     def _info(self, code: int):
@@ -137,14 +139,18 @@ class PlayThings(Things):
                 live.append(th)
             th = th.next
         reads = list(map(_READ, live))
-        before = self._read
-        if len(reads) == len(before) and reads == self._reads and live == self._live:
-            return False
-        now = dict(zip(live, reads))
-        changed = [(mo, r) for mo, r in zip(live, reads) if before.get(mo) != r]
-        gone = [mo for mo in before if mo not in now] if len(now) != len(before) or \
-            len(changed) else []
-        self._read, self._reads, self._live = now, reads, live
+        last_live, last_reads = self._live, self._reads
+        if live == last_live:              # the same mobjs in the same order: row by row
+            if reads == last_reads:
+                return False
+            changed = [(mo, r) for mo, r, was in zip(live, reads, last_reads) if r != was]
+            gone = []
+        else:
+            before = dict(zip(last_live, last_reads))
+            changed = [(mo, r) for mo, r in zip(live, reads) if before.get(mo) != r]
+            now = set(live)
+            gone = [mo for mo in last_live if mo not in now]
+        self._reads, self._live = reads, live
         return self._apply(changed, gone)
 
     def place_static(self, level, skill: int) -> None:
@@ -204,24 +210,14 @@ class PlayThings(Things):
         if rows:
             a = np.array(rows, dtype=np.int64)
             ids = a[:, 0]
-            x, y = a[:, 1] * FRAC, a[:, 2] * FRAC
-            moved = (self.x[ids] != x) | (self.y[ids] != y) | ~self.alive[ids]
+            moved, placed = write_rows(a, self.x, self.y, self.z, self.angle, self.type,
+                                       self.bright, self.flags, self.drawn, self.radius,
+                                       self.height, self.alive, NOSECTOR, FRAC, ANGLE_DEGREES)
             if moved.any():
                 m = ids[moved]
-                leaf = locate_leaves(self.tree, x[moved], y[moved])
+                leaf = locate_leaves(self.tree, self.x[m], self.y[m])
                 self.leaf[m] = leaf
                 self.sector[m] = leaf_sectors(self.tree)[leaf]
-            flags = a[:, 7]
-            radius, drawn = a[:, 8] * FRAC, (flags & NOSECTOR) == 0
-            # where things are kept (leaves, boxes, blockmaps) changes only with these
-            placed = moved | (self.radius[ids] != radius) | (self.drawn[ids] != drawn) \
-                | (self.flags[ids] != flags)
-            self.x[ids], self.y[ids], self.z[ids] = x, y, a[:, 3] * FRAC
-            self.angle[ids] = (a[:, 4] & 0xFFFFFFFF) * ANGLE_DEGREES
-            self.type[ids], self.bright[ids] = a[:, 5].astype(np.int32), a[:, 6] != 0
-            self.flags[ids], self.drawn[ids] = flags, drawn
-            self.radius[ids], self.height[ids] = radius, a[:, 9] * FRAC
-            self.alive[ids] = True
             for i in ids[self.mobjtype[ids] < 0].tolist():
                 t = self.mobjs[i].type
                 self.mobjtype[i] = t
@@ -285,10 +281,8 @@ class PlayState(WorldState):
                 self._scrolling.append((wall, sd, sd.textureoffset))
         self._watched_sides = [sd for _, _, sd, _ in self._watched]
         self._textures_now = list(map(_TEXTURES, self._watched_sides))
-        self._floorpics = [s.floorpic for s in play.sectors]
-        self._heights = None
-        self._lights = None
-        self._pics = list(self._floorpics)
+        self._floorpics = [s.floorpic for s in play.sectors]     # as loaded
+        self._sectors = None             # the last sync's reads (_SECTOR) of every sector
         self.sync(slots)
         self.things.version = 0
 
@@ -299,33 +293,13 @@ class PlayState(WorldState):
     def sync(self, slots=None) -> None:
         """Read the Play's state after a tic (or at load)."""
         play = self.play
-        sectors = play.sectors
-        heights = list(map(_HEIGHTS, sectors))
-        if heights != self._heights:
-            if self._heights is None or len(heights) != len(self._heights):
-                both = np.array(heights, dtype=np.float64).reshape(-1, 2) * FRAC
-                self.floor = np.ascontiguousarray(both[:, 0])
-                self.ceiling = np.ascontiguousarray(both[:, 1])
-            else:                             # a few sectors moved: those only
-                for i in [i for i, (a, b) in enumerate(zip(heights, self._heights)) if a != b]:
-                    self.floor[i], self.ceiling[i] = heights[i][0] * FRAC, heights[i][1] * FRAC
-            self._heights = heights
-            self.version += 1
-        lights = list(map(_LIGHT, sectors))
-        if lights != self._lights:
-            if self._lights is None or len(lights) != len(self._lights):
-                self.light = np.array(lights, dtype=np.float64)
+        sectors = list(map(_SECTOR, play.sectors))
+        if sectors != self._sectors:
+            if self._sectors is None or len(sectors) != len(self._sectors):
+                self._read_sectors(sectors)
             else:
-                for i in [i for i, (a, b) in enumerate(zip(lights, self._lights)) if a != b]:
-                    self.light[i] = lights[i]
-            self._lights = lights
-        pics = list(map(_FLOORPIC, sectors))
-        if pics != self._pics:
-            for i, (was, now) in enumerate(zip(self._pics, pics)):
-                if was != now:
-                    self.floor_textures[i] = None if now == "-" else now
-            self._pics = pics
-            self.texture_version += 1
+                self._sectors_changed(sectors, self._sectors)
+            self._sectors = sectors
         textures = list(map(_TEXTURES, self._watched_sides))
         if textures != self._textures_now:
             self._textures_now = textures
@@ -333,6 +307,34 @@ class PlayState(WorldState):
         for wall, sd, first in self._scrolling:
             self.wall_x_offset[wall] = (sd.textureoffset - first) * FRAC
         self._things.sync(play, slots)
+
+    def _read_sectors(self, sectors) -> None:
+        """Every sector's heights, light and floor flat (at load)."""
+        self.floor = np.array([s[0] for s in sectors], dtype=np.float64) * FRAC
+        self.ceiling = np.array([s[1] for s in sectors], dtype=np.float64) * FRAC
+        self.light = np.array([s[2] for s in sectors], dtype=np.float64)
+        self.version += 1
+        self._sectors_changed(sectors, [(*s[:3], pic) for s, pic in zip(sectors,
+                                                                         self._floorpics)])
+
+    def _sectors_changed(self, sectors, was) -> None:
+        """The sectors whose read differs from ``was``: only those are written."""
+        moved = pictures = False
+        for i in compress(range(len(sectors)), map(ne, sectors, was)):
+            floor, ceiling, light, pic = sectors[i]
+            old_floor, old_ceiling, old_light, old_pic = was[i]
+            if floor != old_floor or ceiling != old_ceiling:
+                self.floor[i], self.ceiling[i] = floor * FRAC, ceiling * FRAC
+                moved = True
+            if light != old_light:
+                self.light[i] = light
+            if pic != old_pic:
+                self.floor_textures[i] = None if pic == "-" else pic
+                pictures = True
+        if moved:
+            self.version += 1
+        if pictures:
+            self.texture_version += 1
 
     def _read_textures(self) -> None:
         """The watched sides' textures into ``wall_textures`` (only those that differ from
