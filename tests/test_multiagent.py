@@ -7,7 +7,9 @@ import pytest
 
 pytest.importorskip("pettingzoo")
 
-from pettingzoo.test import api_test, parallel_api_test, parallel_seed_test  # noqa: E402
+with warnings.catch_warnings():      # pettingzoo.test loads its deprecated example envs
+    warnings.simplefilter("ignore", DeprecationWarning)
+    from pettingzoo.test import api_test, parallel_api_test, parallel_seed_test
 
 from wallbsp.envs import aec_env, parallel_env  # noqa: E402
 from wallbsp.game.scenario import Scenario  # noqa: E402
@@ -16,6 +18,9 @@ SMALL = {"size": (32, 24), "max_tics": 40}
 ATTACK = 1                            # DEFAULT_BUTTONS[0]: discrete action 1
 
 
+# the AEC test's opinions on Dict observations (ours, as the single-agent envs' are Dicts)
+@pytest.mark.filterwarnings("ignore:Observation is not a NumPy array")
+@pytest.mark.filterwarnings("ignore:Observation space for each agent probably")
 def test_parallel_api_and_seeding():
     with warnings.catch_warnings():
         warnings.simplefilter("error")          # no "live agent was not given ..."
@@ -24,7 +29,6 @@ def test_parallel_api_and_seeding():
     parallel_seed_test(lambda: parallel_env(mode="altdeath", action_space="multibinary",
                                             observations=("rgb", "labels"), **SMALL),
                        num_cycles=20)
-    # (the AEC test warns that a dict observation is no NumPy array: our spaces are Dicts)
     api_test(aec_env(mode="coop", action_space="box", observations=("depth",), **SMALL),
              num_cycles=20)
 
