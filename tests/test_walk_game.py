@@ -192,19 +192,39 @@ def test_a_new_level_is_heard(opened):
     assert walk.sound.play is walk.world.play is not first
 
 
-def test_a_headless_walk_plays_sound_through_the_mixer_and_closes_it(monkeypatch):
-    opened_with = []
-    original = app.open_sound
+MIXER_RUN = """
+import pygame, sys
+from wallbsp import load_level, compile_level
+from wallbsp.app import walkthrough as app
+opened = []
+original = app.open_sound
+def spy(walk, effects, music):
+    original(walk, effects, music)
+    opened.append(walk.sound.mixer is not None and bool(pygame.mixer.get_init()))
+app.open_sound = spy
+app.run_walkthrough(compile_level(load_level(sys.argv[1])), frames=3, size=(80, 50),
+                    window=(80, 50))
+print(opened, bool(pygame.mixer.get_init()))
+"""
 
-    def spy(walk, effects, music):
-        original(walk, effects, music)
-        opened_with.append(walk.sound.mixer is not None)
-    monkeypatch.setattr(app, "open_sound", spy)
-    app.run_walkthrough(medikit_tree(), frames=3, size=(80, 50), window=(80, 50))
-    assert opened_with == [True] and not pygame.mixer.get_init()
+
+def test_a_headless_walk_plays_sound_through_the_mixer_and_closes_it():
+    """In a fresh process (SDL's audio state is the process's: another test's failed
+    driver must not decide this one)."""
+    import subprocess
+    import sys
+    from importlib.resources import files
+    level = str(files("wallbsp") / "data" / "default.json")
+    env = {**os.environ, "SDL_VIDEODRIVER": "dummy", "SDL_AUDIODRIVER": "dummy"}
+    run = subprocess.run([sys.executable, "-c", MIXER_RUN, level], capture_output=True,
+                         text=True, env=env, timeout=120)
+    assert run.returncode == 0, run.stderr
+    assert run.stdout.strip().splitlines()[-1] == "[True] False"
+    assert "sound off" not in run.stderr
 
 
 def test_without_an_audio_device_the_walk_says_so_once_and_goes_on(monkeypatch, capsys):
+    pygame.mixer.quit()                        # a mixer left open would be used as it is
     monkeypatch.setenv("SDL_AUDIODRIVER", "no-such-audio-driver")
     summary = app.run_walkthrough(medikit_tree(), frames=3, size=(80, 50), window=(80, 50))
     assert summary["frames"] == 3

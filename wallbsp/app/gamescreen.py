@@ -7,10 +7,11 @@ message, the palette flash), DOOM's "pause" picture while paused, an overlay's o
 (``walk.overlay.draw(walk, picture)``: a menu), then one ``blit_array`` and one scale into
 the window, where ``hud.draw_overlays`` adds the automap, readout and help.
 
-The picture is kept column-major as the renderer writes it (``walk.packed``, one uint32
-``(r, g, b, 0)`` a pixel; ``walk.screen`` its ``(width, height, 3)`` view, the layout
-pygame's ``blit_array`` takes), so the view is one memory copy in; ``walk.picture`` is the
-same memory as rows ``(height, width, 3)``, which the Hud draws on and screenshots save.
+The picture is kept in rows (``walk.picture``, ``(height, width, 3)``, C-ordered), which the
+Hud draws on fastest (its status bar is whole rows) and screenshots save; the view goes in
+by one compiled pass from the renderer's packed column-major pixels, and ``walk.screen`` is
+the same memory as ``(width, height, 3)`` for ``blit_array`` (measured at 320 × 200: view
+in 0.03 ms, Hud 0.03, blit 0.06, against 0.004, 0.09 and 0.08 kept column-major).
 """
 from __future__ import annotations
 
@@ -19,7 +20,7 @@ import numpy as np
 from wallbsp.camera import Camera
 from wallbsp.app.hud import draw_overlays
 from wallbsp.render import render
-from wallbsp.render.rows import packed_pixels
+from wallbsp.render.rows import packed_pixels, rgb_rows_kernel
 from wallbsp.screen.art import art_for
 from wallbsp.screen.hud import view_size
 from wallbsp.screen.messages import paint_text
@@ -68,17 +69,14 @@ def compose(walk, blend=1.0) -> np.ndarray:
     vw, vh = view_size(width, height, walk.statusbar)
     walk.frame = render(walk.world, view_camera(walk, blend), vw, vh, order=walk.order,
                         textures=walk.textures)
-    if walk.screen is None or walk.screen.shape[:2] != (width, height):
-        # one packed pixel (r, g, b, 0) a uint32, as the renderer fills them: the view is
-        # then one memory copy in
-        walk.packed = np.zeros((width, height), np.uint32)
-        walk.screen = walk.packed.view(np.uint8).reshape(width, height, 4)[:, :, :3]
-        walk.picture = walk.screen.transpose(1, 0, 2)
+    if walk.picture is None or walk.picture.shape[:2] != (height, width):
+        walk.picture = np.zeros((height, width, 3), np.uint8)
+        walk.screen = walk.picture.transpose(1, 0, 2)
     packed = packed_pixels(walk.frame.color_columns)
-    if packed is not None:
-        walk.packed[:, :vh] = packed.reshape(width, vh)
+    if packed is not None:          # the renderer's packed pixels, turned into rows at once
+        rgb_rows_kernel(packed.reshape(vw, vh), walk.picture[:vh])
     else:
-        walk.screen[:, :vh] = walk.frame.color_columns
+        walk.picture[:vh] = walk.frame.color
     walk.hud.draw(walk.picture, walk.world.play)
     if walk.paused:
         draw_pause(walk.picture, walk.hud.art or art_for(walk.world.play), vh)

@@ -110,9 +110,8 @@ class Walkthrough:
     mouse_grab: bool = False
     fullscreen: bool = False
     frame: object = None             # the last rendered Frame (the 3-D view)
-    packed: object = None            # the picture, column-major, a uint32 a pixel
-    screen: object = None            # the same as (width, height, 3) bytes
-    picture: object = None           # the same memory as rows (height, width, 3)
+    picture: object = None           # the picture as rows (height, width, 3)
+    screen: object = None            # the same memory as (width, height, 3), for blit_array
     frame_ms: float = 0.0            # smoothed measured frame time, for the readout
     message: str = ""
     message_until: float = 0.0
