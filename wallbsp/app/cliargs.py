@@ -127,7 +127,8 @@ def build_parser(commands) -> argparse.ArgumentParser:
                    default=None, help="render N frames headless and report")
     p.add_argument("--turn", type=_bounded(-360, 360), default=0.0,
                    help="degrees to turn per headless frame")
-    p.add_argument("--screenshot", help="save the last frame as PNG")
+    p.add_argument("--screenshot", help="save the last picture as PNG (status bar and weapon "
+                   "included)")
     p.add_argument("--max-fps", type=_bounded(1, 1000), default=None,
                    help="frame cap (default: none)")
     p.add_argument("--record", metavar="DEMO",
