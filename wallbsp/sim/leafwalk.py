@@ -14,7 +14,18 @@ import numpy as np
 
 from wallbsp.jit import kernel
 
-__all__ = ["descend", "grow_boxes"]
+__all__ = ["extent", "descend", "grow_boxes"]
+
+
+@kernel
+def extent(x, y):
+    """``(max |x|, max |y|)`` of the points (0 for none), NaN when a point is not finite."""
+    x_max = y_max = 0.0
+    for k in range(x.shape[0]):
+        if not (np.isfinite(x[k]) and np.isfinite(y[k])):
+            return np.nan, np.nan
+        x_max, y_max = max(x_max, abs(x[k])), max(y_max, abs(y[k]))
+    return x_max, y_max
 
 
 @kernel

@@ -38,7 +38,7 @@ import numpy as np
 from wallbsp.sim.blockmap import Blockmap
 from wallbsp.geometry import exact_side
 from wallbsp.sim.collision import box_sides
-from wallbsp.sim.leafwalk import descend, grow_boxes
+from wallbsp.sim import leafwalk
 from wallbsp.sim.thingtypes import (DEATHMATCH_START, PLAYER_STARTS, SOLID, SPAWNCEILING,
     thing_info)
 
@@ -122,20 +122,24 @@ def locate_leaves(tree, x, y) -> np.ndarray:
     in one compiled walk (``leafwalk.descend``).  ValueError for a point that is not finite."""
     x = np.atleast_1d(np.asarray(x, dtype=np.float64))
     y = np.atleast_1d(np.asarray(y, dtype=np.float64))
-    if not (np.isfinite(x).all() and np.isfinite(y).all()):
+    if x.ndim != 1 or x.shape != y.shape:
+        raise ValueError("the points' x and y must be two sequences of one length")
+    x_max, y_max = leafwalk.extent(x, y)
+    if x_max != x_max or y_max != y_max:
         raise ValueError("a thing's position must be finite")
     node = np.full(x.shape, int(tree.root), dtype=np.int64)
     if tree.root < 0 or not x.size:
         return ~node
     t = _tree_lines(tree)
-    tol = tree.side_tolerance(float(np.abs(x).max()), float(np.abs(y).max()))
-    unsure = descend(t.a, t.b, t.c, t.front, t.back, x, y, tol, node, np.arange(x.size))
+    tol = tree.side_tolerance(x_max, y_max)
+    unsure = leafwalk.descend(t.a, t.b, t.c, t.front, t.back, x, y, tol, node,
+                              np.arange(x.size))
     while unsure.size:                             # on or next to a line: decide exactly
         for k in unsure.tolist():
             at = int(node[k])
             side = exact_side(*t.exact[at], float(x[k]), float(y[k]))
             node[k] = t.front[at] if side <= 0 else t.back[at]
-        unsure = descend(t.a, t.b, t.c, t.front, t.back, x, y, tol, node, unsure)
+        unsure = leafwalk.descend(t.a, t.b, t.c, t.front, t.back, x, y, tol, node, unsure)
     return ~node
 
 
@@ -283,8 +287,8 @@ class Things:
         linked = np.flatnonzero(self.alive & self.drawn)
         if linked.size and len(boxes):
             reach = SPRITE_REACH * self.radius[linked] + SPRITE_MARGIN
-            grow_boxes(boxes, _tree_lines(self.tree).ancestors, self.leaf, self.x, self.y,
-                       reach, linked)
+            leafwalk.grow_boxes(boxes, _tree_lines(self.tree).ancestors, self.leaf, self.x,
+                                self.y, reach, linked)
         self._boxes = (self.version, boxes)
         return boxes
 
