@@ -71,3 +71,21 @@ def test_a_pickup_message_reaches_the_huds_observation(level):
     env.world.messages.append((env.world.tic_count, "Picked up a medikit."))
     env.step(ACTIONS.index("noop"))
     assert env._hud.message.on and env._hud.message.text == "Picked up a medikit."
+
+
+def test_a_vector_env_draws_the_hud_into_its_batch(level):
+    from wallbsp.envs.vector import make_vec
+    keys = ("rgb", "depth", "labels")
+    vec = make_vec("wallbsp/Exit-v0", num_envs=2, workers=0, level=level, size=SIZE, hud=True,
+                   observations=keys)
+    one = make(level, hud=True, observations=keys)
+    try:
+        batch, _ = vec.reset(seed=0)
+        alone, _ = one.reset(seed=0)
+        for _ in range(5):
+            batch, *_ = vec.step(np.array([ACTIONS.index("forward")] * 2))
+            alone, *_ = one.step(ACTIONS.index("forward"))
+        for key in keys:
+            assert np.array_equal(batch[key][0], alone[key]), key
+    finally:
+        vec.close()
