@@ -92,6 +92,17 @@ class WadTextures:
     def sprite_names(self) -> list[str]:
         return list(self._sprites)
 
+    def numbers(self, kind: str) -> dict[str, int]:
+        """DOOM's number of each ``"flat"`` (its lump's place after the last F_START, as
+        R_FlatNumForName counts, sub-markers included) or ``"wall"`` texture (its place in
+        TEXTURE1 then TEXTURE2): the order animations run in (``assets.animations``)."""
+        if kind == "wall":
+            return {name: i for i, name in enumerate(self._textures)}
+        names = self.directory.names
+        starts = [i for i, n in enumerate(names) if n in FLAT_MARKERS[0]]
+        first = (starts[-1] + 1) if starts else 0
+        return {name: i - first for name, i in self._flats.items()}
+
     def has_wall(self, name: str) -> bool:
         return name in self._textures
 
