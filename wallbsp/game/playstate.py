@@ -12,7 +12,8 @@ knowing it.
   (its left one where the line has no right side).  A switch's pressed texture and the
   offset of a scrolling wall (special 48) are ``wall_textures`` and ``wall_x_offset``;
   only the sides of lines that had a special when the level was loaded are watched (no
-  other line ever changes its texture).
+  other line ever changes its texture).  ``leveltime`` is the Play's (the renderer runs
+  DOOM's animated flats and textures by it).
 - **Things**: every map object (``mobj``) is a thing of ``PlayThings`` (a ``Things``),
   drawn in its *current* state's frame: ``type`` there is a picture code (the sprite
   number × 256 + the frame letter), ``bright`` the state's full-bright bit, ``angle`` the
@@ -293,6 +294,7 @@ class PlayState(WorldState):
     def sync(self, slots=None) -> None:
         """Read the Play's state after a tic (or at load)."""
         play = self.play
+        self.leveltime = play.leveltime
         sectors = list(map(_SECTOR, play.sectors))
         if sectors != self._sectors:
             if self._sectors is None or len(sectors) != len(self._sectors):

@@ -35,6 +35,7 @@ class WorldState:
         self.wall_textures: dict = {}    # (wall, side 0/1, part) -> texture now (switches)
         self.floor_textures: dict = {}   # sector -> floor flat now (floors that change it)
         self.texture_version = 0         # incremented when a texture above changes
+        self.leveltime = 0               # tics played: animated flats and textures run by it
         self.skill = skill
         self._things = None
 
