@@ -76,8 +76,8 @@ def render(source, camera: Camera, width: int, height: int, order: str = "front_
         parts = key_parts(tables, tex)
         written = fill.paint_textured(tuple(entries), tuple(view), projection.u, tuple(parts),
                                       tuple(scene),
-                                 tuple(surfaces_of(tex, projection)), bool(light), painter,
-                                 colour)
+                                 tuple(surfaces_of(tex, projection, state.leveltime)),
+                                 bool(light), painter, colour)
     walk.stats["pixels_written"] = int(written)
     columns = colour.view(np.uint8).reshape(view.width, view.height, 4)[:, :, :3]
     layers = Layers(view, entries, None if painter else drawsegs, parts, scene, painter, colour,

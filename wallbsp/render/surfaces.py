@@ -8,6 +8,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from wallbsp.render.animate import animated_tables
 from wallbsp.render.frame import KIND_CEILING, KIND_FLOOR, KIND_WALL
 from wallbsp.render.project import sky_columns
 from wallbsp.render.shading import key_light
@@ -140,8 +141,13 @@ def _plane_bases(tex) -> np.ndarray:
     return bases
 
 
-def surfaces_of(tex, projection) -> Surfaces:
-    return Surfaces(tex.part_table, _plane_bases(tex), int(tex.sky), tex.sky_colour,
+def surfaces_of(tex, projection, leveltime: int = 0) -> Surfaces:
+    """The textured fill's tables, the animated flats and textures as they show after
+    ``leveltime`` tics (``animate``)."""
+    tables = animated_tables(tex, leveltime)
+    part_table, plane_base = tables if tables is not None else (tex.part_table,
+                                                                _plane_bases(tex))
+    return Surfaces(part_table, plane_base, int(tex.sky), tex.sky_colour,
                     _sky_columns(tex, projection), tex.base, tex.pitch, tex.stride,
                     tex.height, tex.atlas, tex.lut_flat, int(tex.n_colours), int(tex.black))
 

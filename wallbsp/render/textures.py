@@ -28,8 +28,10 @@ import weakref
 
 import numpy as np
 
+from wallbsp.assets.animations import animations
 from wallbsp.assets.naming import switched_name
 from wallbsp.assets.resources import shared_resources, sky_name
+from wallbsp.render.animate import Cycles, members
 from wallbsp.render.packing import Packer
 from wallbsp.render.tables import per_tree
 
@@ -88,6 +90,8 @@ class TexturePack:
         own = wall_part_names(level)
         names = set(own) - {None}
         names |= {switched_name(n) for n in names} - {None}
+        runs = animations(resources)               # every picture a named one cycles to
+        names |= members(runs, "wall", names | self.extra_walls)
         self.walls = {}                                  # name -> texture id (-1: no picture)
         for name in sorted(names | self.extra_walls):
             found = resources.wall(name) is not None
@@ -101,7 +105,7 @@ class TexturePack:
         self.black = int(packer.add_colours(["#000000"])[0])
         self.wall_colour = packer.add_colours([c for w in level.walls for c in (
             w.drawn_upper_color, w.color, w.drawn_lower_color)]).reshape(-1, 3)
-        self._flats(level, resources)
+        self._flats(level, resources, runs)
         sky = level.sky or sky_name(level.name)            # ResourceSet.sky's rule
         self.sky = packer.add_picture("wall", sky, True) if resources.wall(sky) else -1
         self.sky_colour = packer.add_colours([s.ceiling_color for s in level.sectors])
@@ -117,15 +121,17 @@ class TexturePack:
             np.array([getattr(w, f) for w in level.walls], dtype=bool)[tables.key_wall]
             for f in ("upper_unpegged", "lower_unpegged"))
         self.part_table = self.parts(tables, self.key_texture)
+        self.cycles = Cycles.of(runs, self.walls, self.flats, len(self.base))
 
     def wall_id(self, name) -> int:
         """The texture of wall texture ``name`` (-1: no picture, ``NO_NAME`` for None);
         KeyError for a name not packed."""
         return NO_NAME if name is None else self.walls[name]
 
-    def _flats(self, level, resources):
+    def _flats(self, level, resources, runs):
         floors = [s.floor_texture for s in level.sectors] + list(self.extra_flats)
         names = {n for n in floors + [s.ceiling_texture for s in level.sectors] if n is not None}
+        names |= members(runs, "flat", names)
         self.flats = {}                                  # name -> texture id (-1: no picture)
         for name in sorted(names):
             found = resources.flat(name) is not None
