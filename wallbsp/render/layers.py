@@ -14,11 +14,10 @@ import numpy as np
 
 from wallbsp.jit import kernel, step_kernel
 from wallbsp.render.entries import Entries
-from wallbsp.render.fill import fill_nothing, part_rows
+from wallbsp.render.fill import part_rows
 from wallbsp.render.frame import KIND_CEILING, KIND_FLOOR, KIND_NOTHING, KIND_WALL
 from wallbsp.render.project import View
-from wallbsp.render.rows import (label_rows_kernel, packed_pixels, rgb_rows_kernel,
-                                 transpose_kernel)
+from wallbsp.render.rows import packed_pixels, rgb_rows_kernel
 from wallbsp.render.surfaces import Parts, Scene
 
 __all__ = ["Layers", "paint_layers", "observe_rows"]
@@ -26,8 +25,9 @@ __all__ = ["Layers", "paint_layers", "observe_rows"]
 
 @kernel
 def paint_layers(entries, view, parts, scene, painter, kind_out, index_out, depth_out):
-    """Kind, index and depth of every pixel, column-major (the parts as the fill draws
-    them: front to back clipped, or the painter's, the nearer overwriting)."""
+    """Kind, index and depth of every pixel, into outputs indexed ``[column, row]`` (the
+    parts as the fill draws them: front to back clipped, or the painter's, the nearer
+    overwriting)."""
     entries, view, parts, scene = Entries(*entries), View(*view), Parts(*parts), Scene(*scene)
     height = view.height
     keys, cols, ws, bounds = entries.keys, entries.cols, entries.w, entries.bounds
@@ -37,10 +37,9 @@ def paint_layers(entries, view, parts, scene, painter, kind_out, index_out, dept
     for r in range(height):
         inverse[r] = 1.0 / abs(view.y0 - r)
     if painter:
-        _nothing(entries, painter, height, kind_out, index_out, depth_out)
+        _nothing(entries, painter, kind_out, index_out, depth_out)
     for i in range(len(keys)):
         key, c = keys[i], cols[i]
-        at = c * height
         for part in range(4):
             r0, r1 = part_rows(bounds, i, part, painter, height)[:2]
             if r1 <= r0:
@@ -55,46 +54,59 @@ def paint_layers(entries, view, parts, scene, painter, kind_out, index_out, dept
                 h = ceiling[index] if kind == KIND_CEILING else floor[index]
                 b = abs(view.f * (h - view.z))
             for r in range(r0, r1):
-                kind_out[at + r] = kind
-                index_out[at + r] = index
+                kind_out[c, r] = kind
+                index_out[c, r] = index
                 scale = b * inverse[r] if b > 0.0 else b
-                depth_out[at + r] = np.float32(a + scale)
+                depth_out[c, r] = np.float32(a + scale)
     if not painter:
-        _nothing(entries, painter, height, kind_out, index_out, depth_out)
+        _nothing(entries, painter, kind_out, index_out, depth_out)
 
 
 @step_kernel
-def _nothing(entries, painter, height, kind_out, index_out, depth_out):
-    """"Nothing" (``fill.fill_nothing``) in the three layers."""
-    fill_nothing(kind_out, entries, KIND_NOTHING, painter, height)
-    fill_nothing(index_out, entries, -1, painter, height)
-    fill_nothing(depth_out, entries, np.float32(math.inf), painter, height)
+def _nothing(entries, painter, kind_out, index_out, depth_out):
+    """"Nothing" (``fill.fill_nothing``) in the three layers: the whole frame before the
+    painter paints, else the windows front to back left open."""
+    if painter:
+        for c in range(kind_out.shape[0]):
+            for r in range(kind_out.shape[1]):
+                _put_nothing(kind_out, index_out, depth_out, c, r)
+        return
+    open_top, open_bottom = entries.open_top, entries.open_bottom
+    for c in range(len(open_top)):
+        top = open_top[c]
+        for r in range(top, max(open_bottom[c], top)):
+            _put_nothing(kind_out, index_out, depth_out, c, r)
+
+
+@step_kernel
+def _put_nothing(kind_out, index_out, depth_out, c, r):
+    kind_out[c, r] = KIND_NOTHING
+    index_out[c, r] = -1
+    depth_out[c, r] = np.float32(math.inf)
 
 
 @kernel
 def observe_rows(entries, view, parts, scene, painter, overlay, packed, rgb, depth_rows,
                  labels):
     """Fill the wanted outputs among ``rgb`` ``(H, W, 3)``, ``depth_rows`` ``(H, W)`` and
-    ``labels`` ``(H, W, 2)`` (one of size 0 is not wanted): ``packed`` is the frame's
+    ``labels`` ``(H, W, 2)`` int32 (one of size 0 is not wanted): ``packed`` is the frame's
     colour ``(W*H,)``; ``overlay`` the masked pass's pixels, the slice each shows and the
-    slices' kind, index and depth."""
+    slices' kind, index and depth.  The layers are painted straight into the rows (through
+    transposed views), not into columns copied after."""
     numbers = View(*view)              # the groups go on to paint_layers as they came
     width, height = numbers.width, numbers.height
     if depth_rows.size or labels.size:
-        kind = np.empty(width * height, dtype=np.uint8)
-        index = np.empty(width * height, dtype=np.int32)
-        depth = np.empty(width * height, dtype=np.float32)
+        into = labels if labels.size else np.empty((height, width, 2), dtype=np.int32)
+        kind, index = into[:, :, 0].T, into[:, :, 1].T
+        depth = depth_rows.T if depth_rows.size else np.empty((height, width),
+                                                              dtype=np.float32).T
         paint_layers(entries, view, parts, scene, painter, kind, index, depth)
         pixel, which, slice_kind, slice_index, slice_depth = overlay
         for k in range(len(pixel)):
             p, s = pixel[k], which[k]
-            kind[p], index[p] = slice_kind[s], slice_index[s]
-            depth[p] = np.float32(slice_depth[s])
-        if depth_rows.size:
-            transpose_kernel(depth.reshape(width, height), depth_rows)
-        if labels.size:
-            label_rows_kernel(kind.reshape(width, height).T, index.reshape(width, height).T,
-                              labels)
+            c, r = p // height, p % height
+            kind[c, r], index[c, r] = slice_kind[s], slice_index[s]
+            depth[c, r] = np.float32(slice_depth[s])
     if rgb.size:
         rgb_rows_kernel(packed.reshape(width, height), rgb)
 
@@ -128,14 +140,12 @@ class Layers:
     def _paint(self):
         view = self.view
         shape = (view.width, view.height)
-        n = view.width * view.height
-        kind = np.empty(n, dtype=np.uint8)
-        index = np.empty(n, dtype=np.int32)
-        depth = np.empty(n, dtype=np.float32)
+        kind = np.empty(shape, dtype=np.uint8)
+        index = np.empty(shape, dtype=np.int32)
+        depth = np.empty(shape, dtype=np.float32)
         paint_layers(tuple(self.entries), tuple(view), tuple(self.parts), tuple(self.scene),
                      self.painter, kind, index, depth)
-        return {"kind": kind.reshape(shape), "index": index.reshape(shape),
-                "depth": depth.reshape(shape)}
+        return {"kind": kind, "index": index, "depth": depth}
 
     def drawsegs(self):
         return self._drawsegs
