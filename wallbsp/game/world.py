@@ -28,6 +28,11 @@ things is the object its ``i``-th thing spawned), ``exited`` (None, ``"normal"``
 ``World(tree, skill, play=play)`` goes on with a play of the tree's level already under way
 (a loaded save: ``playsim.savegame.load_game(..., cls=world_play_class())``).
 
+``world.next_map(tree)``, once the play is done with its intermission (or Doom II's text
+screen: ``play.gameaction`` is ``GA_WORLDDONE``), goes on to the next map in the same play,
+as DOOM's G_DoWorldDone: the players keep what they hold (G_PlayerFinishLevel took their
+keys and powers at the exit).
+
 A dead player stays dead until ``use`` is pressed; then, as DOOM does in a single-player
 game, the level starts again (the thing indices start again too).
 
@@ -49,7 +54,8 @@ from wallbsp.game.playerview import (AMMO_NAMES, KEY_NAMES, POWER_NAMES, WEAPON_
                                      PlayerView)
 from wallbsp.game.playload import level_thing_keys, map_numbers, wad_map_of, world_play_class
 from wallbsp.files import LevelError
-from wallbsp.game.playsim.game import GA_COMPLETED, GA_VICTORY, GS_LEVEL
+from wallbsp.game.playsim.game import (GA_COMPLETED, GA_VICTORY, GA_WORLDDONE, GS_LEVEL,
+                                       map_lump_name)
 from wallbsp.game.playsim.levelbsp import LevelMapError
 from wallbsp.game.playsim.structs import TicCmd
 from wallbsp.game.playstate import PlayState, ThingsView
@@ -116,6 +122,32 @@ class World:
         self.state = PlayState(self.tree, play, self.skill, play.thing_slots)
         self._loads = play.loads
         self._things = ThingsView(self.state.things)
+
+    def next_map(self, tree) -> None:
+        """G_DoWorldDone: the play, done with the intermission (or Doom II's text screen),
+        loads ``tree``'s level with the same players (G_DoLoadLevel: what they hold stays
+        with them) and the world follows it.  ``tree`` is the map the play goes on to (a
+        WAD's: the one DOOM's ``wminfo.next`` names); ValueError, nothing changed, if the
+        play is not done with its level or ``tree`` is another map."""
+        play = self.play
+        if play.gameaction != GA_WORLDDONE:
+            raise ValueError("World.next_map: the play has not finished its level")
+        wad_map = wad_map_of(tree.level)
+        if self.wad_map is not None:
+            wanted = map_lump_name(play.gamemode, play.gameepisode, play.wminfo["next"] + 1)
+            if wad_map is None or wad_map[1] != wanted:
+                raise ValueError(f"World.next_map: the play goes on to {wanted}, "
+                                 f"not {tree.level.name}")
+        elif wad_map is not None:
+            raise ValueError("World.next_map: a WAD's map cannot follow a level of our own")
+        self.tree, self.level, self.wad_map = tree, tree.level, wad_map
+        play.level_things = level_thing_keys(self.level)
+        join_players(play, self.level, tree, self.player_count, self.deathmatch)
+        if wad_map is None:
+            play.levelsource = (self.level, tree)
+        play.g_do_world_done()
+        self.exited = None
+        self._adopt()
 
     # -- what the world is now ----------------------------------------------------------------
     @property
