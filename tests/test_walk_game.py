@@ -367,3 +367,46 @@ def test_the_automap_draws_the_lines_above_the_status_bar(opened):
     assert COLOURS["wall"] in colours and COLOURS["floor_change"] in colours
     assert COLOURS["ceiling_change"] in colours and COLOURS["player"] in colours
     assert not np.array_equal(shown[:, above:], np.zeros_like(shown[:, above:]))  # the bar
+
+
+def test_with_the_automap_up_minus_and_equals_zoom_it_around_the_player(opened):
+    walk = opened(medikit_tree())
+    walk.display = pygame.display.set_mode((640, 400))
+    walk.show_help = False
+    walk.world.place_player(300, 40, 90)
+    key(pygame.K_TAB)
+    key(pygame.K_EQUALS)
+    key(pygame.K_EQUALS)
+    frames(walk, 1)
+    assert walk.statusbar and walk.map_zoom == pytest.approx(2.25)
+    width, height = hud.map_area(walk)
+    shown = pygame.surfarray.array3d(walk.display)
+    centre = shown[width // 2 - 4:width // 2 + 5, height // 2 - 4:height // 2 + 5]
+    assert (centre == COLOURS["player"]).all(axis=-1).any()        # the arrow is centred
+    whole = hud.map_view(walk, (width, height))
+    assert whole.scale == pytest.approx(2.25 * hud.MapView.centred(
+        hud.level_bounds(walk.tree), (width, height)).scale)
+    for _ in range(3):
+        key(pygame.K_MINUS)
+    frames(walk, 1)
+    assert walk.map_zoom == 1.0 and walk.statusbar
+
+
+def test_the_automaps_things_stay_off_the_status_bar(opened):
+    from wallbsp.app.automap import COLOURS
+    walk = opened(medikit_tree())
+    walk.display = pygame.display.set_mode((640, 400))
+    walk.show_help = False
+    walk.world.place_player(200, 100, 90)
+    key(pygame.K_TAB)
+    frames(walk, 1)
+    size = hud.map_area(walk)
+    above = size[1]
+    whole = hud.MapView.centred(hud.level_bounds(walk.tree), size)
+    walk.map_zoom = (above / 2 + 5) / (36 * whole.scale)     # the medikit 5 px into the bar
+    frames(walk, 1)
+    assert round(hud.map_view(walk, size)(200, 64)[1]) == above + 5
+    shown = pygame.surfarray.array3d(walk.display)
+    assert (shown[:, above - 20:above] == COLOURS["thing"]).all(axis=-1).any()
+    assert not (shown[:, above:] == COLOURS["thing"]).all(axis=-1).any()
+    assert not (shown[:, above:] == COLOURS["player"]).all(axis=-1).any()

@@ -22,6 +22,9 @@ from wallbsp.app.window import (next_resolution, on_resize, save_screenshot, tog
 __all__ = ["HELD", "ACTIONS", "bindings", "handle_events", "press", "release",
            "toggle_pause", "set_statusbar"]
 
+MAP_ZOOM_STEP = 1.5     # the automap's zoom a key press
+MAP_ZOOM_MAX = 64.0
+
 HELD = ("forward", "back", "strafe_left", "strafe_right", "turn_left", "turn_right", "run",
         "strafe", "use", "fire")
 
@@ -122,8 +125,18 @@ def toggle_pause(walk):
 
 def set_statusbar(walk, shown: bool):
     """DOOM's screen size keys, in two steps: the view above the status bar, or the whole
-    screen (the weapon and messages still drawn)."""
-    walk.statusbar = walk.hud.statusbar = shown
+    screen (the weapon and messages still drawn).  With the automap up they zoom it
+    instead, as AM_Responder takes them."""
+    if walk.show_map:
+        zoom_map(walk, 1 / MAP_ZOOM_STEP if shown else MAP_ZOOM_STEP)
+    else:
+        walk.statusbar = walk.hud.statusbar = shown
+
+
+def zoom_map(walk, factor: float):
+    """The automap ``factor`` times closer (never farther than the whole level); closer
+    than that it follows the player."""
+    walk.map_zoom = min(MAP_ZOOM_MAX, max(1.0, walk.map_zoom * factor))
 
 
 ACTIONS = {

@@ -15,7 +15,7 @@ from wallbsp.app.automap import (MapView, automap_layer, draw_arrow, draw_things
 from wallbsp.screen.hud import view_size
 
 __all__ = ["HELP", "MESSAGE_SECONDS", "draw_overlays", "readout_lines", "inventory_lines",
-           "texture_mode", "draw_automap", "say", "map_area"]
+           "texture_mode", "draw_automap", "say", "map_area", "map_view"]
 
 HELP = ("WASD/arrows move   Left/Right or mouse (M grab) turn   Shift run   Alt strafe   "
         "E/Space use   Ctrl/click fire   1-7 weapons   Pause   Esc menu",
@@ -97,20 +97,38 @@ def map_area(walk):
 
 
 def draw_automap(walk):
-    """The lines in DOOM's colours (redrawn when a height changes, else cached per window
-    size and mode), the things as they are now (toggled by ``show_things``), then the
-    player's arrow; over the window above the status bar."""
+    """The lines in DOOM's colours (redrawn when a height changes or the map moves, else
+    cached per window size and mode), the things as they are now (toggled by
+    ``show_things``), then the player's arrow; over the window above the status bar."""
     size = map_area(walk)
-    view = MapView.centred(level_bounds(walk.tree), size)
+    view = map_view(walk, size)
     state = walk.world.state
-    key = (size, walk.map_overlay, walk.show_partitions, id(state), state.version)
+    key = (size, walk.map_overlay, walk.show_partitions, id(state), state.version,
+           view.scale, view.ox, view.oy)
     if walk.map_cache[0] != key:
         walk.map_cache = (key, _map_layer(walk, size, view))
     walk.display.blit(walk.map_cache[1], (0, 0))
-    if walk.show_things:
-        draw_things(walk.display, view, walk.world.things)
+    walk.display.set_clip((0, 0, *size))           # never over the status bar
+    try:
+        if walk.show_things:
+            draw_things(walk.display, view, walk.world.things)
+        player = walk.player
+        draw_arrow(walk.display, view, player.x, player.y, player.angle)
+    finally:
+        walk.display.set_clip(None)
+
+
+def map_view(walk, size) -> MapView:
+    """The whole level fitted into ``size`` (``map_zoom`` 1), or ``map_zoom`` times closer
+    with the player at the centre (DOOM's follow mode)."""
+    whole = MapView.centred(level_bounds(walk.tree), size)
+    if walk.map_zoom <= 1.0:
+        return whole
+    scale = whole.scale * walk.map_zoom
     player = walk.player
-    draw_arrow(walk.display, view, player.x, player.y, player.angle)
+    return MapView((whole.x0, 0.0, 0.0, whole.y1), scale,
+                   (size[0] / 2 - (player.x - whole.x0) * scale,
+                    size[1] / 2 - (whole.y1 - player.y) * scale))
 
 
 def _map_layer(walk, size, view):

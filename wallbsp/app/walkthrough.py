@@ -105,6 +105,7 @@ class Walkthrough:
     map_overlay: bool = False
     show_partitions: bool = False
     show_things: bool = True         # the things on the automap
+    map_zoom: float = 1.0            # the automap: 1 the whole level, closer follows
     textures: bool = True            # textured view (a level with resources), else flat
     show_readout: bool = False
     mouse_grab: bool = False
