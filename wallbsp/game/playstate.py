@@ -94,6 +94,7 @@ class PlayThings(Things):
         self._pictures: dict = {}        # picture code -> ThingInfo (what the renderer reads)
         self.static = np.zeros(0, dtype=bool)   # a level's own type: no mobj
         self._reads, self._live = [], []     # the last sync's mobjs and reads
+        self.hidden = None               # a mobj no view draws (``hide``)
         self._grow(capacity)
 
     def _info(self, code: int):
@@ -184,6 +185,16 @@ class PlayThings(Things):
         self.sector[ids] = leaf_sectors(self.tree)[leaf]
         self._changed(ids)
 
+    def hide(self, mo) -> None:
+        """Map object ``mo`` is drawn by no view from now on (a single player's own body,
+        which the eye is inside of: DOOM's MINZ cull misses it when the view is blended
+        between two tics); its thing keeps its index and every other array."""
+        self.hidden = mo
+        i = self._slot.get(mo)
+        if i is not None and self.drawn[i]:
+            self.drawn[i] = False
+            self._changed(np.array([i], dtype=np.int64))
+
     def _learn(self, st, mo) -> None:
         code = picture_code(st.sprite, st.frame)
         flags = mo.flags
@@ -223,6 +234,9 @@ class PlayThings(Things):
                 t = self.mobjs[i].type
                 self.mobjtype[i] = t
                 self.doomednum[i] = info.MOBJINFO[t].doomednum
+            hidden = slot_of.get(self.hidden) if self.hidden is not None else None
+            if hidden is not None:           # its row written as drawn again: not so
+                self.drawn[hidden] = False
             if placed.any():
                 self._changed(ids[placed])
             # a new frame, angle or height only: the renderer reads those arrays each frame

@@ -25,6 +25,9 @@ things is the object its ``i``-th thing spawned), ``exited`` (None, ``"normal"``
 ``"secret"``; once left, a tic does nothing), ``tic_count``, ``camera()`` (the eye at
 ``viewz``), ``messages`` (``(tic, text)``: DOOM's pickup and locked-door messages).
 
+The single player's own body is drawn by no view (a view blended between two tics trails
+it by a few units; ``PlayThings.hide``); other players' bodies are drawn.
+
 ``World(tree, skill, play=play)`` goes on with a play of the tree's level already under way
 (a loaded save: ``playsim.savegame.load_game(..., cls=world_play_class())``).
 
@@ -120,6 +123,8 @@ class World:
         """The renderer's state read from the play's level as it was just loaded."""
         play = self.play
         self.state = PlayState(self.tree, play, self.skill, play.thing_slots)
+        if self.player_count == 1:       # the eye is in the body: no view draws it
+            self.state.things.hide(play.players[play.consoleplayer].mo)
         self._loads = play.loads
         self._things = ThingsView(self.state.things)
 
