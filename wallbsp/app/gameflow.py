@@ -7,13 +7,18 @@ level, the next map, new games, saves and loads.  A ``GameFlow`` is the walkthro
   player); its events become sounds (``sfx_`` names through the walkthrough's sound system)
   and actions: a new game (episode and skill; Doom II and our levels have no episodes), a
   save or load in six slots (``app.saves``, ``--saves DIR``), options (messages, the
-  sound volumes, the status bar as DOOM's screen size; mouse sensitivity and detail are
-  kept but change nothing), quit (confirmed).
+  sound volumes, the status bar as DOOM's screen size, the mouse sensitivity of the mouse
+  turn (``keys``); detail is kept but changes nothing), quit (confirmed).
 - ``level_left(walk)``: a level's exit starts the intermission (the playsim's own
   ``WI_Ticker``, drawn by ``screen.intermission``): ``tic(walk, cmd)`` runs its tics (use
-  or fire skip as in DOOM) and, when DOOM would load the next map, the walkthrough's next
-  level starts (``start_level``).  Doom's E1M8 (its finale) goes straight on.
-- ``draw(walk, picture)``: the intermission over everything, then the menu.
+  or fire skip as in DOOM), then DOOM's finale where F_StartFinale shows one
+  (``screen.finale``: Doom's text and end picture after an episode's last map, which end
+  the game as in DOOM, the menu's New Game starting another; Doom II's text screens,
+  skipped by any button after 50 tics) and, when DOOM would load the next map, the same
+  play goes on there (``World.next_map``: the player keeps weapons, ammo, armour and
+  health, as DOOM's G_DoWorldDone; ``start_level`` with that world).  Our levels have no
+  text screens; one with no level after it is played again by the same play.
+- ``draw(walk, picture)``: the intermission or finale over everything, then the menu.
 """
 from __future__ import annotations
 
@@ -22,9 +27,10 @@ import time
 
 from wallbsp.app.saves import SaveError, load_world, read_slots, save_world, saves_folder
 from wallbsp.game.maporder import next_map
-from wallbsp.game.playsim.game import GA_WORLDDONE, GS_INTERMISSION
+from wallbsp.game.playsim.game import GA_WORLDDONE, GS_FINALE, GS_INTERMISSION
 from wallbsp.game.world import TICRATE
 from wallbsp.screen.art import art_for
+from wallbsp.screen.finale import FinaleScreen
 from wallbsp.screen.intermission import IntermissionScreen
 from wallbsp.screen.menu import (EndGame, LoadGame, Menu, NewGame, Option, Quit, SaveGame,
                                  Sound)
@@ -73,6 +79,7 @@ class GameFlow:
         self.menu = Menu(read_slots=lambda: read_slots(self.saves))
         self.menu_screen = MenuScreen()
         self.intermission = None                # an IntermissionScreen while one runs
+        self.finale = None                      # a FinaleScreen while DOOM's finale shows
         self.names = (None, None)
         self.following = None                   # the tree after the intermission
         self._clock = None
@@ -140,7 +147,7 @@ class GameFlow:
             except (OSError, ValueError) as e:
                 self._say(walk, f"cannot start {name}: {e}")
                 return
-        self.intermission = None
+        self.intermission = self.finale = None
         world.skill = event.skill           # start_level starts the new World at this skill
         self.start_level(walk, tree, f"New game: {tree.level.name}")
 
@@ -160,7 +167,7 @@ class GameFlow:
             print(f"wallbsp: {e}", file=sys.stderr)
             self._say(walk, "not loaded: the save cannot be read (see the terminal)")
             return
-        self.intermission = None
+        self.intermission = self.finale = None
         self.start_level(walk, world.tree, "game loaded", world=world)
 
     def _option(self, walk, event) -> None:
@@ -168,6 +175,8 @@ class GameFlow:
         if name == "messages":
             walk.hud.messages = bool(value)
             walk.hud.say("Messages ON" if value else "Messages OFF")
+        elif name == "mouse":
+            walk.mouse_sensitivity = value                      # keys.tic_command's turn
         elif name == "screen_size" and hasattr(walk, "statusbar"):
             walk.statusbar = walk.hud.statusbar = value < 8
         elif name == "sfx" and getattr(walk, "sound", None) is not None:
@@ -199,20 +208,47 @@ class GameFlow:
         return walk.next_level(exit_kind) if walk.next_level is not None else None
 
     def tic(self, walk, cmd) -> bool:
-        """One tic of the intermission (True), or False when none runs."""
+        """One tic of the screens between levels (True), or False when none runs: the
+        intermission, the finale (F_StartFinale: Doom's after an episode's last map, Doom
+        II's text screens), then, when the play is done with them, the next map."""
         if self.intermission is None:
             return False
         play = walk.world.play
         play.g_ticker([cmd])
         if play.gamestate == GS_INTERMISSION:
             self.intermission.tick(play)
+        elif play.gamestate == GS_FINALE and self.finale is None:
+            self._start_finale(walk)
         if getattr(walk, "sound", None) is not None:
             walk.sound.update()
-        if play.gamestate != GS_INTERMISSION or play.gameaction == GA_WORLDDONE:
-            self.intermission = None
-            tree = self.following if self.following is not None else walk.world.tree
-            self.start_level(walk, tree, f"Entering {tree.level.name}")
+        if play.gameaction == GA_WORLDDONE:
+            self._world_done(walk)
         return True
+
+    def _start_finale(self, walk) -> None:
+        """The finale's screen (``screen.finale``) and music (S_ChangeMusic); a level of our
+        own has no text screens: its play goes on at once."""
+        world = walk.world
+        if world.wad_map is None:
+            world.play.gameaction = GA_WORLDDONE
+            return
+        self.finale = FinaleScreen(world.play, walk.hud.art or art_for(world.play))
+        music = getattr(getattr(walk, "sound", None), "music", None)
+        if music is not None:
+            music.change("D_READ_M" if world.play.gamemode == COMMERCIAL else "D_VICTOR")
+
+    def _world_done(self, walk) -> None:
+        """G_DoWorldDone: the same play on the next map (the player keeps what it holds);
+        a level of our own with nothing after it is played again so."""
+        self.intermission = self.finale = None
+        world = walk.world
+        tree = self.following if self.following is not None else world.tree
+        try:
+            world.next_map(tree)
+        except ValueError:              # not the map DOOM goes on to: a fresh start there
+            self.start_level(walk, tree, f"Entering {tree.level.name}")
+            return
+        self.start_level(walk, tree, f"Entering {tree.level.name}", world=world)
 
     # -- drawing ----------------------------------------------------------------------------
     def draw(self, walk, picture) -> None:
@@ -222,6 +258,8 @@ class GameFlow:
         if self.intermission is not None and play.gamestate == GS_INTERMISSION:
             picture[...] = 0
             self.intermission.draw(picture, play, art, self.names)
+        elif self.finale is not None and play.gamestate == GS_FINALE:
+            self.finale.draw(picture, play)
         self.menu_screen.draw(picture, self.menu, art)
 
     def _menu_ticks(self) -> None:

@@ -11,7 +11,8 @@ __all__ = ["TURN_SLOW", "TURN_WALK", "TURN_RUN", "SLOW_TURN_TICS", "MOUSE_TURN",
 _BAM = 360.0 / 2 ** 16                  # degrees per unit of DOOM's angleturn
 TURN_SLOW, TURN_WALK, TURN_RUN = 320 * _BAM, 640 * _BAM, 1280 * _BAM   # degrees a tic
 SLOW_TURN_TICS = 6                      # DOOM turns slowly for the first tics a key is held
-MOUSE_TURN = 0.15                       # degrees per pixel of mouse motion
+MOUSE_TURN = 0.15                       # degrees per pixel at the default sensitivity
+DEFAULT_SENSITIVITY = 5                 # the menu's mouse sensitivity, 0-9 (DOOM's default)
 MOUSE_FIRE = "mouse button 1"           # held like a key
 
 
@@ -31,7 +32,9 @@ def tic_command(walk, keys):
     if any(k in held for k in keys.strafe):       # DOOM's strafe key: turning keys strafe
         strafe, turning = max(-1, min(1, strafe - turning)), 0
     speed = TURN_SLOW if walk.turn_tics <= SLOW_TURN_TICS else (TURN_RUN if running else TURN_WALK)
-    turn = max(-360.0, min(360.0, turning * speed - walk.mouse_dx * MOUSE_TURN))
+    # G_BuildTiccmd: the mouse's motion times (sensitivity + 5) / 10
+    mouse = MOUSE_TURN * (getattr(walk, "mouse_sensitivity", DEFAULT_SENSITIVITY) + 5) / 10
+    turn = max(-360.0, min(360.0, turning * speed - walk.mouse_dx * mouse))
     using = walk.use_tapped or any(k in held for k in keys.use)
     firing = walk.fire_tapped or any(k in held for k in keys.fire)
     weapon = walk.weapon_tapped
