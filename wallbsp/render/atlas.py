@@ -5,7 +5,10 @@ A picture gets a *slot*: its texels are ``texels[offset + x*height + y]`` (colum
 like ``Picture.pixels``), with ``opaque`` beside them.  A WAD picture's texel is a palette
 index, lit through the WAD's COLORMAP (level ``k`` of 32 reads row ``31 - k``: DOOM's 0 is
 its brightest); a PNG picture's texel is packed rgb, scaled by ``(k + 1) / 32`` (SPEC §4b).
-A thing with no picture is drawn as a flat-colour box (``box_slot``).  Slots are kept while
+A thing with no picture is drawn as a flat-colour box (``box_slot``).  The lit palette has
+a block of 32 levels per DOOM colour translation (R_InitTranslationTables: none, then
+players 2-4's, which turn the green ramp 0x70-0x7f into the grey, brown and red ones);
+``sprites`` picks the block by a thing's ``MF_TRANSLATION`` bits.  Slots are kept while
 the atlas lives: the renderer keeps one atlas per resource set.
 """
 from __future__ import annotations
@@ -17,15 +20,15 @@ import numpy as np
 
 from wallbsp.render.shading import lit_palette, pack_rgb
 
-__all__ = ["Atlas", "Pictures", "atlas_for"]
+__all__ = ["Atlas", "Pictures", "atlas_for", "translations"]
 
 _NO_PALETTE = np.zeros((1, 1), dtype="<u4")        # an atlas of rgb pictures and boxes only
 
 
 class Pictures(NamedTuple):
     """An atlas's slots as the kernels read them: picture ``p``'s texel ``(x, y)`` is
-    ``texels[offset[p] + x*height[p] + y]``; ``lit_palette`` ``(32, 256)`` lights a paletted
-    picture's texels."""
+    ``texels[offset[p] + x*height[p] + y]``; ``lit_palette`` ``(4 * 32, 256)`` lights a
+    paletted picture's texels (row ``32*translation + level``)."""
     texels: np.ndarray
     opaque: np.ndarray
     offset: np.ndarray
@@ -55,11 +58,13 @@ class Atlas:
         self.lit_palette = self._lit_palette()
 
     def _lit_palette(self):
-        """``(32, 256)`` packed rgb of every palette index at every light level, or None."""
+        """``(4 * 32, 256)`` packed rgb of every palette index at every light level through
+        each colour translation, or None."""
         res = self.resources
         if res is None or res.palette is None:
             return None
-        return lit_palette(res.palette, res.colormap)
+        lit = lit_palette(res.palette, res.colormap)
+        return np.ascontiguousarray(np.concatenate([lit[:, t] for t in translations()]))
 
     # -- slots ---------------------------------------------------------------------------------
     def add_picture(self, picture) -> int:
@@ -128,6 +133,15 @@ class Atlas:
                 np.array(self.paletted, dtype=bool),
                 _NO_PALETTE if self.lit_palette is None else self.lit_palette)
         return self._packed
+
+
+def translations() -> np.ndarray:
+    """DOOM's colour translations ``(4, 256)``: none, then players 2, 3 and 4's (the green
+    ramp 0x70-0x7f as the ramps at 0x60, 0x40 and 0x20)."""
+    tables = np.tile(np.arange(256), (4, 1))
+    for t, ramp in enumerate((0x60, 0x40, 0x20), start=1):
+        tables[t, 0x70:0x80] = ramp + np.arange(16)
+    return tables
 
 
 def _grown(values, used, capacity):

@@ -11,6 +11,9 @@ forward depth ``d >= MIN_DEPTH`` (DOOM's MINZ):
 - it covers the columns whose ``u`` lies in ``[(l - left)/d, (l - left + w)/d)`` and the
   heights ``[g + top - h, g + top]`` (``l``: its offset along R, ``g``: its feet);
 - it is lit by its sector's light and its depth as walls are, full-bright frames unlit;
+  a paletted picture of a thing whose flags carry ``MF_TRANSLATION`` (players 2-4) is
+  drawn through DOOM's colour translation of that number (``atlas``: its lit palette's
+  rows ``32*t + level``);
 - every column is clipped to the window the walk left open at that depth.  Along one
   column the walk met the drawn pieces in order of depth, and each left a window of rows
   open behind it: something at depth ``d`` is seen only through the window of the last
@@ -33,7 +36,9 @@ import numpy as np
 from wallbsp.jit import kernel, step_kernel
 from wallbsp.sim.thingtypes import COUNTKILL, SPAWNCEILING, SPECIAL
 from wallbsp.render.project import View
-from wallbsp.render.shading import FULL_BRIGHT, far_level, light_level
+from wallbsp.render.shading import FULL_BRIGHT, LIGHT_LEVELS, far_level, light_level
+
+TRANSLATION, TRANSLATION_SHIFT = 0xC000000, 26      # DOOM's MF_TRANSLATION, MF_TRANSSHIFT
 
 __all__ = ["MIN_DEPTH", "rotations", "unchosen_pictures", "pictures", "ThingArrays", "Seen", "Clip",
            "visible_things", "sprite_columns", "SLICE_INTS", "SLICE_FLOATS"]
@@ -287,6 +292,8 @@ def sprite_columns(seen, things, pictures, scene, lit, view, u, clip, wall_ints,
         level = FULL_BRIGHT
         if lit and not things.bright[i]:
             level = light_level(far_level(scene.sector_light[home]), 1.0 / d)
+        if pictures.paletted[p]:                      # a player's colours (R_ProjectSprite)
+            level += LIGHT_LEVELS * ((things.flags[i] & TRANSLATION) >> TRANSLATION_SHIFT)
         if min(r2, view.height) <= max(r1, 0):        # above or below the frame
             continue
         before = n
