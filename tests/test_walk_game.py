@@ -352,6 +352,34 @@ def test_the_automap_colours_lines_as_doom_does():
     assert kinds[wall_between(level, 2)] == -1 and named(kinds[wall_between(level, 1)]) == "wall"
     same = np.zeros(len(level.sectors))
     assert named(line_kinds(level, same, same + 128)[wall_between(level, 0)]) == "two_sided"
+    seen = np.zeros(len(level.walls), bool)
+    seen[wall_between(level, 0)] = True
+    kinds = line_kinds(level, world.state.floor, world.state.ceiling, flags, seen)
+    assert named(kinds[wall_between(level, 0)]) == "floor_change"
+    assert named(kinds[one_sided[0]]) == "unseen" and kinds[wall_between(level, 2)] == -1
+
+
+def test_the_walls_drawn_are_noted_as_seen_and_the_hidden_ones_are_not(opened):
+    from wallbsp.app.automap import SEEN_TICS
+    tree = medikit_tree()
+    level = tree.level
+    walk = opened(tree)
+    frames(walk, 1)
+    seen = hud.seen_lines(walk)
+    assert seen.walls[wall_between(level, 0)]               # the step ahead
+    assert seen.walls[wall_between(level, 1)]               # the door's near face
+    assert not seen.walls[wall_between(level, 2)]           # behind the shut door
+    east = [i for i, w in enumerate(level.walls) if w.back is None and w.front == 3]
+    assert east and not seen.walls[east].any()
+    first = seen.walls.copy()
+    walk.held = {pygame.K_LEFT}
+    frames(walk, SEEN_TICS - 1)
+    assert np.array_equal(seen.walls, first)                 # noted every SEEN_TICS tics
+    frames(walk, 40)
+    assert seen.walls.sum() > first.sum()                    # turned: more walls seen
+    app.start_level(walk, tree, "again")
+    frames(walk, 1)
+    assert hud.seen_lines(walk) is not seen                  # a new level: nothing seen
 
 
 def test_the_automap_draws_the_lines_above_the_status_bar(opened):
@@ -365,7 +393,9 @@ def test_the_automap_draws_the_lines_above_the_status_bar(opened):
     assert above == 400 - bar_height(400)
     colours = {tuple(c) for c in shown[:, :above].reshape(-1, 3)}
     assert COLOURS["wall"] in colours and COLOURS["floor_change"] in colours
-    assert COLOURS["ceiling_change"] in colours and COLOURS["player"] in colours
+    assert COLOURS["player"] in colours
+    # the far side of the shut door (a ceiling change) is not seen yet: grey
+    assert COLOURS["unseen"] in colours and COLOURS["ceiling_change"] not in colours
     assert not np.array_equal(shown[:, above:], np.zeros_like(shown[:, above:]))  # the bar
 
 

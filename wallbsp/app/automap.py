@@ -1,8 +1,10 @@
-"""The walkthrough's automap in DOOM's colours (``am_map.c``, the cheat view of IDDT, which
-shows every line and thing): one-sided walls red, a floor-height change brown, a ceiling
-change yellow, two-sided walls without a change grey, teleporter lines dark red, secret
-doors red as walls (DOOM hides them), lines flagged "never on the map" not drawn; the things
-as green thin triangles pointing the way they face, the player as DOOM's white arrow.
+"""The walkthrough's automap in DOOM's colours (``am_map.c``): one-sided walls red, a
+floor-height change brown, a ceiling change yellow, two-sided walls without a change grey,
+teleporter lines dark red, secret doors red as walls (DOOM hides them), lines flagged "never
+on the map" not drawn, lines not seen yet darker grey (as the computer map shows them); the
+things as green thin triangles pointing the way they face (the cheat view of IDDT), the
+player as DOOM's white arrow.  ``SeenLines`` keeps which walls the player has seen (DOOM's
+``ML_MAPPED``, set as the renderer draws a line).
 Colours are PLAYPAL's (DOOM's palette indices below), heights the world's now, so a door
 that opens changes its line's colour.  Drawn with pygame on off-screen surfaces (``MapView``
 of ``mapview``); no window is opened here.
@@ -15,28 +17,29 @@ import numpy as np
 
 from wallbsp.app.mapview import MapView, level_bounds, partition_pieces
 
-__all__ = ["COLOURS", "MapView", "level_bounds", "partition_pieces", "line_kinds",
+__all__ = ["COLOURS", "MapView", "level_bounds", "partition_pieces", "line_kinds", "SeenLines",
            "automap_layer", "draw_things", "draw_arrow", "THING_SIZE", "ARROW_SIZE"]
 
 # am_map.c's colours as PLAYPAL (palette 0) gives them: REDS 176, REDS + REDRANGE/2 184,
-# BROWNS 64, YELLOWS 231, GRAYS 96, GREENS 112, WHITE 209, BLACK 0
+# BROWNS 64, YELLOWS 231, GRAYS 96, GRAYS + 3 99, GREENS 112, WHITE 209, BLACK 0
 COLOURS = {"wall": (255, 0, 0), "teleporter": (155, 0, 0), "floor_change": (191, 123, 75),
            "ceiling_change": (255, 255, 0), "two_sided": (131, 131, 131),
            "thing": (119, 255, 111), "player": (255, 235, 219), "background": (0, 0, 0),
-           "partition": (48, 84, 120)}
+           "partition": (48, 84, 120), "unseen": (111, 111, 111)}
 ML_SECRET, ML_DONTDRAW = 32, 128          # DOOM's line flags
 TELEPORT = 39                             # the special AM_drawWalls draws apart
-KINDS = ("wall", "teleporter", "floor_change", "ceiling_change", "two_sided")
+KINDS = ("wall", "teleporter", "floor_change", "ceiling_change", "two_sided", "unseen")
+SEEN_TICS = 8                             # a frame's seen walls are noted every this many tics
 THING_SIZE = 16.0                         # map units: AM_drawThings' 16<<FRACBITS
 ARROW_SIZE = 8 * 16 / 7                   # map units: R = 8 * PLAYERRADIUS / 7
 MIN_PIXELS = 3.0                          # a thing's triangle is never smaller on screen
 ARROW_PIXELS = 10.0                       # nor the player's arrow (the map is fitted whole)
 
 
-def line_kinds(level, floor, ceiling, flags=None) -> np.ndarray:
+def line_kinds(level, floor, ceiling, flags=None, seen=None) -> np.ndarray:
     """AM_drawWalls' choice for every wall of ``level`` (index into ``KINDS``, -1: not
-    drawn) from the sectors' heights now (``floor``, ``ceiling``: arrays by sector) and
-    the lines' DOOM ``flags`` (None: no flags)."""
+    drawn) from the sectors' heights now (``floor``, ``ceiling``: arrays by sector), the
+    lines' DOOM ``flags`` (None: no flags) and which walls were ``seen`` (None: all)."""
     walls = level.walls
     front = np.array([w.front for w in walls], np.int64)
     back = np.array([-1 if w.back is None else w.back for w in walls], np.int64)
@@ -50,8 +53,39 @@ def line_kinds(level, floor, ceiling, flags=None) -> np.ndarray:
     kind[(flags & ML_SECRET) != 0] = KINDS.index("wall")
     kind[special == TELEPORT] = KINDS.index("teleporter")
     kind[~two] = KINDS.index("wall")
+    if seen is not None:
+        kind[~np.asarray(seen, bool)] = KINDS.index("unseen")
     kind[(flags & ML_DONTDRAW) != 0] = -1
     return kind
+
+
+class SeenLines:
+    """The walls of a level the player has seen: every ``SEEN_TICS`` tics, the walls
+    drawn in a frame (every other column of its ``kind`` and ``index``), and the two-sided
+    walls between two sectors whose floor or ceiling was drawn (a step seen from above
+    shows no wall of its own, yet DOOM maps it as its seg is stored)."""
+
+    def __init__(self, level):
+        self.walls = np.zeros(len(level.walls), bool)
+        self.sectors = np.zeros(len(level.sectors), bool)
+        fronts = np.array([w.front for w in level.walls], np.int64)
+        backs = np.array([-1 if w.back is None else w.back for w in level.walls], np.int64)
+        self._two = np.flatnonzero(backs >= 0)
+        self._sides = (fronts[self._two], backs[self._two])
+        self.tic = None
+        self.count = 0                  # how many walls are seen (a cache key)
+
+    def note(self, frame, tic) -> None:
+        """The walls ``frame`` shows, when ``SEEN_TICS`` tics have passed since the last."""
+        if self.tic is not None and tic - self.tic < SEEN_TICS:
+            return
+        self.tic = tic
+        kind, index = frame.kind[:, ::2], frame.index[:, ::2]
+        self.walls[index[kind == 1]] = True
+        self.sectors[index[(kind == 2) | (kind == 3)]] = True
+        front, back = self._sides
+        self.walls[self._two[self.sectors[front] & self.sectors[back]]] = True
+        self.count = int(self.walls.sum())
 
 
 def automap_layer(tree, kinds, view, size, like, overlay=False, partitions=None):

@@ -18,7 +18,7 @@ from __future__ import annotations
 import numpy as np
 
 from wallbsp.camera import Camera
-from wallbsp.app.hud import draw_overlays
+from wallbsp.app.hud import draw_overlays, seen_lines
 from wallbsp.render import render
 from wallbsp.render.rows import packed_pixels, rgb_rows_kernel
 from wallbsp.screen.art import art_for
@@ -69,6 +69,7 @@ def compose(walk, blend=1.0) -> np.ndarray:
     vw, vh = view_size(width, height, walk.statusbar)
     walk.frame = render(walk.world, view_camera(walk, blend), vw, vh, order=walk.order,
                         textures=walk.textures)
+    seen_lines(walk).note(walk.frame, walk.world.tic_count)     # the automap's seen walls
     if walk.picture is None or walk.picture.shape[:2] != (height, width):
         walk.picture = np.zeros((height, width, 3), np.uint8)
         walk.screen = walk.picture.transpose(1, 0, 2)

@@ -10,12 +10,12 @@ from __future__ import annotations
 
 import time
 
-from wallbsp.app.automap import (MapView, automap_layer, draw_arrow, draw_things,
-    level_bounds, line_kinds, partition_pieces)
+from wallbsp.app.automap import (MapView, SeenLines, automap_layer, draw_arrow,
+    draw_things, level_bounds, line_kinds, partition_pieces)
 from wallbsp.screen.hud import view_size
 
 __all__ = ["HELP", "MESSAGE_SECONDS", "draw_overlays", "readout_lines", "inventory_lines",
-           "texture_mode", "draw_automap", "say", "map_area", "map_view"]
+           "texture_mode", "draw_automap", "say", "map_area", "map_view", "seen_lines"]
 
 HELP = ("WASD/arrows move   Left/Right or mouse (M grab) turn   Shift run   Alt strafe   "
         "E/Space use   Ctrl/click fire   1-7 weapons   Pause   Esc menu",
@@ -103,8 +103,9 @@ def draw_automap(walk):
     size = map_area(walk)
     view = map_view(walk, size)
     state = walk.world.state
+    seen = seen_lines(walk)
     key = (size, walk.map_overlay, walk.show_partitions, id(state), state.version,
-           view.scale, view.ox, view.oy)
+           view.scale, view.ox, view.oy, seen.count)
     if walk.map_cache[0] != key:
         walk.map_cache = (key, _map_layer(walk, size, view))
     walk.display.blit(walk.map_cache[1], (0, 0))
@@ -116,6 +117,15 @@ def draw_automap(walk):
         draw_arrow(walk.display, view, player.x, player.y, player.angle)
     finally:
         walk.display.set_clip(None)
+
+
+def seen_lines(walk) -> SeenLines:
+    """The walls seen on the level being played (anew when its state is: a new level, or
+    this one again after a death)."""
+    state = walk.world.state
+    if walk.seen is None or walk.seen[0] is not state:
+        walk.seen = (state, SeenLines(walk.tree.level))
+    return walk.seen[1]
 
 
 def map_view(walk, size) -> MapView:
@@ -138,6 +148,7 @@ def _map_layer(walk, size, view):
     state, lines = walk.world.state, walk.world.play.lines
     flags = [line.flags for line in lines] if len(lines) == len(walk.tree.level.walls) \
         else None
-    kinds = line_kinds(walk.tree.level, state.floor, state.ceiling, flags)
+    kinds = line_kinds(walk.tree.level, state.floor, state.ceiling, flags,
+                       seen_lines(walk).walls)
     return automap_layer(walk.tree, kinds, view, size, walk.display, walk.map_overlay,
                          walk.partitions if walk.show_partitions else None)

@@ -106,6 +106,7 @@ class Walkthrough:
     show_partitions: bool = False
     show_things: bool = True         # the things on the automap
     map_zoom: float = 1.0            # the automap: 1 the whole level, closer follows
+    seen: tuple = None               # (world state, automap.SeenLines): the walls seen
     textures: bool = True            # textured view (a level with resources), else flat
     show_readout: bool = False
     mouse_grab: bool = False
