@@ -48,6 +48,23 @@ def freedoom_cache():
     return FreedoomCache()
 
 
+@pytest.fixture
+def opened():
+    """``opened(tree, size=(160, 100), window=(320, 200), **options)``: a walkthrough at the
+    level's start with its display open; every one opened is closed after the test."""
+    from wallbsp.app import walkthrough
+    walks = []
+
+    def open_walk(tree, size=(160, 100), window=(320, 200), **options):
+        walk = walkthrough.Walkthrough.at_start(tree, size, window, **options)
+        walkthrough.open_display(walk)
+        walks.append(walk)
+        return walk
+    yield open_walk
+    for walk in walks:
+        walkthrough.close_display(walk)
+
+
 DELETE = object()
 
 

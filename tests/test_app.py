@@ -21,7 +21,7 @@ from pngread import load_png                      # noqa: E402
 from wallbsp.level.model import Level, Sector, Start, Wall
 from wallbsp import render
 
-DT = 1 / TICRATE          # one tic a frame: frames and tics line up
+from walking import DT, frames                    # noqa: E402
 
 
 @pytest.fixture
@@ -44,11 +44,6 @@ def press(key):
 
 def release(key):
     pygame.event.post(pygame.event.Event(pygame.KEYUP, key=key, mod=0))
-
-
-def frames(walk, count, dt=DT):
-    for _ in range(count):
-        app.step_frame(walk, dt)
 
 
 def screen(walk):

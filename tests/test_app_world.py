@@ -1,6 +1,7 @@
 """The walkthrough runs the game's World: E or Space uses, messages show, the view is
 blended between tics, an exit restarts the level or goes on to the next one, the readout
 shows the world; and which map follows which (game.maporder)."""
+import functools
 import os
 
 os.environ["SDL_VIDEODRIVER"] = "dummy"       # before pygame is imported: never open a window
@@ -14,13 +15,11 @@ from wallbsp import compile_level, render
 from wallbsp.game.demo import demo_for
 from wallbsp.game.maporder import following_maps, next_map
 from wallbsp.game.ticcmds import ticcmd
-from wallbsp.game.world import TICRATE
 from wallbsp.level.model import Side
 from wallbsp.screen.hud import view_size
 
 from game_levels import corridor, north_wall, room   # noqa: E402
-
-DT = 1 / TICRATE
+from walking import DT, frames                       # noqa: E402
 
 
 def door_tree(special=1):
@@ -29,23 +28,9 @@ def door_tree(special=1):
 
 
 @pytest.fixture
-def opened():
-    """Open walkthroughs, closed afterwards."""
-    walks = []
-
-    def open_walk(tree):
-        walk = app.Walkthrough.at_start(tree, (80, 50), (160, 100))
-        app.open_display(walk)
-        walks.append(walk)
-        return walk
-    yield open_walk
-    for walk in walks:
-        app.close_display(walk)
-
-
-def frames(walk, count, dt=DT):
-    for _ in range(count):
-        app.step_frame(walk, dt)
+def opened(opened):
+    """conftest's walkthroughs, small: 80 x 50 in a 160 x 100 window."""
+    return functools.partial(opened, size=(80, 50), window=(160, 100))
 
 
 def set_health(world, health):

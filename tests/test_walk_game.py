@@ -24,28 +24,9 @@ from wallbsp.screen.hud import bar_height, view_size                # noqa: E402
 from wallbsp.sound import SoundSystem                               # noqa: E402
 
 from game_levels import corridor, room, wall_between               # noqa: E402
+from walking import DT, frames                                      # noqa: E402
 
-DT = 1 / TICRATE
 MEDIKIT = 2012
-
-
-@pytest.fixture
-def opened():
-    walks = []
-
-    def open_walk(tree, **options):
-        walk = app.Walkthrough.at_start(tree, (160, 100), (320, 200), **options)
-        app.open_display(walk)
-        walks.append(walk)
-        return walk
-    yield open_walk
-    for walk in walks:
-        app.close_display(walk)
-
-
-def frames(walk, count, dt=DT):
-    for _ in range(count):
-        app.step_frame(walk, dt)
 
 
 def key(k):
