@@ -4,7 +4,6 @@ the font's pictures itself, the stage DOOM's F_Ticker would be in, and the BEX s
 DEHACKED lump read as Chocolate Doom reads them (Freedoom's own texts; our own without)."""
 from __future__ import annotations
 
-import importlib.util
 from pathlib import Path
 from types import SimpleNamespace
 
@@ -13,6 +12,7 @@ import pytest
 
 from wallbsp.assets.wad import wad_bytes
 from pngread import load_png
+from toolscripts import tool_script
 from wallbsp.screen.art import art_for
 from wallbsp.screen.finale import (OWN_TEXTS, TEXTSPEED, TEXTWAIT, FinaleScreen, bex_strings,
                                    finale_stage, finale_text)
@@ -25,11 +25,7 @@ pytestmark = pytest.mark.skipif(not DOOM1.is_file(), reason="needs Freedoom")
 
 @pytest.fixture(scope="module")
 def tool():
-    spec = importlib.util.spec_from_file_location("make_finale_golden",
-                                                  ROOT / "tools" / "make_finale_golden.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+    return tool_script("make_finale_golden")
 
 
 def test_golden_images(tool):

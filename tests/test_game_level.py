@@ -3,7 +3,6 @@ rules: its monsters by skill, the red key door that opens only with the key, the
 exit switch, the way from the start to the exit (a search over its sectors that knows
 DOOM's step height, doors, keys and lifts), monsters that wake and fight, and our own
 sprites for every frame those things can show, drawn in the frame they are in."""
-import sys
 from collections import deque
 from pathlib import Path
 
@@ -11,6 +10,8 @@ import numpy as np
 import pytest
 
 from wallbsp import compile_level, load_level
+
+from toolscripts import tool_script
 from wallbsp.assets.resources import ResourceSet
 from wallbsp.game.world import World
 from wallbsp.render import render
@@ -46,13 +47,8 @@ def test_the_level_is_clean_and_every_name_is_found(tree):
 
 
 def test_the_script_writes_the_shipped_level():
-    sys.path.insert(0, str(ROOT / "tools"))
-    try:
-        import make_game_level
-    finally:
-        sys.path.pop(0)
     from wallbsp.level.io import level_from_dict
-    assert level_from_dict(make_game_level.level_dict()) == load_level(LEVEL)
+    assert level_from_dict(tool_script("make_game_level").level_dict()) == load_level(LEVEL)
 
 
 @pytest.mark.parametrize("skill,bit", [(1, 1), (3, 2), (4, 4)])
@@ -165,15 +161,6 @@ def test_monsters_wake_shout_and_hurt_the_player(tree):
     assert all(sound.seconds(e.sfx) > 0 for e in sound.started())   # our own sounds play
 
 
-def frame_roles():
-    sys.path.insert(0, str(ROOT / "tools"))
-    try:
-        import make_game_art
-    finally:
-        sys.path.pop(0)
-    return make_game_art
-
-
 def reachable_frames(mobj_type):
     """Every (sprite, frame) the state table can put an object of ``mobj_type`` in."""
     m = info.MOBJINFO[mobj_type]
@@ -203,7 +190,7 @@ def test_every_frame_the_things_can_show_has_a_picture(tree):
 
 def test_the_script_draws_the_shipped_sprites():
     import pygame
-    art = frame_roles()
+    art = tool_script("make_game_art")
     pictures = art.all_pictures()
     for path in ("sprites/POSSA0.png", "sprites/SARGN0.png", "sprites/BAL1A0.png"):
         shipped = pygame.image.load(str(art.OUT / path))

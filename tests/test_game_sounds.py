@@ -4,11 +4,12 @@ play, of a sensible length and level, no two alike; every sound the game level's
 world make is there; the script writes the shipped bytes; a SoundSystem finds a level's
 folder sounds by itself, and a WAD's sounds come first."""
 import struct
-import sys
 from pathlib import Path
 
 import numpy as np
 import pytest
+
+from toolscripts import tool_script
 
 from wallbsp import compile_level, load_level
 from wallbsp.game.world import World
@@ -72,11 +73,7 @@ def test_every_sound_of_the_level_is_there():
 
 
 def test_the_script_writes_the_shipped_sounds():
-    sys.path.insert(0, str(ROOT / "tools"))
-    try:
-        import make_game_sounds as make
-    finally:
-        sys.path.pop(0)
+    make = tool_script("make_game_sounds")
     for name in ("pistol", "posit2", "barexp"):
         shipped = (GAME / "sounds" / f"DS{name.upper()}.lmp").read_bytes()
         assert make.dmx_lump(make.synthesise(name)) == shipped

@@ -4,7 +4,6 @@ with ``python tools/make_menu_golden.py``) and a reference that blits the WAD's 
 DOOM's positions itself."""
 from __future__ import annotations
 
-import importlib.util
 import os
 from pathlib import Path
 
@@ -12,6 +11,7 @@ import numpy as np
 import pytest
 
 from pngread import load_png
+from toolscripts import tool_script
 from wallbsp.screen.menu import (EndGame, LoadGame, Menu, NewGame, Option, Quit, SaveGame,
                                  Sound)
 
@@ -25,11 +25,7 @@ have_wads = pytest.mark.skipif(not all(os.path.exists(p) for p in WADS.values())
 
 @pytest.fixture(scope="module")
 def tool():
-    spec = importlib.util.spec_from_file_location("make_menu_golden",
-                                                  ROOT / "tools" / "make_menu_golden.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
+    return tool_script("make_menu_golden")
 
 
 def actions(events):

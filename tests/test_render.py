@@ -3,7 +3,6 @@ other and against an independent ray caster that never looks at the tree, stats,
 images.  Regenerate the golden images with ``python tools/make_golden.py``."""
 from __future__ import annotations
 
-import importlib.util
 from pathlib import Path
 from types import SimpleNamespace
 
@@ -14,6 +13,7 @@ from hypothesis import strategies as st
 from texref import wall_hits
 
 from pngread import load_png
+from toolscripts import tool_script
 from wallbsp.image import png_bytes, save_png
 from wallbsp.level.model import Level, Sector, Start, Wall
 from wallbsp.camera import Camera
@@ -22,13 +22,6 @@ from wallbsp.render.walk import FAR, close_span, open_spans
 
 ROOT = Path(__file__).resolve().parent.parent
 GOLDEN = ROOT / "tests" / "golden"
-
-
-def make_golden_module():
-    spec = importlib.util.spec_from_file_location("make_golden", ROOT / "tools" / "make_golden.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
 
 
 # ------------------------------------------------------------------------------------------
@@ -436,7 +429,7 @@ def test_png_round_trip(tmp_path):
 
 
 def test_golden_images(compiled_levels):
-    golden = make_golden_module()
+    golden = tool_script("make_golden")
     assert len(golden.VIEWS) >= 6
     for name, frame in golden.golden_frames(compiled_levels):
         path = GOLDEN / f"{name}.png"

@@ -5,7 +5,6 @@ our own and blitted at the positions of ``st_stuff.c`` and R_DrawPSprite at 320 
 the face's rules tic by tic, the flashes against PLAYPAL, the invulnerability map
 against COLORMAP, messages, and DOOM's demo staying in sync while the status bar draws
 M_Random."""
-import importlib.util
 import itertools
 import os
 import struct
@@ -16,19 +15,12 @@ import numpy as np
 import pytest
 
 from pngread import load_png
+from toolscripts import tool_script
 
 ROOT = Path(__file__).resolve().parent.parent
 GOLDEN = ROOT / "tests" / "golden"
 FREEDOOM1 = "/usr/share/games/doom/freedoom1.wad"
 needs_freedoom = pytest.mark.skipif(not os.path.exists(FREEDOOM1), reason="no Freedoom")
-
-
-def golden_module():
-    spec = importlib.util.spec_from_file_location("make_hud_golden",
-                                                  ROOT / "tools" / "make_hud_golden.py")
-    module = importlib.util.module_from_spec(spec)
-    spec.loader.exec_module(module)
-    return module
 
 
 # -- the reference: lumps, patches and blits of our own -------------------------------------
@@ -115,7 +107,7 @@ def reference_bar(wad, palette, player, face, background):
 
 @pytest.fixture(scope="module")
 def golden():
-    return golden_module()
+    return tool_script("make_hud_golden")
 
 
 @pytest.fixture(scope="module")

@@ -3,12 +3,13 @@ same geometry and colours as the originals, every name found in the shipped text
 things standing clear inside the map, and multi's door a DOOM door."""
 import json
 import math
-import sys
 from pathlib import Path
 
 import pytest
 
 from wallbsp import compile_level
+
+from toolscripts import tool_script
 from wallbsp.level.io import dumps_level, level_from_dict, load_level
 from wallbsp.assets.resources import ResourceSet
 from wallbsp.sim.thingtypes import thing_info
@@ -16,15 +17,6 @@ from wallbsp.sim.thingtypes import thing_info
 ROOT = Path(__file__).resolve().parent.parent
 PAIRS = {"wallbsp/data/textured.json": "wallbsp/data/default.json",
          "levels/textured/multi.json": "levels/multi.json"}
-
-
-def script():
-    sys.path.insert(0, str(ROOT / "tools"))
-    try:
-        import make_textured_levels
-    finally:
-        sys.path.pop(0)
-    return make_textured_levels
 
 
 @pytest.mark.parametrize("path", sorted(PAIRS))
@@ -82,7 +74,7 @@ def test_multis_closed_door_opens():
 
 @pytest.mark.parametrize("spec", ["SMALL", "MULTI"])
 def test_the_script_writes_exactly_the_shipped_files(spec):
-    make = script()
+    make = tool_script("make_textured_levels")
     spec = getattr(make, spec)
     level = level_from_dict(make.textured(spec), source=spec["target"])
     assert dumps_level(level) == (ROOT / spec["target"]).read_text(encoding="utf-8")

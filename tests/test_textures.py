@@ -1,17 +1,16 @@
 """wallbsp's own texture set: every name shipped as a PNG of its size, fallback colours near
 the pictures, sprites with transparency, and tools/make_textures.py reproduces the files."""
-import sys
 from pathlib import Path
 
 import numpy as np
 import pygame
 import pytest
 
+from toolscripts import tool_script
+
 from wallbsp.assets.catalogue import (FLATS, MASKED_TEXTURES, SPRITES, TEXTURE_DIR,
     WALL_TEXTURES)
 from wallbsp.assets.resources import ResourceSet
-
-ROOT = Path(__file__).resolve().parent.parent
 
 
 def load(path: Path) -> np.ndarray:
@@ -64,12 +63,7 @@ def test_the_resource_reader_finds_each_namespace():
 
 
 def test_the_script_draws_exactly_the_shipped_pixels():
-    sys.path.insert(0, str(ROOT / "tools"))
-    try:
-        import make_textures
-    finally:
-        sys.path.pop(0)
-    for path, picture in make_textures.all_pictures().items():
+    for path, picture in tool_script("make_textures").all_pictures().items():
         texels = load(TEXTURE_DIR / path)
         channels = picture.shape[2]
         assert np.array_equal(texels[..., :channels], picture), path
