@@ -29,7 +29,8 @@ from wallbsp.game.ticcmds import ticcmd
 from wallbsp.sim import info
 
 __all__ = ["BUTTONS", "BINARY_BUTTONS", "DELTA_BUTTONS", "VARIABLES", "SLOT_WEAPONS",
-           "command", "game_variables", "check_buttons", "check_variables"]
+           "command", "game_variables", "check_buttons", "check_variables", "action_space",
+           "button_values"]
 
 FRAC = 1.0 / 65536
 BINARY_BUTTONS = ("ATTACK", "USE", "SPEED", "MOVE_FORWARD", "MOVE_BACKWARD", "MOVE_LEFT",
@@ -69,6 +70,30 @@ def check_variables(names) -> tuple:
     if bad:
         raise ValueError(f"unknown game variables {bad} (known: {VARIABLES})")
     return names
+
+
+def action_space(names, kind: str):
+    """The Gymnasium action space over buttons ``names``: ``"discrete"`` (0 nothing, k
+    button k-1), ``"multibinary"``, or else a ``Box`` from 0 (a delta: -its limit) to 1 (its
+    limit)."""
+    from gymnasium import spaces
+    if kind == "discrete":
+        return spaces.Discrete(len(names) + 1)
+    if kind == "multibinary":
+        return spaces.MultiBinary(len(names))
+    high = np.array([DELTA_LIMITS.get(b, 1.0) for b in names], np.float32)
+    low = np.array([-DELTA_LIMITS[b] if b in DELTA_LIMITS else 0.0 for b in names], np.float32)
+    return spaces.Box(low, high, dtype=np.float32)
+
+
+def button_values(names, kind: str, action) -> np.ndarray:
+    """One value a button of ``names`` for an ``action`` of ``action_space(names, kind)``."""
+    if kind == "discrete":
+        values = np.zeros(len(names), np.float32)
+        if int(action):
+            values[int(action) - 1] = 1.0
+        return values
+    return np.asarray(action, dtype=np.float32).reshape(len(names))
 
 
 def command(names, values, player, turnheld=SLOW_TURN_TICS):

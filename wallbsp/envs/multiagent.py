@@ -155,15 +155,7 @@ class MultiAgentEnv(ParallelEnv):
         return spaces.Dict({k: made[k] for k in self.keys})
 
     def _make_action_space(self):
-        n = len(self.buttons)
-        if self.action_kind == "discrete":
-            return spaces.Discrete(n + 1)
-        if self.action_kind == "multibinary":
-            return spaces.MultiBinary(n)
-        limits = gamevars.DELTA_LIMITS
-        high = np.array([limits.get(b, 1.0) for b in self.buttons], np.float32)
-        low = np.array([-limits[b] if b in limits else 0.0 for b in self.buttons], np.float32)
-        return spaces.Box(low, high, dtype=np.float32)
+        return gamevars.action_space(self.buttons, self.action_kind)
 
     def observation_space(self, agent):
         return self._obs_space          # one object for every agent
@@ -172,15 +164,11 @@ class MultiAgentEnv(ParallelEnv):
         return self._action_spaces[agent]
 
     def _values(self, action) -> np.ndarray:
-        n = len(self.buttons)
-        values = np.zeros(n, np.float32)
+        """An agent without an action this step (a PettingZoo dict may leave it out) presses
+        nothing."""
         if action is None:
-            return values
-        if self.action_kind == "discrete":
-            if int(action):
-                values[int(action) - 1] = 1.0
-            return values
-        return np.asarray(action, dtype=np.float32).reshape(n)
+            return np.zeros(len(self.buttons), np.float32)
+        return gamevars.button_values(self.buttons, self.action_kind, action)
 
     # -- episodes -----------------------------------------------------------------------------
     def reset(self, seed=None, options=None):

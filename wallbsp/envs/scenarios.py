@@ -102,16 +102,7 @@ class ScenarioEnv(WallbspEnv):
 
     # -- spaces -------------------------------------------------------------------------------
     def _make_action_space(self):
-        from gymnasium import spaces
-        n = len(self.buttons)
-        if self.action_kind == "discrete":
-            return spaces.Discrete(n + 1)
-        if self.action_kind == "multibinary":
-            return spaces.MultiBinary(n)
-        high = np.array([gamevars.DELTA_LIMITS.get(b, 1.0) for b in self.buttons], np.float32)
-        low = np.array([-gamevars.DELTA_LIMITS[b] if b in gamevars.DELTA_LIMITS else 0.0
-                        for b in self.buttons], np.float32)
-        return spaces.Box(low, high, dtype=np.float32)
+        return gamevars.action_space(self.buttons, self.action_kind)
 
     def _make_observation_space(self):
         from gymnasium import spaces
@@ -121,14 +112,7 @@ class ScenarioEnv(WallbspEnv):
         return spaces.Dict(made)
 
     def _values(self, action) -> np.ndarray:
-        n = len(self.buttons)
-        if self.action_kind == "discrete":
-            values = np.zeros(n, np.float32)
-            a = int(action)
-            if a:
-                values[a - 1] = 1.0
-            return values
-        return np.asarray(action, dtype=np.float32).reshape(n)
+        return gamevars.button_values(self.buttons, self.action_kind, action)
 
     # -- episodes -----------------------------------------------------------------------------
     def episode_tree(self):
