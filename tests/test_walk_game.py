@@ -363,11 +363,20 @@ def test_the_walls_drawn_are_noted_as_seen_and_the_hidden_ones_are_not(opened):
     assert hud.seen_lines(walk) is not seen                  # a new level: nothing seen
 
 
-def test_the_automap_draws_the_lines_above_the_status_bar(opened):
+def automap_up(opened, at=None):
+    """A walk of the medikit corridor in a 640 x 400 window without the help line, the
+    player placed at ``at`` (x, y, angle) if given, Tab pressed (not yet taken)."""
     walk = opened(medikit_tree())
     walk.display = pygame.display.set_mode((640, 400))
     walk.show_help = False
+    if at is not None:
+        walk.world.place_player(*at)
     key(pygame.K_TAB)
+    return walk
+
+
+def test_the_automap_draws_the_lines_above_the_status_bar(opened):
+    walk = automap_up(opened)
     frames(walk, 1)
     shown = pygame.surfarray.array3d(walk.display)
     above = hud.map_area(walk)[1]
@@ -381,11 +390,7 @@ def test_the_automap_draws_the_lines_above_the_status_bar(opened):
 
 
 def test_with_the_automap_up_minus_and_equals_zoom_it_around_the_player(opened):
-    walk = opened(medikit_tree())
-    walk.display = pygame.display.set_mode((640, 400))
-    walk.show_help = False
-    walk.world.place_player(300, 40, 90)
-    key(pygame.K_TAB)
+    walk = automap_up(opened, at=(300, 40, 90))
     key(pygame.K_EQUALS)
     key(pygame.K_EQUALS)
     frames(walk, 1)
@@ -404,12 +409,7 @@ def test_with_the_automap_up_minus_and_equals_zoom_it_around_the_player(opened):
 
 
 def test_the_automaps_things_stay_off_the_status_bar(opened):
-    from wallbsp.app.automap import COLOURS
-    walk = opened(medikit_tree())
-    walk.display = pygame.display.set_mode((640, 400))
-    walk.show_help = False
-    walk.world.place_player(200, 100, 90)
-    key(pygame.K_TAB)
+    walk = automap_up(opened, at=(200, 100, 90))
     frames(walk, 1)
     size = hud.map_area(walk)
     above = size[1]
