@@ -23,12 +23,11 @@ from pathlib import Path
 import numpy as np
 
 from wallbsp.assets.catalogue import SPRITES
-from wallbsp.files import write_atomically
 from wallbsp.sim import info
 
 import spritekit as sk
 import texturekit as kit
-from make_textures import png_bytes
+from make_textures import write_pictures
 
 ROOT = Path(__file__).resolve().parent.parent
 OUT = ROOT / "wallbsp" / "data" / "game"
@@ -302,12 +301,7 @@ def all_pictures() -> dict[str, np.ndarray]:
 
 
 def main() -> int:
-    pictures = all_pictures()
-    for path, picture in pictures.items():
-        target = OUT / path
-        target.parent.mkdir(parents=True, exist_ok=True)
-        write_atomically(target, png_bytes(picture))
-    print(f"{OUT.relative_to(ROOT)}: {len(pictures)} pictures", file=sys.stderr)
+    write_pictures(all_pictures(), OUT)
     return 0
 
 

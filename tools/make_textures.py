@@ -157,6 +157,15 @@ def png_bytes(picture: np.ndarray) -> bytes:
     return buffer.getvalue()
 
 
+def write_pictures(pictures: dict[str, np.ndarray], out: Path) -> None:
+    """Each picture as the PNG ``out / path``, folders made as needed, each file atomically."""
+    for path, picture in pictures.items():
+        target = out / path
+        target.parent.mkdir(parents=True, exist_ok=True)
+        write_atomically(target, png_bytes(picture))
+    print(f"{out}: {len(pictures)} pictures", file=sys.stderr)
+
+
 def mean_colours(pictures: dict[str, np.ndarray]) -> dict[str, str]:
     """The mean colour of each wall texture and flat (sprites: of their opaque texels)."""
     out = {}
@@ -181,11 +190,7 @@ def main(argv=None) -> int:
         print(json.dumps({p: [m, fallback.get(p)] for p, m in mean_colours(pictures).items()},
                          indent=1))
         return 0
-    for path, picture in pictures.items():
-        target = args.out / path
-        target.parent.mkdir(parents=True, exist_ok=True)
-        write_atomically(target, png_bytes(picture))
-    print(f"{args.out}: {len(pictures)} pictures", file=sys.stderr)
+    write_pictures(pictures, args.out)
     return 0
 
 
