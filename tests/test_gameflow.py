@@ -91,6 +91,35 @@ def test_a_damaged_save_is_one_line_and_nothing_changes(walk, tmp_path, capsys):
     assert walk.world is world
 
 
+def test_a_save_whose_fields_make_no_world_is_one_line_and_nothing_changes(walk, tmp_path,
+                                                                          capsys):
+    """An edited save with its digest made anew: a thinker's field None where a number was."""
+    import hashlib
+    import json
+    import struct
+    import zlib
+    run(walk, 5, forward=1)
+    keys(walk, "F2", "RETURN", "a", "RETURN")
+    path = slot_path(tmp_path / "saves", 0)
+    data = path.read_bytes()
+    prefix = struct.Struct("<8sIII")
+    magic, version, head_len, body_len = prefix.unpack_from(data)
+    head = data[prefix.size:prefix.size + head_len]
+    body = json.loads(zlib.decompress(data[prefix.size + head_len:-32]))
+    mobj = next(t for t in body["thinkers"] if {"fn": "p_mobj_thinker"} in t)
+    numbers = [k for k, v in enumerate(mobj) if isinstance(v, int) and v > 65536]
+    mobj[numbers[0]] = None                          # its x, a fixed-point number
+    packed = zlib.compress(json.dumps(body).encode())
+    out = prefix.pack(magic, version, len(head), len(packed)) + head + packed
+    path.write_bytes(out + hashlib.sha256(out).digest())
+    capsys.readouterr()
+    world = walk.world
+    keys(walk, "F3", "RETURN")
+    err = capsys.readouterr().err.strip().splitlines()
+    assert len(err) == 1 and "wallbsp0.wsg: body:" in err[0]
+    assert walk.world is world
+
+
 def test_an_exit_runs_the_intermission_then_the_next_level(walk):
     walk.world.play.g_exit_level()
     run(walk, 1)

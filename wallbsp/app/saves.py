@@ -92,7 +92,15 @@ def load_world(folder, slot: int, world, tree_of) -> World:
                 tree = tree_of(header["map"])
             except (OSError, ValueError) as e:
                 raise SaveError(f"{path}: header.map: {e}") from None
-    play = load_game(data, wad, source=str(path), cls=world_play_class(), level=level)
     skill = header.get("skill")
     skill = skill + 1 if isinstance(skill, int) and 0 <= skill <= 4 else world.skill
-    return World(tree, skill, play=play)
+    try:
+        play = load_game(data, wad, source=str(path), cls=world_play_class(), level=level)
+        return World(tree, skill, play=play)
+    except SaveError:
+        raise
+    except (TypeError, ValueError, IndexError, KeyError, AttributeError) as e:
+        # load_game checks the structure, not every saved field's type; a save edited with
+        # its digest made anew can still hold a value no World can be made from
+        raise SaveError(f"{path}: body: the saved state makes no world "
+                        f"({type(e).__name__}: {e})") from None
