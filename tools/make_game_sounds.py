@@ -91,10 +91,6 @@ def mix(*parts) -> np.ndarray:
     return sum(np.pad(p, (0, n - len(p))) for p in parts)
 
 
-def envelope_of(x, attack=0.01, fall=0.2):
-    return x * decay(len(x) / RATE, attack, fall)
-
-
 # -- the sounds ----------------------------------------------------------------------------------
 
 def gunshot(r, length, low, high, fall, thump):

@@ -7,7 +7,7 @@ bottom row (where the PNG folder puts a sprite's origin).
 """
 from __future__ import annotations
 
-from dataclasses import dataclass, replace
+from dataclasses import dataclass
 
 import numpy as np
 
@@ -250,7 +250,3 @@ def gibbed(body: Body, t: float, rng) -> np.ndarray:
     speckle(pic, rng, body.torso, 4, 6, h - 8 - 12 * spread, w - 6, h - 3, 1.5, 3)
     speckle(pic, rng, (220, 210, 190), 3, 6, h - 7, w - 6, h - 3, 1, 1.6)
     return outline(pic, 0.8)
-
-
-def with_body(body: Body, **changes) -> Body:
-    return replace(body, **changes)
