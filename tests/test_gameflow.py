@@ -91,27 +91,42 @@ def test_a_damaged_save_is_one_line_and_nothing_changes(walk, tmp_path, capsys):
     assert walk.world is world
 
 
-def test_a_save_whose_fields_make_no_world_is_one_line_and_nothing_changes(walk, tmp_path,
-                                                                          capsys):
-    """An edited save with its digest made anew: a thinker's field None where a number was."""
+def edit_saved_mobj(path, change):
+    """Rewrites the save at ``path`` with ``change(row, fields)`` applied to its first map
+    object's row (``fields``: the row's field names, from index 1), its digest made anew:
+    an edited save that is neither damaged nor foreign."""
     import hashlib
     import json
     import struct
     import zlib
-    run(walk, 5, forward=1)
-    keys(walk, "F2", "RETURN", "a", "RETURN")
-    path = slot_path(tmp_path / "saves", 0)
     data = path.read_bytes()
     prefix = struct.Struct("<8sIII")
     magic, version, head_len, body_len = prefix.unpack_from(data)
     head = data[prefix.size:prefix.size + head_len]
     body = json.loads(zlib.decompress(data[prefix.size + head_len:-32]))
     mobj = next(t for t in body["thinkers"] if {"fn": "p_mobj_thinker"} in t)
-    numbers = [k for k, v in enumerate(mobj) if isinstance(v, int) and v > 65536]
-    mobj[numbers[0]] = None                          # its x, a fixed-point number
+    change(mobj, body["classes"][mobj[0]][1])
     packed = zlib.compress(json.dumps(body).encode())
     out = prefix.pack(magic, version, len(head), len(packed)) + head + packed
     path.write_bytes(out + hashlib.sha256(out).digest())
+
+
+def _x_to_none(row, fields):
+    numbers = [k for k, v in enumerate(row) if isinstance(v, int) and v > 65536]
+    row[numbers[0]] = None                           # its x, a fixed-point number
+
+
+def _tics_to_text(row, fields):
+    row[1 + fields.index("tics")] = "soon"           # the World is made; its first tic fails
+
+
+@pytest.mark.parametrize("change", [_x_to_none, _tics_to_text], ids=["no world", "no tic"])
+def test_an_edited_save_is_one_line_and_nothing_changes(walk, tmp_path, capsys, change):
+    """A save edited with its digest made anew: a field a World cannot be made from, or one
+    its first tics cannot play."""
+    run(walk, 5, forward=1)
+    keys(walk, "F2", "RETURN", "a", "RETURN")
+    edit_saved_mobj(slot_path(tmp_path / "saves", 0), change)
     capsys.readouterr()
     world = walk.world
     keys(walk, "F3", "RETURN")

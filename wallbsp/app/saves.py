@@ -9,7 +9,9 @@ in a saves folder (``--saves DIR``; by default ``$XDG_DATA_HOME/wallbsp/saves`` 
 
 A save is written atomically; loading validates it all before anything changes, so a
 damaged or foreign save (another WAD, another map, not a save at all) is one ``SaveError``
-line naming the file and the place, and the game in play goes on untouched.
+line naming the file and the place, and the game in play goes on untouched.  A save edited
+with its digest made anew is loaded twice: the first copy plays ``TRIAL_TICS`` idle tics,
+so a saved state that cannot play fails there, not in the game the player goes on with.
 """
 from __future__ import annotations
 
@@ -27,6 +29,7 @@ __all__ = ["SLOTS", "saves_folder", "slot_path", "read_slots", "save_world", "lo
 
 SLOTS = 6
 DAMAGED = "(unreadable save)"
+TRIAL_TICS = 35             # one second of play tried before a loaded game is taken
 
 
 def saves_folder(given=None) -> Path:
@@ -94,6 +97,12 @@ def load_world(folder, slot: int, world, tree_of) -> World:
                 raise SaveError(f"{path}: header.map: {e}") from None
     skill = header.get("skill")
     skill = skill + 1 if isinstance(skill, int) and 0 <= skill <= 4 else world.skill
+    trial = _world_of(data, wad, level, tree, skill, path)
+    _try_tics(trial, path)
+    return _world_of(data, wad, level, tree, skill, path)
+
+
+def _world_of(data, wad, level, tree, skill, path) -> World:
     try:
         play = load_game(data, wad, source=str(path), cls=world_play_class(), level=level)
         return World(tree, skill, play=play)
@@ -103,4 +112,16 @@ def load_world(folder, slot: int, world, tree_of) -> World:
         # load_game checks the structure, not every saved field's type; a save edited with
         # its digest made anew can still hold a value no World can be made from
         raise SaveError(f"{path}: body: the saved state makes no world "
+                        f"({type(e).__name__}: {e})") from None
+
+
+def _try_tics(trial: World, path) -> None:
+    """Plays ``TRIAL_TICS`` idle tics of a second copy of the loaded game: a save edited
+    with its digest made anew (a string where DOOM keeps a number, a state number past the
+    table) fails there, as one ``SaveError`` line, not in the game the player goes on with."""
+    try:
+        for _ in range(TRIAL_TICS):
+            trial.tic()
+    except Exception as e:        # any failure of a state this version never writes
+        raise SaveError(f"{path}: body: the saved state does not play "
                         f"({type(e).__name__}: {e})") from None
