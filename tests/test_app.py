@@ -155,6 +155,19 @@ def test_automap_readout_and_help_draw_without_error(walk):
     assert any("nodes visited" in line for line in hud.readout_lines(walk))
 
 
+def test_the_help_line_goes_away_by_itself_and_h_brings_it_back(walk):
+    """It is drawn over the weapon, so an interactive walk shows it for HELP_SECONDS only."""
+    walk.show_help, walk.help_until = True, 0.0           # its time is up
+    frames(walk, 1)
+    without = screen(walk)
+    assert not walk.show_help and walk.help_until is None
+    press(pygame.K_h)
+    frames(walk, 1)
+    assert walk.show_help and not np.array_equal(screen(walk), without)
+    frames(walk, 2)
+    assert walk.show_help                                  # asked for: it stays
+
+
 def test_painter_toggle_renders_the_same_picture(walk):
     frames(walk, 1)
     front_to_back = walk.frame.color.copy()

@@ -14,7 +14,7 @@ from wallbsp.app.automap import (MapView, SeenLines, automap_layer, draw_arrow,
     draw_things, level_bounds, line_kinds, partition_pieces)
 from wallbsp.screen.hud import view_size
 
-__all__ = ["HELP", "MESSAGE_SECONDS", "draw_overlays", "readout_lines", "inventory_lines",
+__all__ = ["HELP", "HELP_SECONDS", "MESSAGE_SECONDS", "draw_overlays", "readout_lines", "inventory_lines",
            "texture_mode", "draw_automap", "say", "map_area", "map_view", "seen_lines"]
 
 HELP = ("WASD/arrows move   Left/Right or mouse (M grab) turn   Shift run   Alt strafe   "
@@ -23,6 +23,7 @@ HELP = ("WASD/arrows move   Left/Right or mouse (M grab) turn   Shift run   Alt 
         "[ ] resolution  - = status bar  F fullscreen  K shot  H help")
 TEXT, SHADOW = (235, 235, 235), (0, 0, 0)
 MESSAGE_SECONDS = 2.0
+HELP_SECONDS = 15.0          # an interactive walk shows the key help this long at first
 
 
 def say(walk, text, seconds=MESSAGE_SECONDS):
@@ -39,6 +40,8 @@ def draw_overlays(walk):
         draw_automap(walk)
     if walk.show_readout:
         _draw_text_block(walk, readout_lines(walk), (8, 8))
+    if walk.show_help and walk.help_until is not None and time.perf_counter() > walk.help_until:
+        walk.show_help, walk.help_until = False, None    # it covered the weapon; H brings it back
     if walk.show_help:
         bottom = map_area(walk)[1]
         _draw_text_block(walk, HELP, (8, bottom - 8 - len(HELP) * walk.font.get_linesize()))

@@ -50,7 +50,7 @@ from wallbsp.app.audio import close_sound, hear, open_sound, tic_sound
 from wallbsp.app.gameflow import GameFlow
 from wallbsp.app.controls import bindings, handle_events  # noqa: F401 - the app's names
 from wallbsp.app.gamescreen import NO_BLEND, draw_frame, view_camera  # noqa: F401
-from wallbsp.app.hud import say
+from wallbsp.app.hud import HELP_SECONDS, say
 from wallbsp.app.keys import (MOUSE_FIRE, MOUSE_TURN, SLOW_TURN_TICS, TURN_RUN,  # noqa: F401
     TURN_SLOW, TURN_WALK, tic_command)
 from wallbsp.image import save_png
@@ -101,6 +101,7 @@ class Walkthrough:
     was_dead: bool = False           # the player was dead after the last tic
     turn_tics: int = 0               # tics a turn key has been held
     show_help: bool = True
+    help_until: float = None         # perf_counter time the help line goes away by itself
     show_map: bool = False
     map_overlay: bool = False
     show_partitions: bool = False
@@ -163,6 +164,8 @@ def run_walkthrough(tree, *, size=(320, 200), window=(960, 600), frames=None, tu
     if menus or (menus is None and frames is None):
         walk.overlay = GameFlow(walk, start_level, saves)
     prepare_renderer(walk)
+    if frames is None:
+        walk.help_until = time.perf_counter() + HELP_SECONDS
     open_display(walk)
     try:
         open_sound(walk, sound, music)
