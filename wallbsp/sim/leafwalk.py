@@ -58,7 +58,9 @@ def descend(a, b, c, front, back, x, y, tol, node, which):
 def grow_boxes(boxes, ancestors, leaf, x, y, reach, ids):
     """Grow ``boxes`` (node, (x0, y0, x1, y1)) in place to hold each thing ``ids[j]``'s
     square of half-size ``reach[j]`` at every node above its leaf (``ancestors``: per leaf,
-    the nodes above it nearest first, then -1)."""
+    the nodes above it nearest first, then -1).  A node's box holds its children's (the
+    segs', and every thing grows all its ancestors), so once a node's box needs no growing
+    neither does any above it: the walk up stops there, with the same boxes."""
     for j in range(ids.shape[0]):
         t = ids[j]
         lo_x, lo_y = x[t] - reach[j], y[t] - reach[j]
@@ -68,11 +70,14 @@ def grow_boxes(boxes, ancestors, leaf, x, y, reach, ids):
             n = row[d]
             if n < 0:
                 break
+            grown = False
             if lo_x < boxes[n, 0]:
-                boxes[n, 0] = lo_x
+                boxes[n, 0], grown = lo_x, True
             if lo_y < boxes[n, 1]:
-                boxes[n, 1] = lo_y
+                boxes[n, 1], grown = lo_y, True
             if hi_x > boxes[n, 2]:
-                boxes[n, 2] = hi_x
+                boxes[n, 2], grown = hi_x, True
             if hi_y > boxes[n, 3]:
-                boxes[n, 3] = hi_y
+                boxes[n, 3], grown = hi_y, True
+            if not grown:
+                break
