@@ -2,7 +2,10 @@
 """Our own sprites and textures for the game level (no third-party art), drawn with numpy
 (tools/spritekit.py) into wallbsp/data/game/: ``sprites/NAMEF0.png`` for every frame of
 every state the level's things (and what they spawn: fireballs, puffs, blood, dropped
-weapons, the player's own body) can be in, and the red door and lift textures.
+weapons, the player's own body) and ViZDoom's scenarios' things (the cacodemon and its
+fireball, the chaingunner, the rocket, the health bonus: wallbsp/envs/vizdoom*.py) can be
+in, and the red door and lift textures.  The scenarios use these folders when Freedoom's
+IWAD is not installed (``wallbsp.envs.scenarios.our_resources``).
 
 Which frames exist is read from DOOM's state table (``wallbsp.sim.info``): each monster's
 chains (spawn, see, pain, melee, missile, death, gib) say what a frame shows — walking,
@@ -43,12 +46,18 @@ BODIES = {
                     bulk=1.45, head=1.25, eyes=(250, 220, 60), jaws=True),
     "PLAY": sk.Body(36, 56, (200, 150, 120), (60, 120, 60), (50, 96, 50), (60, 60, 64),
                     helmet=(70, 130, 70)),
+    "CPOS": sk.Body(40, 56, (206, 150, 124), (150, 42, 36), (58, 54, 56), (92, 92, 98),
+                    bulk=1.15),
 }
 # what the game level places, and what those things spawn or drop
 LEVEL_TYPES = (3004, 9, 3001, 3002, 2001, 2002, 2007, 2008, 2048, 2049, 2011, 2012, 2018,
                13, 2035, 2028)
 SPAWNED = ("MT_PLAYER", "MT_TROOPSHOT", "MT_PUFF", "MT_BLOOD", "MT_TFOG", "MT_CLIP",
            "MT_SHOTGUN")
+# what the scenarios spawn beyond those (Cacodemon, ChaingunGuy, HealthBonus, Medikit,
+# GreenArmor, ...), and the fireball, rocket and gun those make or drop
+SCENARIO_TYPES = (3005, 65, 2014, 2012, 2018)
+SCENARIO_SPAWNED = ("MT_HEADSHOT", "MT_ROCKET", "MT_CHAINGUN")
 # states the player's code sets itself (P_SetMobjState(mo, S_PLAY_ATK2) as a weapon fires)
 SET_BY_CODE = {"MT_PLAYER": ("missilestate", "S_PLAY_ATK2")}
 CHAINS = ("seestate", "missilestate", "meleestate", "painstate", "deathstate", "xdeathstate",
@@ -86,17 +95,19 @@ def frame_roles(types=LEVEL_TYPES, spawned=SPAWNED) -> dict:
                 st = info.STATES[s]
                 key = (info.SPRNAMES[st.sprite], chr(ord("A") + (st.frame & 0x7FFF)))
                 shoots = bool(st.frame & FULLBRIGHT) or "Attack" in (st.action or "")
-                frames[key] = frames.get(key, False) or shoots
+                frames.setdefault(key, shoots)      # as first shown: CPOSE aims, F fires
             for k, (key, flash) in enumerate(frames.items()):
                 roles.setdefault(key, (name, k, len(frames), flash))
     return roles
 
 
 def monster_frame(sprite: str, frame: str, role: tuple) -> np.ndarray:
-    body = BODIES[sprite]
     name, k, n, bright = role
     t = k / max(n - 1, 1)
     r = rng_for(sprite + frame)
+    if sprite == "HEAD":
+        return cacodemon_frame(name, k, n, bright, r)
+    body = BODIES[sprite]
     if name in ("seestate", "spawnstate"):
         return sk.figure(body, sk.Pose(step=(1, 0, -1, 0)[k % 4]))
     if name in ("missilestate", "meleestate"):
@@ -108,6 +119,17 @@ def monster_frame(sprite: str, frame: str, role: tuple) -> np.ndarray:
     if name == "deathstate":
         return sk.dying(body, t, r)
     return sk.gibbed(body, t, r)
+
+
+def cacodemon_frame(name, k, n, bright, rng):
+    """Floating (A), opening its mouth to spit (B-D), in pain (E-F), dying (G-L)."""
+    if name == "missilestate":
+        return sk.cacodemon(mouth=0.35 + 0.65 * k / max(n - 1, 1), fire=bright)
+    if name == "painstate":
+        return sk.cacodemon(mouth=0.3 + 0.4 * k, eye=0.4 - 0.4 * k, pain=True)
+    if name == "deathstate":
+        return sk.caco_dying(k / max(n - 1, 1), rng)
+    return sk.cacodemon()
 
 
 # -- pickups and effects -----------------------------------------------------------------------
@@ -181,16 +203,18 @@ def centred(pic):
     return np.concatenate([pic, np.zeros_like(pic)], axis=0)
 
 
-def fireball(flying: bool, k: int, n: int, size=16):
-    """The imp's fireball: flying (two flickering frames), or bursting (frame k of n)."""
+def fireball(flying: bool, k: int, n: int, size=16, violet=False):
+    """The imp's fireball (``violet``: the cacodemon's): flying (two flickering frames), or
+    bursting (frame k of n)."""
     pic = sk.canvas(size, size)
     c = size / 2 - 0.5
+    hue = (lambda r, g, b: (0.9 * r, b, min(1.6 * g, 255))) if violet else (lambda *rgb: rgb)
     if flying:
-        sk.glow(pic, c, c, size / 2 - 2 - k, (255, 90 + 50 * k, 30))
+        sk.glow(pic, c, c, size / 2 - 2 - k, hue(255, 90 + 50 * k, 30))
         return pic
     t = (k + 1) / n                         # a ring growing and going dark
     r = size / 2 - 1
-    sk.glow(pic, c, c, r, (255 - 100 * t, 150 - 110 * t, 40))
+    sk.glow(pic, c, c, r, hue(255 - 100 * t, 150 - 110 * t, 40))
     ys, xs = sk.grid(pic)
     pic[np.hypot(xs - c, ys - c) < r * t * 0.8, 3] = 0
     return pic
@@ -237,6 +261,45 @@ def barrel_explosion(k, n):
     return pic
 
 
+def rocket():
+    """A rocket seen from behind (the way the player sees it fly): a grey body, four
+    fins and the burning exhaust."""
+    pic = sk.canvas(16, 16)
+    for dx, dy in ((0, -1), (0, 1), (-1, 0), (1, 0)):
+        sk.box(pic, 7.5 - 1 + dx * 6 - abs(dy), 7.5 - 1 + dy * 6 - abs(dx), 7.5 + 1 + dx * 6
+               + abs(dy), 7.5 + 1 + dy * 6 + abs(dx), (86, 88, 92))
+    sk.ellipse(pic, 7.5, 7.5, 5, 5, (150, 150, 156))
+    sk.glow(pic, 7.5, 7.5, 3.2, (255, 190, 60))
+    return sk.outline(pic)
+
+
+def explosion(k, n, size=40):
+    """The rocket's blast: a ball of fire, growing, going red and breaking up."""
+    pic = sk.canvas(size, size)
+    t = k / max(n - 1, 1)
+    c = size / 2 - 0.5
+    sk.glow(pic, c, c, size * (0.3 + 0.18 * t), (255, 210 - 130 * t, 60 - 40 * t))
+    rng = rng_for(f"MISL{k}")
+    ys, xs = sk.grid(pic)
+    for _ in range(int(8 * t)):               # holes as it burns out
+        x, y = rng.uniform(6, size - 6, 2)
+        pic[np.hypot(xs - x, ys - y) < 1 + 3 * t, 3] = 0
+    return pic
+
+
+def health_bonus(k, n):
+    """The health bonus (and health_gathering_supreme's poison): a small blue bottle whose
+    glass glimmers brighter from frame to frame."""
+    w, h = 14, 18
+    pic = sk.canvas(w, h)
+    glass = np.array([60.0, 96.0, 230.0]) * (0.85 + 0.3 * k / max(n - 1, 1))
+    sk.ellipse(pic, w / 2 - 0.5, h - 6.5, 5.5, 5.5, tuple(np.minimum(glass, 255)))
+    sk.box(pic, w / 2 - 2.5, 2, w / 2 + 1.5, h - 10, tuple(np.minimum(glass, 255)))
+    sk.box(pic, w / 2 - 3, 0, w / 2 + 2, 3, (200, 200, 210))
+    sk.ellipse(pic, w / 2 - 2.5, h - 8, 1.3, 1.8 + k * 0.3, (230, 240, 255), False)
+    return sk.outline(pic)
+
+
 def item_pictures(roles: dict) -> dict:
     """The pickups' and effects' pictures, keyed (sprite, frame)."""
     out = {("SHOT", "A"): gun_on_floor(56, 12, (110, 74, 40), 2),
@@ -248,8 +311,14 @@ def item_pictures(roles: dict) -> dict:
            ("RKEY", "A"): keycard(False), ("RKEY", "B"): keycard(True),
            ("BAR1", "A"): barrel(False), ("BAR1", "B"): barrel(True)}
     for (sprite, frame), (_name, k, n, _bright) in roles.items():
-        if sprite == "BAL1":
-            out[sprite, frame] = centred(fireball(_name == "spawnstate", k, n))
+        if sprite in ("BAL1", "BAL2"):
+            out[sprite, frame] = centred(fireball(_name == "spawnstate", k, n,
+                                                  violet=sprite == "BAL2"))
+        elif sprite == "MISL":
+            out[sprite, frame] = centred(rocket() if _name == "spawnstate"
+                                         else explosion(k, n))
+        elif sprite == "BON1":
+            out[sprite, frame] = health_bonus(k, n)
         elif sprite == "PUFF":
             out[sprite, frame] = centred(puff(k))
         elif sprite == "BLUD":
@@ -283,14 +352,14 @@ def lift(w=64, h=128):
 
 def all_pictures() -> dict[str, np.ndarray]:
     """Relative path → uint8 picture for everything this script draws."""
-    roles = frame_roles()
+    roles = frame_roles(LEVEL_TYPES + SCENARIO_TYPES, SPAWNED + SCENARIO_SPAWNED)
     items = item_pictures(roles)
     out = {"DOORRED.png": red_door(), "LIFT1.png": lift()}
     for (sprite, frame), role in sorted(roles.items()):
         name = f"{sprite}{frame}0"
         if name in SPRITES:                   # drawn by make_textures.py
             continue
-        if sprite in BODIES:
+        if sprite in BODIES or sprite == "HEAD":
             picture = monster_frame(sprite, frame, role)
         elif (sprite, frame) in items:
             picture = items[sprite, frame]

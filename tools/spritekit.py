@@ -250,3 +250,73 @@ def gibbed(body: Body, t: float, rng) -> np.ndarray:
     speckle(pic, rng, body.torso, 4, 6, h - 8 - 12 * spread, w - 6, h - 3, 1.5, 3)
     speckle(pic, rng, (220, 210, 190), 3, 6, h - 7, w - 6, h - 3, 1, 1.6)
     return outline(pic, 0.8)
+
+
+# -- the cacodemon: a floating ball, one eye, a wide mouth -----------------------------------
+
+CACO_SKIN, CACO_HORNS = (196, 40, 36), (226, 214, 186)
+
+
+def cacodemon(mouth: float = 0.3, eye: float = 1.0, fire: bool = False, pain: bool = False,
+              size: int = 62) -> np.ndarray:
+    """The cacodemon seen from the front: ``mouth`` 0 shut to 1 wide open, ``eye`` 1 open to
+    0 shut, ``fire``: a ball of lightning in its mouth (the frame it spits)."""
+    pic = canvas(size, size)
+    c, r = size / 2 - 0.5, size / 2 - 4
+    cy = c + 3
+    for side in (-1, 1):
+        triangle(pic, [(c + side * r * 0.3, cy - r * 0.8), (c + side * r * 0.62, cy - r * 0.62),
+                       (c + side * r * 0.58, cy - r * 1.12)], CACO_HORNS)
+    ellipse(pic, c, cy, r, r * 0.92, CACO_SKIN)
+    for k in range(7):                       # darker lumps round the sides
+        a = 2.2 + k * 0.55
+        ellipse(pic, c + np.cos(a) * r * 0.72, cy - np.sin(a) * r * 0.6, 2.2, 1.8,
+                (150, 26, 26))
+    _caco_eye(pic, c, cy - r * 0.34, r, eye)
+    _caco_mouth(pic, c, cy + r * 0.36, r, mouth)
+    if fire:
+        glow(pic, c, cy + r * 0.36, 3 + r * 0.3 * mouth, (236, 90, 250))
+    if pain:
+        pic[..., :3] = np.where(pic[..., 3:] > 0, pic[..., :3] * [1.15, 0.75, 0.7], 0)
+    return outline(pic)
+
+
+def _caco_eye(pic, x, y, r, open_):
+    if open_ <= 0.05:                        # shut: a dark slit under the brow
+        box(pic, x - r * 0.3, y - 1, x + r * 0.3, y + 1, (90, 14, 14), False)
+        return
+    ellipse(pic, x, y, r * 0.3, r * 0.24 * open_, (236, 234, 206))
+    ellipse(pic, x, y, r * 0.15, r * 0.15 * min(open_ * 1.5, 1), (40, 186, 64))
+    ellipse(pic, x, y, r * 0.06, r * 0.06 * min(open_ * 1.5, 1), (10, 10, 10), False)
+
+
+def _caco_mouth(pic, x, y, r, open_):
+    """An ellipse of dark red with a row of teeth along each lip."""
+    half_w, half_h = r * 0.62, 2 + open_ * r * 0.36
+    ellipse(pic, x, y, half_w, half_h, (70, 8, 20), False)
+    ellipse(pic, x, y + half_h * 0.45, half_w * 0.45, half_h * 0.4, (150, 40, 70), False)
+    for k in range(-3, 4):
+        tx = x + k * half_w * 0.26
+        rim = half_h * np.sqrt(max(1 - (k * 0.26) ** 2, 0))
+        size = 1.6 if abs(k) < 3 else 1.1
+        for lip, point in ((y - rim, 1), (y + rim, -1)):
+            triangle(pic, [(tx - size, lip), (tx + size, lip), (tx, lip + point * size * 2.2)],
+                     (240, 236, 220))
+
+
+def caco_dying(t: float, rng) -> np.ndarray:
+    """The cacodemon from the eye bursting (``t`` 0) to a flattened heap (1)."""
+    pic = cacodemon(mouth=0.8, eye=0.0, pain=True)
+    size = pic.shape[0]
+    c = size / 2 - 0.5
+    eye_y = c + 3 - (size / 2 - 4) * 0.34
+    ellipse(pic, c, eye_y, 6 + 3 * t, 5 + 2 * t, (90, 0, 12), False)     # the eye burst
+    speckle(pic, rng, (110, 0, 12), int(4 + 10 * t), c - 8 - 10 * t, eye_y, c + 8 + 10 * t,
+            c + 6 + 10 * t, 1.5, 3.0)
+    speckle(pic, rng, (236, 130, 130), int(2 + 5 * t), c - 10, c - 4, c + 10, c + 12, 1.0, 2.0)
+    fallen = squash(pic, 1.0 - 0.72 * t) if t > 0.2 else pic
+    if t >= 0.99:
+        pool = canvas(size, size)
+        ellipse(pool, c, size - 2, size * 0.45, 2.5, (110, 0, 10), False)
+        fallen = np.where(fallen[..., 3:] > 0, fallen, pool)
+    return outline(fallen, 0.8)
