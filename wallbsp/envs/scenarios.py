@@ -36,7 +36,7 @@ from wallbsp.game.playsim.game import GA_COMPLETED, GA_VICTORY
 from wallbsp.game.scenario import SCENARIO_DIR
 from wallbsp.game.world import World
 
-__all__ = ["ScenarioEnv", "scenario_tree", "IWAD_PATHS"]
+__all__ = ["ScenarioEnv", "scenario_tree", "installed_iwad", "our_resources", "IWAD_PATHS"]
 
 IWAD_PATHS = ("/usr/share/games/doom/freedoom2.wad", "/usr/share/doom/freedoom2.wad")
 ACTION_KINDS = ("discrete", "multibinary", "box")
@@ -45,25 +45,39 @@ _TREES: dict = {}
 
 def scenario_tree(level):
     """The compiled tree of a scenario's ``level``: a name of ``wallbsp/data/scenarios``
-    (Freedoom's IWAD added as its texture source when installed), or what ``given_tree``
-    takes."""
+    (its pictures from Freedoom's IWAD when installed, else from our own sprite and texture
+    folders: ``our_resources``), or what ``given_tree`` takes."""
     if not isinstance(level, str) or "/" in level or "." in level:
         return given_tree(level)
-    if level not in _TREES:
+    iwad = installed_iwad()
+    key = (level, iwad)
+    if key not in _TREES:
         import json
-        import os
         from wallbsp.bsp.build import compile_level
         from wallbsp.level.io import level_from_dict
         if level in CONVERTED:
             data = converted_level(level)
         else:
             data = json.loads((SCENARIO_DIR / f"{level}.json").read_text())
-        iwad = os.environ.get("WALLBSP_IWAD") or next(
-            (p for p in IWAD_PATHS if os.path.isfile(p)), None)
-        if iwad:
-            data["resources"] = [iwad]
-        _TREES[level] = compile_level(level_from_dict(data, source=f"{level}.json"))
-    return _TREES[level]
+        data["resources"] = [iwad] if iwad else our_resources()
+        _TREES[key] = compile_level(level_from_dict(data, source=f"{level}.json"))
+    return _TREES[key]
+
+
+def installed_iwad():
+    """Freedoom's IWAD: ``WALLBSP_IWAD`` if set (a path that is no file: none), else the
+    first of ``IWAD_PATHS`` installed, else None."""
+    import os
+    given = os.environ.get("WALLBSP_IWAD")
+    return next((p for p in ((given,) if given else IWAD_PATHS) if os.path.isfile(p)), None)
+
+
+def our_resources() -> list:
+    """Without an IWAD: the game level's folders, our own sprites (every frame of the
+    scenarios' monsters, missiles and items, tools/make_game_art.py) and our textures
+    where a scenario's name is one of ours; anything else is a flat colour."""
+    data = SCENARIO_DIR.parent
+    return [str(data / "game"), str(data / "textures")]
 
 
 def _forget():
