@@ -59,7 +59,7 @@ from gymnasium.utils import seeding
 from wallbsp.envs import gamevars
 from wallbsp.envs.levels import given_tree
 from wallbsp.envs.observations import observation_space, pose_of, view_observation
-from wallbsp.envs.scenarios import IWAD_PATHS
+from wallbsp.envs.scenarios import installed_iwad, our_resources
 from wallbsp.game.playsim.structs import BT_USE
 from wallbsp.game.world import TICRATE, World
 from wallbsp.render import render
@@ -81,15 +81,15 @@ _ARENA: dict = {}
 
 def arena_tree():
     """The bundled arena compiled (once per process), Freedoom's IWAD added as a picture
-    source when installed (``WALLBSP_IWAD`` names another)."""
-    iwad = os.environ.get("WALLBSP_IWAD") or next(
-        (p for p in IWAD_PATHS if os.path.isfile(p)), None)
+    source when installed (``WALLBSP_IWAD`` names another), else our own sprites (the
+    players' PLAY frames of the game level's folder)."""
+    iwad = installed_iwad()
     if iwad not in _ARENA:
         from wallbsp.bsp.build import compile_level
         from wallbsp.level.io import load_level
         level = load_level(ARENA)
-        if iwad:
-            level = dataclasses.replace(level, resources=tuple(level.resources) + (iwad,))
+        extra = (iwad,) if iwad else tuple(our_resources())
+        level = dataclasses.replace(level, resources=tuple(level.resources) + extra)
         _ARENA[iwad] = compile_level(level)
     return _ARENA[iwad]
 
