@@ -190,3 +190,20 @@ def test_each_tics_state_is_read_from_the_play(freedoom_cache):
                     assert things.sector[k] == state.tree.locate(th.x / 65536,
                                                                  th.y / 65536)
             th = th.next
+
+
+@needs_freedoom
+def test_a_light_switch_is_read_though_no_thinker_moves_its_sectors(freedoom_cache):
+    """After a tic only the sectors a thinker or a light-switch line can change are read
+    (``PlayState.sync``): E4M2's line 791 (W1 lights to 255, tag 4) sets its sectors'
+    light at once, with no thinker, and the renderer's lights still follow."""
+    world = World(freedoom_cache.tree("freedoom1.wad", "E4M2"), 3)
+    world.tic()
+    line = world.play.lines[791]
+    assert (line.special, line.tag) == (13, 4)
+    tagged = [s.id for s in world.play.sectors if s.tag == 4]
+    assert tagged and any(world.state.light[i] != 255 for i in tagged)
+    world.play.ev_light_turn_on(line, 255)           # as the line does when crossed
+    world.tic()
+    assert all(world.state.light[i] == 255 for i in tagged)
+    assert world.state.light.tolist() == [float(s.lightlevel) for s in world.play.sectors]
