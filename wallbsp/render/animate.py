@@ -15,7 +15,7 @@ import weakref
 
 import numpy as np
 
-from wallbsp.assets.animations import shown, update_tic
+from wallbsp.assets.animations import update_tic
 
 __all__ = ["Cycles", "members", "animated_tables"]
 
@@ -40,6 +40,17 @@ class Cycles:
         self.ids = np.concatenate([ids for _, ids in runs]).astype(np.int64)
         self.member_of[self.ids] = np.arange(len(self.ids))
         self.speeds = tuple(sorted({run.speed for run, _ in runs}))
+        # per member, the terms of ``shown`` (first + k, speed, run length) and where its
+        # run's ids start in ``ids``: a step's ids are one numpy expression, not a loop
+        def per_member(value):
+            return np.concatenate([np.full(len(ids), value(run), dtype=np.int64)
+                                   for run, ids in runs])
+        self._start = np.repeat(np.cumsum([0] + [len(ids) for _, ids in runs])[:-1],
+                                [len(ids) for _, ids in runs]).astype(np.int64)
+        self._offset = per_member(lambda run: run.first) + np.concatenate(
+            [np.arange(len(ids), dtype=np.int64) for _, ids in runs])
+        self._speed = per_member(lambda run: run.speed)
+        self._length = per_member(lambda run: len(run.names))
 
     @classmethod
     def of(cls, runs, walls: dict, flats: dict, n_textures: int):
@@ -62,8 +73,7 @@ class Cycles:
         tic = update_tic(leveltime)
         if tic is None:
             return self.ids
-        return np.concatenate([ids[[shown(run, k, tic) for k in range(len(ids))]]
-                               for run, ids in self.runs])
+        return self.ids[self._start + (tic // self._speed + self._offset) % self._length]
 
 
 class Animated:
