@@ -43,6 +43,39 @@ def picture_code(sprite: int, frame: int) -> int:
     return (sprite << 8) | (frame & FF_FRAMEMASK & 0xFF)
 
 
+def _merged(live, reads, last_live, last_reads):
+    """``(changed, gone)``: the mobjs of ``live`` whose read differs from the last one (or
+    that are new) and those of ``last_live`` no longer there.  The thinker list only loses
+    thinkers and gains them at its end, so both lists are walked side by side; an order
+    that is not so (none the play makes) is matched by identity instead."""
+    changed, gone, new = [], [], []
+    j, n = 0, len(last_live)
+    for mo, r in zip(live, reads):
+        if j < n and last_live[j] is mo:
+            if r != last_reads[j]:
+                changed.append((mo, r))
+            j += 1
+            continue
+        k = j
+        while k < n and last_live[k] is not mo:
+            k += 1
+        if k == n:                       # not among the rest: a new mobj
+            new.append(mo)
+            changed.append((mo, r))
+            continue
+        gone.extend(last_live[j:k])
+        if r != last_reads[k]:
+            changed.append((mo, r))
+        j = k + 1
+    gone.extend(last_live[j:])
+    if gone and new and not set(gone).isdisjoint(new):
+        before = dict(zip(last_live, last_reads))
+        now = set(live)
+        return ([(mo, r) for mo, r in zip(live, reads) if before.get(mo) != r],
+                [mo for mo in last_live if mo not in now])
+    return changed, gone
+
+
 class PlayThings(Things):
     """The map objects of a Play as ``Things`` (module docstring)."""
 
@@ -113,10 +146,7 @@ class PlayThings(Things):
             changed = [(mo, r) for mo, r, was in zip(live, reads, last_reads) if r != was]
             gone = []
         else:
-            before = dict(zip(last_live, last_reads))
-            changed = [(mo, r) for mo, r in zip(live, reads) if before.get(mo) != r]
-            now = set(live)
-            gone = [mo for mo in last_live if mo not in now]
+            changed, gone = _merged(live, reads, last_live, last_reads)
         self._reads, self._live = reads, live
         return self._apply(changed, gone)
 
