@@ -45,8 +45,11 @@ class Atlas:
 
     def __init__(self, resources=None):
         self.resources = resources
-        self.offset, self.width, self.height = [], [], []
-        self.left, self.top, self.paletted = [], [], []
+        # per slot: offset, width, height, left, top (rows) and whether paletted, in
+        # buffers grown by doubling too, so ``arrays`` hands out slices, not copies of lists
+        self._count = 0
+        self._numbers = np.zeros((5, 0), dtype=np.int64)
+        self._paletted = np.zeros(0, dtype=bool)
         # every slot's texels and opacity one after another, in buffers grown by doubling
         # (a new picture costs its own size, not the atlas's)
         self._texels, self._opaque = np.zeros(0, dtype=np.uint32), np.zeros(0, dtype=bool)
@@ -104,13 +107,17 @@ class Atlas:
     def _add(self, texels, opaque, left, top, paletted) -> int:
         if paletted and self.lit_palette is None:
             raise ValueError("a paletted picture needs the palette of its WAD")
-        slot = len(self.offset)
-        self.offset.append(self._size)
-        self.width.append(texels.shape[0])
-        self.height.append(texels.shape[1])
-        self.left.append(int(left))
-        self.top.append(int(top))
-        self.paletted.append(bool(paletted))
+        slot = self._count
+        if slot == len(self._paletted):
+            capacity = max(16, 2 * slot)
+            numbers = np.zeros((5, capacity), dtype=np.int64)
+            numbers[:, :slot] = self._numbers[:, :slot]
+            self._numbers = numbers
+            self._paletted = _grown(self._paletted, slot, capacity)
+        self._numbers[:, slot] = (self._size, texels.shape[0], texels.shape[1], int(left),
+                                  int(top))
+        self._paletted[slot] = bool(paletted)
+        self._count = slot + 1
         end = self._size + texels.size
         if end > len(self._texels):
             capacity = max(end, 2 * len(self._texels))
@@ -126,11 +133,10 @@ class Atlas:
     def arrays(self) -> Pictures:
         """The slots as ``Pictures``."""
         if self._packed is None:
+            n = self._count
             self._packed = Pictures(
                 self._texels[:self._size], self._opaque[:self._size],
-                *(np.array(v, dtype=np.int64) for v in (self.offset, self.width, self.height,
-                                                        self.left, self.top)),
-                np.array(self.paletted, dtype=bool),
+                *(self._numbers[k, :n] for k in range(5)), self._paletted[:n],
                 _NO_PALETTE if self.lit_palette is None else self.lit_palette)
         return self._packed
 
