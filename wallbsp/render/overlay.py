@@ -109,6 +109,10 @@ class _Choices:
     def __init__(self):
         self.kind = np.zeros(0, dtype=np.int64)
         self.chosen = np.zeros((0, 8), dtype=np.int64)
+        # every choice made, by kind and rotation (sorted ``kind * 8 + rotation - 1``): a
+        # thing that comes to show a picture chosen before takes it in the kernel
+        self.known_keys = np.zeros(0, dtype=np.int64)
+        self.known_values = np.zeros(0, dtype=np.int64)
 
     def fit(self, n):
         """Rows for ``n`` things (things are only ever added)."""
@@ -123,11 +127,21 @@ class _Choices:
         the eye), that have none for the rotation they show now (a thing whose frame
         changed has none): ``pictures`` is asked for those only."""
         k, rotation = sprites.unchosen_pictures(ids, seen, things.angle, things.type,
-                                                self.kind, self.chosen)
+                                                self.kind, self.chosen, self.known_keys,
+                                                self.known_values)
         if len(k):
             ids = ids[k]
             slot, mirrored = pictures(things, ids, rotation, atlas)
-            self.chosen[ids, rotation - 1] = 2 * slot + mirrored
+            values = 2 * slot + mirrored
+            self.chosen[ids, rotation - 1] = values
+            self._know(things.type[ids].astype(np.int64) * 8 + rotation - 1, values)
+
+    def _know(self, keys, values):
+        """Add choices to ``known_keys`` and ``known_values`` (a key known keeps its value:
+        ``pictures`` gives one thing of a kind and rotation what it gave the first)."""
+        keys, first = np.unique(np.concatenate([self.known_keys, keys]), return_index=True)
+        self.known_keys = keys
+        self.known_values = np.concatenate([self.known_values, values])[first]
 
 
 _CHOICES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()

@@ -219,11 +219,14 @@ def _rotation(degrees, angle):
 
 
 @kernel
-def unchosen_pictures(ids, degrees, angle, kind, chosen_kind, chosen):
+def unchosen_pictures(ids, degrees, angle, kind, chosen_kind, chosen, known_keys,
+                      known_values):
     """``(k, rotation)`` of the things ``ids[k]`` (seen in direction ``degrees[k]``) whose
     picture at the rotation they show is not chosen yet (``_chosen_pictures`` would give
-    -1).  A thing whose ``kind`` is no longer its row's ``chosen_kind`` gets its row
-    cleared and the new kind first (in place)."""
+    -1) and was not chosen for another thing of their kind either: ``known_keys`` (sorted
+    ``kind * 8 + rotation - 1``) and ``known_values`` hold the choices ``pictures`` made,
+    copied into ``chosen`` here.  A thing whose ``kind`` is no longer its row's
+    ``chosen_kind`` gets its row cleared and the new kind first (in place)."""
     k_out = np.empty(ids.shape[0], dtype=np.int64)
     rotation_out = np.empty(ids.shape[0], dtype=np.int64)
     count = 0
@@ -234,9 +237,15 @@ def unchosen_pictures(ids, degrees, angle, kind, chosen_kind, chosen):
             for r in range(chosen.shape[1]):
                 chosen[i, r] = -1
         rotation = _rotation(degrees[k], angle[i])
-        if chosen[i, rotation - 1] < 0:
-            k_out[count], rotation_out[count] = k, rotation
-            count += 1
+        if chosen[i, rotation - 1] >= 0:
+            continue
+        key = kind[i] * 8 + rotation - 1
+        at = np.searchsorted(known_keys, key)
+        if at < known_keys.shape[0] and known_keys[at] == key:
+            chosen[i, rotation - 1] = known_values[at]
+            continue
+        k_out[count], rotation_out[count] = k, rotation
+        count += 1
     return k_out[:count], rotation_out[:count]
 
 
