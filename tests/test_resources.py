@@ -296,6 +296,7 @@ def test_damaged_texture_through_the_command_line_is_exit_2_and_one_line(capsys,
 # Picture bombs (issue 14 §6): the cost is the picture's own size
 
 def peak_bytes(call) -> int:
+    call()      # once untraced: the first decode may load numba and the compiled decoder
     tracemalloc.start()
     try:
         call()

@@ -6,9 +6,11 @@ DOOM draws walls column by column) of uint8 palette indices — or RGB triples f
 from PNG files — with ``mask[x, y]`` True where the picture is opaque, and DOOM's ``left`` and
 ``top`` offsets (sprites use them).
 
-The cost of decoding is bounded by the picture's own width × height, whatever the bytes say:
-columns that share posts are decoded once; a column stops at the bottom of the canvas or when
-it has drawn as many rows as the picture has; patches are clipped to the texture; a placement
+Posts are decoded by a compiled kernel (``postdecode``); a damaged lump goes to the numpy walk
+here, which names the damage. The cost of decoding is bounded by the picture's own width ×
+height, whatever the bytes say: a column stops at the bottom of the canvas, when it has drawn
+as many rows as the picture has or after height + 1 posts (the numpy walk also walks columns
+that share posts once); patches are clipped to the texture; a placement
 repeated in a texture is painted once, and patches covering a texture more than
 ``MAX_OVERDRAW`` times over are refused. Sizes beyond ``MAX_SIDE`` a side or ``MAX_TEXELS`` in
 all are refused. Damage is one ``ResourceError`` line naming the lump:
@@ -23,6 +25,7 @@ from typing import Callable
 import numpy as np
 
 from wallbsp.files import LevelError
+from wallbsp.assets.postdecode import decode_posts
 
 MAX_SIDE = 4096            # DOOM's own pictures are at most 1024 wide; tall skies ~ 256 high
 MAX_TEXELS = 1 << 21       # 2 M texels (2048 × 1024): 16 times the largest Freedoom texture
@@ -92,6 +95,11 @@ def decode_picture(raw: bytes, where: str) -> Picture:
     if 8 + 4 * width > len(raw):
         raise ResourceError(f"{where}: truncated ({len(raw)} bytes; {width} column offsets "
                             f"need {8 + 4 * width})")
+    pixels = np.zeros((width, height), np.uint8)
+    mask = np.zeros((width, height), bool)
+    if decode_posts(np.frombuffer(raw, np.uint8), pixels, mask):
+        return Picture(pixels, mask, left, top)
+    # damaged: the numpy walk finds the damage and names it
     offsets = np.frombuffer(raw, "<u4", width, 8)
     starts, column_of = np.unique(offsets, return_inverse=True)   # shared columns: decode once
     past = np.flatnonzero(starts >= len(raw))
