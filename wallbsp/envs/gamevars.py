@@ -212,23 +212,19 @@ def _variable(name, p, mo, events):
                 "HITCOUNT": events.hits, "HITS_TAKEN": events.hits_taken}[name]
     if name == "DEAD":
         return int(p.playerstate == PST_DEAD or p.health <= 0)
-    if name == "POSITION_X":
-        return mo.x * FRAC
-    if name == "POSITION_Y":
-        return mo.y * FRAC
-    if name == "POSITION_Z":
-        return mo.z * FRAC
+    if name in MOBJ_FIXED:
+        return getattr(mo, MOBJ_FIXED[name]) * FRAC
     if name == "ANGLE":
         return (mo.angle & 0xFFFFFFFF) * 360.0 / 4294967296.0
-    if name == "VELOCITY_X":
-        return mo.momx * FRAC
-    if name == "VELOCITY_Y":
-        return mo.momy * FRAC
-    if name == "VELOCITY_Z":
-        return mo.momz * FRAC
     if name == "ON_GROUND":
         return int(mo.z <= mo.floorz)
     raise ValueError(f"unknown game variable {name!r}")
+
+
+
+# ViZDoom's position and velocity variables: the player's map object's fixed-point fields
+MOBJ_FIXED = {"POSITION_X": "x", "POSITION_Y": "y", "POSITION_Z": "z",
+              "VELOCITY_X": "momx", "VELOCITY_Y": "momy", "VELOCITY_Z": "momz"}
 
 
 def variables_array(world, names, events=None, player=0) -> np.ndarray:
