@@ -174,6 +174,13 @@ def face_play(golden, **fields):
     return golden.fake_play("freedoom1", **fields)
 
 
+def settle(face, play, p, tics=40):
+    """Tics without pain, until the face's last expression has run out."""
+    for _ in range(tics):
+        p.damagecount = 0
+        face.tick(play, p)
+
+
 def test_the_face_looks_about_by_m_random_and_hurts_by_health(golden):
     from wallbsp.screen.statusbar import FaceState
     play = face_play(golden, health=100)
@@ -208,31 +215,23 @@ def test_evil_grin_ouch_turns_rampage_god_and_death(golden):
     p.attacker = SimpleNamespace(x=0, y=100 << 16)
     face.tick(play, p)
     assert face.index == 4                                   # STFTL00
-    for _ in range(40):
-        p.damagecount = 0
-        face.tick(play, p)
+    settle(face, play, p)
     p.attacker = SimpleNamespace(x=0, y=-100 << 16)
     p.damagecount = 10
     face.tick(play, p)
     assert face.index == 3                                   # STFTR00: to the right
     p.mo.angle = (ANG90 * 3) & 0xFFFFFFFF                   # now facing it: head on
-    for _ in range(40):
-        p.damagecount = 0
-        face.tick(play, p)
+    settle(face, play, p)
     p.damagecount = 10
     face.tick(play, p)
     assert face.index == 7                                   # STFKILL0
     # hurt by oneself, health up by more than 20 meanwhile (DOOM's famous ouch rule)
-    for _ in range(40):
-        p.damagecount = 0
-        face.tick(play, p)
+    settle(face, play, p)
     p.attacker, p.damagecount, p.health = None, 5, 100
     face.oldhealth = 60
     face.tick(play, p)
     assert face.index == 5                                   # STFOUCH0
-    for _ in range(40):
-        p.damagecount = 0
-        face.tick(play, p)
+    settle(face, play, p)
     p.attackdown = 1
     for _ in range(71):
         face.tick(play, p)
