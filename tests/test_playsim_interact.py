@@ -33,6 +33,7 @@ class Stub(Interact, Damage):
         self.players = [Player() for _ in range(4)]
         self.rng = ScriptedRng(*rng)
         self.log = []
+        self.touched = []               # the ticker's (what a tic may have changed)
 
     def s_start_sound(self, origin, sfx):
         self.log.append(("sound", origin, sfx))

@@ -27,6 +27,7 @@ class _Play(MapUtil, PathTraverse, Sight, Collide, Slide):
         self.init_slide()
         self.validcount = 0
         self.gameversion = EXE_ULTIMATE
+        self.touched = []               # the ticker's (what a tic may have changed)
         self.gamemap = 1
         self.crossed = []
 

@@ -14,6 +14,7 @@ class StubPlay(Mobjs):
     def __init__(self, gameversion=EXE_ULTIMATE):
         self.rng = Random()
         self.gameversion = gameversion
+        self.touched = []               # the ticker's (what a tic may have changed)
         self.gameskill = 2
         self.leveltime = 0
         self.netgame = False

@@ -6,12 +6,12 @@ knowing it.
   ``ceilingheight`` (map units, from fixed point) and ``lightlevel`` (so flickering lights
   are the playsim's light thinkers, random numbers and all); ``version`` moves only when a
   height changed, so the renderer's caches keyed on it survive a tic where only lights
-  changed.  Floor flats that a special changed are ``floor_textures``.  After one tic
-  only the sectors that can have changed in it are read: those of the thinkers in the
-  list (doors, lifts, floors, ceilings, lights: a finished one is still linked until the
-  next tic's walk) and those tagged by a light-switch line (``LIGHT_SWITCHES``, DOOM's
+  changed.  Floor flats that a special changed are ``floor_textures``.  After tics whose
+  touched list the play vouches for (``PlayThings.incremental``), only the sectors that
+  can have changed in them are read: those of the thinkers that ran (doors, lifts, floors,
+  ceilings, lights) and those tagged by a light-switch line (``LIGHT_SWITCHES``, DOOM's
   only sector writes outside a thinker but for a mover's flat set with its thinker); any
-  other call (at load, after a paused or skipped tic, ``set_sector``) reads all of them.
+  other call (at load, after a restore, ``set_sector``) reads all of them.
 - **Walls**: wall ``i`` is a line of the Play (``wall_lines``: DOOM's linedefs in order,
   less the ones the importer leaves out, SPEC §2b), its front side the line's right side
   (its left one where the line has no right side).  A switch's pressed texture and the
@@ -102,9 +102,9 @@ class PlayState(WorldState):
         sectors, not only those a tic can change (module docstring)."""
         play = self.play
         self._things.sync(play, slots)
-        one_tic = play.leveltime == self.leveltime + 1 and not every_sector
         self.leveltime = play.leveltime
-        if one_tic and self._sectors is not None and len(play.sectors) == len(self._sectors):
+        if self._things.incremental and not every_sector and self._sectors is not None \
+                and len(play.sectors) == len(self._sectors):
             self._sync_movers(play.sectors)
         else:
             self._sync_sectors(list(map(_SECTOR, play.sectors)))
@@ -125,7 +125,7 @@ class PlayState(WorldState):
             self._sectors = sectors             # a list of its own: _sync_movers edits it
 
     def _sync_movers(self, all_sectors) -> None:
-        """After one tic: only the sectors of the thinkers and the light switches' ones."""
+        """Only the sectors of the thinkers that ran and the light switches' ones."""
         ids = set(self._switched)
         for th in self._things.movers:
             sector = getattr(th, "sector", None)     # a removed mobj has none

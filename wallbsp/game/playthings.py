@@ -17,6 +17,7 @@
 """
 from __future__ import annotations
 
+import itertools
 import operator
 
 import numpy as np
@@ -36,44 +37,12 @@ FF_FULLBRIGHT, FF_FRAMEMASK = 0x8000, 0x7FFF
 _READ = operator.attrgetter("x", "y", "z", "angle", "state", "flags", "radius", "height")
 STATIC_CODE = 1 << 24                   # picture codes of the level's own types: + type
 DOOM_TYPES = frozenset(info.DOOMEDNUM) | {1, 2, 3, 4, 11}
+_READERS = itertools.count(1)            # a number for each PlayThings (Play.take_touched)
 
 
 def picture_code(sprite: int, frame: int) -> int:
     """The key the renderer chooses a thing's picture by: sprite and frame letter."""
     return (sprite << 8) | (frame & FF_FRAMEMASK & 0xFF)
-
-
-def _merged(live, reads, last_live, last_reads):
-    """``(changed, gone)``: the mobjs of ``live`` whose read differs from the last one (or
-    that are new) and those of ``last_live`` no longer there.  The thinker list only loses
-    thinkers and gains them at its end, so both lists are walked side by side; an order
-    that is not so (none the play makes) is matched by identity instead."""
-    changed, gone, new = [], [], []
-    j, n = 0, len(last_live)
-    for mo, r in zip(live, reads):
-        if j < n and last_live[j] is mo:
-            if r != last_reads[j]:
-                changed.append((mo, r))
-            j += 1
-            continue
-        k = j
-        while k < n and last_live[k] is not mo:
-            k += 1
-        if k == n:                       # not among the rest: a new mobj
-            new.append(mo)
-            changed.append((mo, r))
-            continue
-        gone.extend(last_live[j:k])
-        if r != last_reads[k]:
-            changed.append((mo, r))
-        j = k + 1
-    gone.extend(last_live[j:])
-    if gone and new and not set(gone).isdisjoint(new):
-        before = dict(zip(last_live, last_reads))
-        now = set(live)
-        return ([(mo, r) for mo, r in zip(live, reads) if before.get(mo) != r],
-                [mo for mo in last_live if mo not in now])
-    return changed, gone
 
 
 class PlayThings(Things):
@@ -87,7 +56,9 @@ class PlayThings(Things):
         self._slot: dict = {}            # mobj -> slot
         self._pictures: dict = {}        # picture code -> ThingInfo (what the renderer reads)
         self.static = np.zeros(0, dtype=bool)   # a level's own type: no mobj
-        self._reads, self._live = [], []     # the last sync's mobjs and reads
+        self._read_of: dict = {}         # mobj -> its read (``_READ``) at the last sync
+        self._reader = next(_READERS)    # who takes the play's touched list
+        self.incremental = False         # the last sync read only what a tic touched
         self.movers: list = []           # the last sync's other thinkers (doors, lights, ...)
         self.hidden = None               # a mobj no view draws (``hide``)
         self._grow(capacity)
@@ -118,15 +89,57 @@ class PlayThings(Things):
         self.mobjs.extend([None] * (n - len(self.mobjs)))
 
     def sync(self, play, slots=None) -> bool:
-        """Read every live mobj of ``play`` (``slots``: mobj -> thing index for the ones
-        placed by THINGS entries, at load).  True when anything changed.  Only the mobjs
-        whose position, angle, state, flags or size changed since the last call are
-        written (a tic where most things stand still costs one read of each)."""
+        """Read the live mobjs of ``play`` that may have changed since the last call (all
+        of them at load, after a restore or whenever the play cannot say: ``slots``, mobj
+        -> thing index for the ones placed by THINGS entries, at load).  True when anything
+        changed.  Only the mobjs whose position, angle, state, flags or size changed are
+        written; ``incremental`` says whether the play's touched list was used (then
+        ``movers`` are the other thinkers that ran, else every one in the list)."""
         if slots:
             self._grow(max(slots.values()) + 1)
             for mo, i in slots.items():
                 self._slot[mo] = i
                 self.mobjs[i] = mo
+        touched = play.take_touched(self._reader)
+        self.incremental = touched is not None and not slots
+        if self.incremental:
+            live, gone = self._touched_mobjs(play, touched)
+        else:
+            live, gone = self._every_mobj(play)
+        reads = list(map(_READ, live))
+        last = self._read_of
+        changed = [(mo, r) for mo, r in zip(live, reads) if last.get(mo) != r]
+        for mo, r in changed:
+            last[mo] = r
+        for mo in gone:
+            del last[mo]
+        if not changed and not gone:
+            return False
+        return self._apply(changed, gone)
+
+    def _touched_mobjs(self, play, touched) -> tuple:
+        """``(mobjs to read, mobjs gone)`` from the play's touched list (and the players'
+        things, which change in their own think); the touched thinkers that are no mobj
+        are ``movers``."""
+        mobj_func = type(play).p_mobj_thinker
+        touched = dict.fromkeys(touched)
+        for i, p in enumerate(play.players):
+            if play.playeringame[i] and p.mo is not None:
+                touched[p.mo] = None
+        live, gone, movers, last = [], [], [], self._read_of
+        for th in touched:
+            if getattr(th, "sector", None) is not None:
+                movers.append(th)                # a door, lift, light...: no mobj
+            elif th.func is mobj_func:
+                live.append(th)
+            elif th in last:                     # removed (a mobj never read: skipped)
+                gone.append(th)
+        self.movers = movers
+        return live, gone
+
+    def _every_mobj(self, play) -> tuple:
+        """``(every live mobj, mobjs read before and gone)``, walking the thinker list;
+        ``movers`` are its other thinkers."""
         mobj_func = type(play).p_mobj_thinker
         cap = play.thinkercap
         th = cap.next
@@ -138,17 +151,8 @@ class PlayThings(Things):
                 movers.append(th)
             th = th.next
         self.movers = movers
-        reads = list(map(_READ, live))
-        last_live, last_reads = self._live, self._reads
-        if live == last_live:              # the same mobjs in the same order: row by row
-            if reads == last_reads:
-                return False
-            changed = [(mo, r) for mo, r, was in zip(live, reads, last_reads) if r != was]
-            gone = []
-        else:
-            changed, gone = _merged(live, reads, last_live, last_reads)
-        self._reads, self._live = reads, live
-        return self._apply(changed, gone)
+        now = set(live)
+        return live, [mo for mo in self._read_of if mo not in now]
 
     def place_static(self, level, skill: int) -> None:
         """The level's things of its own types (module docstring), at ``skill``."""

@@ -123,4 +123,5 @@ class ArchVile:
         # move the fire between the vile and the player
         fire.x = wrap32(actor.target.x - fixed_mul(24 * FRACUNIT, FINECOSINE[an]))
         fire.y = wrap32(actor.target.y - fixed_mul(24 * FRACUNIT, FINESINE[an]))
+        self.touched.append(fire)           # moved outside P_SetThingPosition
         self.p_radius_attack(fire, actor, 70)

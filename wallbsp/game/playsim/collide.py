@@ -327,6 +327,7 @@ class Collide:
     def p_thing_height_clip(self, thing):
         """Re-fits a thing to its sector's heights; False if it doesn't fit."""
         onfloor = thing.z == thing.floorz
+        self.touched.append(thing)
         self.p_check_position(thing, thing.x, thing.y)
         thing.floorz = self.tmfloorz
         thing.ceilingz = self.tmceilingz

@@ -70,6 +70,7 @@ class Damage:
             return                          # shouldn't happen...
         if target.health <= 0:
             return
+        self.touched.append(target)
         if target.flags & info.MF_SKULLFLY:
             target.momx = target.momy = target.momz = 0
         player = target.player

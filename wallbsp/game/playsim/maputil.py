@@ -165,6 +165,7 @@ class MapUtil:
         """Links a thing into the subsector (and sector list) and block of its x, y."""
         ss = self.r_point_in_subsector(thing.x, thing.y)
         thing.subsector = ss
+        self.touched.append(thing)
         if not thing.flags & MF_NOSECTOR:
             sec = ss.sector
             thing.sprev = None

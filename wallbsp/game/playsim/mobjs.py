@@ -43,6 +43,7 @@ class Mobjs(MobjSpawn):
         """Enter ``state`` and every zero-tic state after it, calling each one's action;
         False when the mobj removed itself (reached S_NULL)."""
         rows = _state_rows()
+        self.touched.append(mobj)
         cycles = 0
         while True:
             if state == S_NULL:

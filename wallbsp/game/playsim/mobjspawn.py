@@ -92,6 +92,7 @@ class MobjSpawn:
         self.p_unset_thing_position(mobj)
         self.s_stop_sound(mobj)
         self.p_remove_thinker(mobj)
+        self.touched.append(mobj)
 
     def p_respawn_specials(self):
         if self.deathmatch != 2:

@@ -11,12 +11,23 @@ walk unlinks the thinker when it reaches it, as ``P_RunThinkers`` frees it; a th
 the list and does nothing.
 
 Per-level state: ``init_ticker()`` (the empty list; ``p_init_thinkers`` empties it again).
+
+What a tic may have changed, for a watcher (the renderer's state, ``game.playstate``):
+``touched`` collects every map object whose drawn state (position, angle, state, flags,
+size) may have changed and every other thinker that ran, from the few places such a change
+goes through: the walk (a thing that moved, a special that ran), ``P_SetMobjState`` (every
+action of a thing runs in it), ``P_SetThingPosition``, ``P_RemoveMobj``,
+``P_ThingHeightClip``, ``P_DamageMobj``; the players' things change in their own think and
+are not collected.  ``take_touched`` hands the list to one watcher, or None when it cannot
+vouch for it (a new level or a restored game since that watcher's last take, another
+watcher took it, or it grew past ``TOUCHED_LIMIT`` with nobody taking it).
 """
 from wallbsp.sim import info
 
 from .structs import Thinker
 
 MF_SKULLFLY, MF_COUNTKILL = info.MF_SKULLFLY, info.MF_COUNTKILL
+TOUCHED_LIMIT = 1 << 16                 # entries kept for a watcher that stopped taking them
 
 
 class Ticker:
@@ -28,6 +39,18 @@ class Ticker:
     def p_init_thinkers(self):
         cap = self.thinkercap
         cap.prev = cap.next = cap
+        self.touched, self.touched_reader = [], None
+
+    def touch(self, thing):
+        """``thing``'s drawn state may have changed (module docstring)."""
+        self.touched.append(thing)
+
+    def take_touched(self, reader: int):
+        """The touched list since ``reader``'s last take (a new, empty one goes on), or None
+        when it is incomplete for that reader (module docstring)."""
+        touched, complete = self.touched, self.touched_reader == reader
+        self.touched, self.touched_reader = [], reader
+        return touched if complete else None
 
     def p_add_thinker(self, thinker):
         """Appends ``thinker`` at the end of the list (it runs after every thinker there)."""
@@ -53,6 +76,7 @@ class Ticker:
     def p_run_thinkers(self):
         cap = self.thinkercap
         mobj_thinker = getattr(type(self), "p_mobj_thinker", None)
+        touched = self.touched
         current = cap.next
         while current is not cap:
             func = current.func
@@ -76,6 +100,7 @@ class Ticker:
                     func(self, current)         # the nightmare respawn's count
             elif func:
                 func(self, current)
+                touched.append(current)
             # read after the call: the thinker may have added others behind itself
             current = current.next
 
@@ -85,6 +110,8 @@ class Ticker:
         False when paused (nothing ran)."""
         if self.paused:
             return False
+        if len(self.touched) > TOUCHED_LIMIT:       # nobody takes it: start again
+            self.touched, self.touched_reader = [], None
         for i, player in enumerate(self.players):
             if self.playeringame[i]:
                 self.p_player_think(player)
