@@ -33,7 +33,22 @@ def direct_read(play) -> dict:
     return out
 
 
-def assert_state_is_the_plays(state, play, tic) -> None:
+def side_textures(play) -> list:
+    return [(sd.toptexture, sd.midtexture, sd.bottomtexture) for sd in play.sides]
+
+
+def assert_state_is_the_plays(state, play, tic, loaded=None) -> None:
+    """``loaded``: ``side_textures`` when ``state`` was made (the walls' textures then)."""
+    if loaded is not None:
+        now, switched = side_textures(play), {}
+        for wall, (_, front, back) in enumerate(state.walls):
+            for side, number in ((0, front), (1, back)):
+                if number >= 0:
+                    for part, was, name in zip(("upper", "middle", "lower"), loaded[number],
+                                               now[number]):
+                        if name != was:
+                            switched[wall, side, part] = None if name == "-" else name
+        assert state.wall_textures == switched, tic
     things = state.things
     sectors = play.sectors
     assert state.floor.tolist() == [s.floorheight / 65536 for s in sectors], tic
@@ -61,11 +76,12 @@ def test_each_tic_reads_what_it_touched_and_nothing_is_missed(freedoom_cache, wa
     for commands in recording.tics[:start + 1]:
         play.g_ticker(commands)
     state = PlayState(freedoom_cache.tree(wad, map_name(play)), play, play.gameskill + 1)
+    loaded = side_textures(play)
     for tic, commands in enumerate(recording.tics[start + 1:start + 1 + tics], start + 1):
         assert play.g_ticker(commands)
         state.sync()
         assert state.things.incremental, tic          # the fast path is what is checked
-        assert_state_is_the_plays(state, play, tic)
+        assert_state_is_the_plays(state, play, tic, loaded)
 
 
 @needs_freedoom

@@ -17,8 +17,9 @@ knowing it.
   (its left one where the line has no right side).  A switch's pressed texture and the
   offset of a scrolling wall (special 48) are ``wall_textures`` and ``wall_x_offset``;
   only the sides of lines that had a special when the level was loaded are watched (no
-  other line ever changes its texture).  ``leveltime`` is the Play's (the renderer runs
-  DOOM's animated flats and textures by it).
+  other line ever changes its texture), and after tics the play vouches for only when it
+  counted a switch turned or a button back (``sides_changed``).  ``leveltime`` is the
+  Play's (the renderer runs DOOM's animated flats and textures by it).
 - **Things**: ``PlayThings`` (``game.playthings``), read from the mobjs each tic.
 """
 from __future__ import annotations
@@ -90,6 +91,7 @@ class PlayState(WorldState):
         self._sectors = None             # the last sync's reads (_SECTOR) of every sector
         tags = {line.tag for line in play.lines if line.special in LIGHT_SWITCHES}
         self._switched = frozenset(s.id for s in play.sectors if s.tag in tags)
+        self._sides_changed = None       # the play's count of switched textures, last read
         self.sync(slots)
         self.things.version = 0
 
@@ -108,10 +110,13 @@ class PlayState(WorldState):
             self._sync_movers(play.sectors)
         else:
             self._sync_sectors(list(map(_SECTOR, play.sectors)))
-        textures = list(map(_TEXTURES, self._watched_sides))
-        if textures != self._textures_now:
-            self._textures_now = textures
-            self._read_textures()
+        switched = play.sides_changed
+        if not self._things.incremental or switched != self._sides_changed:
+            self._sides_changed = switched
+            textures = list(map(_TEXTURES, self._watched_sides))
+            if textures != self._textures_now:
+                self._textures_now = textures
+                self._read_textures()
         for wall, sd, first in self._scrolling:
             self.wall_x_offset[wall] = (sd.textureoffset - first) * FRAC
 

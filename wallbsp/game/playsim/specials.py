@@ -201,6 +201,7 @@ class Specials:
             side.midtexture = button.btexture
         elif button.where == BOTTOM:
             side.bottomtexture = button.btexture
+        self.sides_changed += 1
         # C passes &buttonlist[i].soundorg (the field's address): only the sound's origin
         self.s_start_sound(ButtonSoundOrigin(self, i), info.sfx_swtchn)
         button.clear()

@@ -99,6 +99,7 @@ class Switches:
         self.buttonlist = [button_t() for _ in range(MAXBUTTONS)]
         self.switchlist = None
         self.numswitches = 0
+        self.sides_changed = 0          # textures switched so far (read by game.playstate)
 
     def p_init_switch_list(self):
         """The switch textures of the game mode, in pairs (off, on): ``switchlist[i ^ 1]``
@@ -162,6 +163,7 @@ class Switches:
                 side.bottomtexture = switchlist[i ^ 1]
             else:
                 continue
+            self.sides_changed += 1
             self.s_start_sound(origin, sound)
             if useAgain:
                 self.p_start_button(line, where, name, BUTTONTIME)
