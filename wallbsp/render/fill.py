@@ -19,9 +19,11 @@ row.  Two-sided walls whose upper or lower part has no texture show the plane be
 
 The kernels take their inputs grouped (``surfaces``' NamedTuples, passed as plain tuples:
 numba takes a plain tuple in a fifth of the time, and a kernel names its fields again on
-entry) and read the arrays out of them once, at the top: the helpers they inline per run
-take arrays, because reading an array out of a tuple costs a reference count, which per
-run made the fill 12 % slower.
+entry) and read the arrays out of them once, at the top.  Reading an array out of a tuple
+costs a reference count, and so does handing an array to a helper they inline (numba
+counts the helper's parameter, and does not cancel the count when the helper branches):
+per run, that made the fill 12 % and over 50 % slower.  So the per-pixel loops are written
+in the kernel, over its own arrays, and the helpers it inlines per run take numbers.
 """
 from __future__ import annotations
 
@@ -88,66 +90,75 @@ def _int32(x):
 
 
 @step_kernel
-def _column_run(out, at, r0, r1, first, last, texture, t0, t1, level, atlas, lut):
-    """Rows ``[r0, r1)`` of a column run into ``out[at + row]``: ``texture`` is ``(column
-    address, padded column length, texture height)``; texture rows ``t0 + t1*row``,
-    reduced so that the part's unclipped first row reads ``[0, height)``; the part's
-    unclipped rows are ``first..last``."""
-    address, stride, height = texture
+def _column_steps(address, stride, height, t0, t1, first, last):
+    """A column run's texture rows ``t0 + t1*row`` (``address``: its texture column's,
+    ``stride``: the padded column length), reduced so that the part's unclipped first row
+    ``first`` reads ``[0, height)`` (its last is ``last``): ``(wraps, t_rel, t1, fixed,
+    step)``, rows ``t_rel + t1*row`` wrapped per pixel when ``wraps``, else the atlas index
+    ``(fixed + step*row) >> FIX``."""
     if height <= 1.0:
         t1 = 0.0                                       # a colour: one texel
     at_first = t0 + t1 * first
     t_rel = at_first - height * np.floor(at_first / height) - t1 * first
     end = t_rel + t1 * (last + 1.0)
     if end >= stride - 1 or stride >= FIX_LIMIT or t1 >= FIX_LIMIT:
-        wrap = int(height)
-        for r in range(r0, r1):
-            t = t_rel + t1 * r
-            out[at + r] = lut[int(atlas[int(t) % wrap + address]) + level]
-    else:
-        step = int(_rint(t1 * FIX_ONE))
-        fixed = (address << FIX) + int(np.floor(t_rel * FIX_ONE + 0.5))
-        for r in range(r0, r1):
-            out[at + r] = lut[int(atlas[(fixed + step * r) >> FIX]) + level]
+        return True, t_rel, t1, 0, 0
+    return (False, t_rel, t1, (address << FIX) + int(np.floor(t_rel * FIX_ONE + 0.5)),
+            int(_rint(t1 * FIX_ONE)))
 
 
 @step_kernel
-def _wall(out, at, r0, r1, part, key, w, first, last, ray, view, part_table, key_far,
-          key_far_light, key_wall, wall_x_offset, key_heights, atlas, lut, n_colours, light):
-    """A wall part's rows: ``part_table``'s row of the part (upper, middle or lower) of
-    side key ``key`` (``textures.TexturePack.parts``)."""
-    which_part = 0 if part == 1 else (1 if key_far[key] < 0 else 2)
-    t = part_table[which_part, key]
+def _wall_rows(view, ray, w, origin_x, origin_y, along_x, along_y, x_offset, width, top):
+    """A wall part's texture column (``floor(x_offset + |P - S|) mod width``, P the point
+    the ray meets at inverse depth ``w``, S the side's ``origin``) and its texture rows
+    ``t0 + t1*row`` (``top``: the pegged top plus the texture's y offset)."""
     depth = 1.0 / w
-    px = (view.x - t[5]) + depth * (view.fx + ray * view.rx)
-    py = (view.y - t[6]) + depth * (view.fy + ray * view.ry)
-    along = abs(px * t[7] + py * t[8])
-    x_offset = t[9]
-    if (key & 1) == 0:                                   # a front side may scroll
-        x_offset = x_offset + wall_x_offset[key_wall[key]]
-    column = np.floor(x_offset + along) % t[4]
-    top = key_heights[int(t[11]), key] + t[12]
+    px = (view.x - origin_x) + depth * (view.fx + ray * view.rx)
+    py = (view.y - origin_y) + depth * (view.fy + ray * view.ry)
+    along = abs(px * along_x + py * along_y)
+    column = np.floor(x_offset + along) % width
     step = depth / view.f
-    address = int(t[0] + column * t[1])
-    level = light_level(key_far_light[key], w) * n_colours if light else UNLIT * n_colours
-    _column_run(out, at, r0, r1, first, last, (address, t[2], t[3]),
-                top + t[10] - view.z - view.y0 * step, step, level, atlas, lut)
+    return column, top - view.z - view.y0 * step, step
 
 
 @step_kernel
-def _plane(out, at, r0, r1, h, base, far, ray, view, atlas, lut, n_colours, light):
-    """A floor's or ceiling's rows: one depth per row."""
-    fz = view.f * (h - view.z)
-    kx = fz * (view.fx + ray * view.rx)
-    ky = -(fz * (view.fy + ray * view.ry))
-    level = UNLIT * n_colours
-    for r in range(r0, r1):
-        inverse = 1.0 / (view.y0 - r)
-        tx = _int32(kx * inverse + view.flat_x) & FLAT_MASK
-        ty = _int32(ky * inverse + view.flat_y) & FLAT_MASK
-        if light:
-            level = plane_level(far, view.y0, r, fz) * n_colours
-        out[at + r] = lut[int(atlas[((tx << 6) | ty) + base]) + level]
+def _fits_int32(x):
+    """Whether ``_int32`` keeps ``x`` (False for NaN)."""
+    return -2147483649.0 < x < 2147483648.0
+
+
+@step_kernel
+def _plane_fits(view, r0, r1, kx, ky):
+    """Whether every row of a plane's run ``[r0, r1)`` has flat coordinates ``k/(y0 - row)
+    + flat offset`` that fit int32: on one side of the horizon they are monotonic in the
+    row (each rounding is), so the end rows' fitting is every row's."""
+    d0, d1 = view.y0 - r0, view.y0 - (r1 - 1)
+    if not ((d0 > 0.0 and d1 > 0.0) or (d0 < 0.0 and d1 < 0.0)):
+        return False
+    return (_fits_int32(kx * (1.0 / d0) + view.flat_x)
+            and _fits_int32(kx * (1.0 / d1) + view.flat_x)
+            and _fits_int32(ky * (1.0 / d0) + view.flat_y)
+            and _fits_int32(ky * (1.0 / d1) + view.flat_y))
+
+
+@step_kernel
+def _flat_texel(x, y):
+    """A flat's texel at offset flat coordinates ``(x, y)`` that fit int32."""
+    return ((int(x) & FLAT_MASK) << 6) | (int(y) & FLAT_MASK)
+
+
+@step_kernel
+def _flat_texel_int32(x, y):
+    """A flat's texel at offset flat coordinates ``(x, y)`` cast as numpy casts them."""
+    return ((_int32(x) & FLAT_MASK) << 6) | (_int32(y) & FLAT_MASK)
+
+
+@step_kernel
+def _index(i):
+    """A non-negative index as numba indexes fastest: unsigned, it skips the wrap of
+    negative indices (a pixel's and a lut entry's: rows lie in ``[0, height]``, texels and
+    levels are not negative)."""
+    return np.uint64(i)
 
 
 @step_kernel
@@ -187,6 +198,8 @@ def paint_textured(entries, view, u, parts, scene, surfaces, light, painter, out
     nothing = lut[int(atlas[surfaces.base[surfaces.black]]) + UNLIT * n_colours]
     if painter:
         fill_nothing(out, entries, nothing, painter, height)
+    # the pixel loops are here, not in helpers: see the module's docstring
+    flat_x, flat_y = view.flat_x, view.flat_y
     written = 0
     for i in range(len(keys)):
         key, c, w = keys[i], cols[i], ws[i]
@@ -198,25 +211,63 @@ def paint_textured(entries, view, u, parts, scene, surfaces, light, painter, out
                 continue
             written += r1 - r0
             kind = part_kind[part, key]
-            if kind == KIND_WALL:
-                _wall(out, at, r0, r1, part, key, w, first, last, ray, view, part_table,
-                      key_far, key_far_light, key_wall, wall_x_offset, key_heights, atlas, lut,
-                      n_colours, light)
-                continue
             sector = part_index[part, key]
             ceil = kind == KIND_CEILING
-            if ceil and sector_sky[sector]:        # the sky texture's column, or a colour
+            if kind == KIND_WALL:            # the part's row of textures.TexturePack.parts
+                p = 0 if part == 1 else (1 if key_far[key] < 0 else 2)
+                x_offset = part_table[p, key, 9]
+                if (key & 1) == 0:                       # a front side may scroll
+                    x_offset = x_offset + wall_x_offset[key_wall[key]]
+                top = key_heights[int(part_table[p, key, 11]), key] + part_table[p, key, 12]
+                column, t0, t1 = _wall_rows(
+                    view, ray, w, part_table[p, key, 5], part_table[p, key, 6],
+                    part_table[p, key, 7], part_table[p, key, 8], x_offset,
+                    part_table[p, key, 4], top + part_table[p, key, 10])
+                address = int(part_table[p, key, 0] + column * part_table[p, key, 1])
+                column_stride, column_height = part_table[p, key, 2], part_table[p, key, 3]
+                level = (light_level(key_far_light[key], w) * n_colours if light
+                         else UNLIT * n_colours)
+            elif ceil and sector_sky[sector]:    # the sky texture's column, or a colour
                 t = sky_colour[sector] if sky < 0 else sky
                 address = base[t] if sky < 0 else base[t] + sky_columns[c] * pitch[t]
-                _column_run(out, at, r0, r1, first, last,
-                            (address, float(stride[t]), float(tex_height[t])),
-                            0.0 if sky < 0 else view.sky_t0, 0.0 if sky < 0 else view.sky_t1,
-                            sky_level, atlas, lut)
+                column_stride, column_height = float(stride[t]), float(tex_height[t])
+                t0 = 0.0 if sky < 0 else view.sky_t0
+                t1 = 0.0 if sky < 0 else view.sky_t1
+                level = sky_level
+            else:                                # a floor or ceiling: one depth per row
+                fz = view.f * ((ceiling[sector] if ceil else floor[sector]) - view.z)
+                kx = fz * (view.fx + ray * view.rx)
+                ky = -(fz * (view.fy + ray * view.ry))
+                far = far_level(sector_light[sector])
+                flat = plane_base[sector, 1 if ceil else 0]
+                level = UNLIT * n_colours
+                if _plane_fits(view, r0, r1, kx, ky):
+                    for r in range(r0, r1):
+                        inverse = 1.0 / (view.y0 - r)
+                        texel = _flat_texel(kx * inverse + flat_x, ky * inverse + flat_y)
+                        if light:
+                            level = plane_level(far, view.y0, r, fz) * n_colours
+                        out[_index(at + r)] = lut[_index(int(atlas[texel + flat]) + level)]
+                else:
+                    for r in range(r0, r1):
+                        inverse = 1.0 / (view.y0 - r)
+                        texel = _flat_texel_int32(kx * inverse + flat_x, ky * inverse + flat_y)
+                        if light:
+                            level = plane_level(far, view.y0, r, fz) * n_colours
+                        out[_index(at + r)] = lut[_index(int(atlas[texel + flat]) + level)]
+                continue
+            # a column run: one texture column, one level
+            wraps, t_rel, t1, fixed, step = _column_steps(address, column_stride,
+                                                          column_height, t0, t1, first, last)
+            if wraps:
+                wrap = int(column_height)
+                for r in range(r0, r1):
+                    texel = int(t_rel + t1 * r) % wrap + address
+                    out[_index(at + r)] = lut[_index(int(atlas[texel]) + level)]
             else:
-                _plane(out, at, r0, r1, ceiling[sector] if ceil else floor[sector],
-                       plane_base[sector, 1 if ceil else 0],
-                       far_level(sector_light[sector]), ray, view, atlas, lut, n_colours,
-                       light)
+                for r in range(r0, r1):
+                    texel = (fixed + step * r) >> FIX
+                    out[_index(at + r)] = lut[_index(int(atlas[texel]) + level)]
     if not painter:
         fill_nothing(out, entries, nothing, painter, height)
     return written
