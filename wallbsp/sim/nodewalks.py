@@ -22,8 +22,11 @@ The arrays (made by ``game.playsim.bsptables``, all int64):
   ``line->validcount``, kept here instead: only equality with the current one is read).
 
 Fixed-point arithmetic as ``sim.fixed`` (FixedMul, FixedDiv with vanilla's overflow rule,
-C's 32-bit wrap-around), in int64.  These are the play simulation's only walks; the Python
-walks over the map objects they replaced are the tests' reference (``tests/nodewalkref.py``).
+C's 32-bit wrap-around), in int64: ``wrap32``, ``fixed_mul``, ``fixed_div`` and
+``intercept_frac`` (P_InterceptVector2, the same sum as p_maputl.c's P_InterceptVector) are
+step kernels, which ``sim.blockwalk`` compiles into its walk too.  These are the play
+simulation's only walks down the nodes; the Python walks over the map objects they replaced
+are the tests' reference (``tests/nodewalkref.py``).
 """
 from __future__ import annotations
 
@@ -33,7 +36,7 @@ NF_SUBSECTOR = 0x8000
 
 
 @step_kernel
-def _wrap32(v):
+def wrap32(v):
     return ((v + 0x80000000) & 0xFFFFFFFF) - 0x80000000
 
 
@@ -52,8 +55,8 @@ def _side(x, y, lx, ly, ldx, ldy):
         if y <= ly:
             return 1 if ldx < 0 else 0
         return 1 if ldx > 0 else 0
-    dx = _wrap32(x - lx)
-    dy = _wrap32(y - ly)
+    dx = wrap32(x - lx)
+    dy = wrap32(y - ly)
     left = (ldy >> 16) * (dx >> 16)
     right = (dy >> 16) * (ldx >> 16)
     if right < left:
@@ -64,31 +67,31 @@ def _side(x, y, lx, ly, ldx, ldy):
 
 
 @step_kernel
-def _fixed_mul(a, b):
-    return _wrap32((a * b) >> 16)
+def fixed_mul(a, b):
+    return wrap32((a * b) >> 16)
 
 
 @step_kernel
-def _fixed_div(a, b):
+def fixed_div(a, b):
     """FixedDiv: INT_MIN or INT_MAX when the quotient cannot fit (tested with C's abs)."""
-    if (_wrap32(abs(a)) >> 14) >= _wrap32(abs(b)):
+    if (wrap32(abs(a)) >> 14) >= wrap32(abs(b)):
         return -0x80000000 if (a ^ b) < 0 else 0x7FFFFFFF
     n = a << 16
     q = abs(n) // abs(b)                # C's division truncates toward zero
     if (n < 0) != (b < 0):
         q = -q
-    return _wrap32(q)
+    return wrap32(q)
 
 
 @step_kernel
-def _intercept_frac(sx, sy, sdx, sdy, x1, y1, ldx, ldy):
+def intercept_frac(sx, sy, sdx, sdy, x1, y1, ldx, ldy):
     """P_InterceptVector2(strace, the line's divline)."""
-    den = _wrap32(_fixed_mul(ldy >> 8, sdx) - _fixed_mul(ldx >> 8, sdy))
+    den = wrap32(fixed_mul(ldy >> 8, sdx) - fixed_mul(ldx >> 8, sdy))
     if den == 0:
         return 0
-    num = _wrap32(_fixed_mul(_wrap32(x1 - sx) >> 8, ldy)
-                  + _fixed_mul(_wrap32(sy - y1) >> 8, ldx))
-    return _fixed_div(num, den)
+    num = wrap32(fixed_mul(wrap32(x1 - sx) >> 8, ldy)
+                  + fixed_mul(wrap32(sy - y1) >> 8, ldx))
+    return fixed_div(num, den)
 
 
 @kernel
@@ -103,12 +106,12 @@ def point_in_subsector(nodes, x, y):
         elif ndy == 0:
             back = ndx < 0 if y <= ny else ndx > 0
         else:
-            dx = _wrap32(x - nx)
-            dy = _wrap32(y - ny)
+            dx = wrap32(x - nx)
+            dy = wrap32(y - ny)
             if (ndy ^ ndx ^ dx ^ dy) < 0:
                 back = (ndy ^ dx) < 0   # the products' signs differ
             else:
-                back = _fixed_mul(dy, ndx >> 16) >= _fixed_mul(ndy >> 16, dx)
+                back = fixed_mul(dy, ndx >> 16) >= fixed_mul(ndy >> 16, dx)
         nodenum = nodes[nodenum, 5 if back else 4]
     return nodenum & ~NF_SUBSECTOR
 
@@ -120,8 +123,8 @@ def cross_bsp(nodes, subsectors, segs, marks, stamp, sx, sy, tx, ty, out, far):
     ``(seg, frac)``, to ``out`` in DOOM's order and returns their count ``n``; ``-n - 1``
     when a blocking seg ended the walk after those.  ``marks`` are set to ``stamp`` for
     every line checked; ``far`` is scratch (as many entries as nodes)."""
-    sdx = _wrap32(tx - sx)
-    sdy = _wrap32(ty - sy)
+    sdx = wrap32(tx - sx)
+    sdy = wrap32(ty - sy)
     n = 0
     top = 0
     bspnum = nodes.shape[0] - 1
@@ -151,7 +154,7 @@ def cross_bsp(nodes, subsectors, segs, marks, stamp, sx, sy, tx, ty, out, far):
             if segs[i, 7]:
                 return -n - 1           # blocks whatever the heights
             out[n, 0] = i
-            out[n, 1] = _intercept_frac(sx, sy, sdx, sdy, x1, y1, ldx, ldy)
+            out[n, 1] = intercept_frac(sx, sy, sdx, sdy, x1, y1, ldx, ldy)
             n += 1
         if top == 0:
             return n

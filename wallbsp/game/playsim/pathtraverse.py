@@ -5,10 +5,18 @@ PIT_AddThingIntercepts) and calls a traverser on them nearest first
 intercepts, which wrote over the globals that followed the array.  Used by the slide
 move, hitscans, use lines and (DOOM 1.2) sight.
 
+Which lines a trace crosses depends on the map only, so that part of the walk runs compiled
+(``sim.blockwalk``); the lines come back in C's order and are added here as C adds them,
+things (still Python) after each block's lines.  The Python walk (``trace_blocks``, the
+blockmap iterators) stays as the tests' reference and for blockmaps the compiled walk
+cannot read.
+
 State (``init_path_traverse``, set once: C never resets these globals between levels):
 ``trace`` (the divline from the trace's start to its end), ``intercepts`` (the list
 P_PathTraverse fills), ``earlyout``.
 """
+from wallbsp.sim import blockwalk
+from wallbsp.sim.blockwalk import MAXSTEPS
 from wallbsp.sim.fixed import FRACBITS, FRACUNIT, c_abs, fixed_div, fixed_mul, wrap32
 from wallbsp.sim.info import MAPBLOCKSHIFT
 
@@ -19,6 +27,9 @@ PT_ADDLINES, PT_ADDTHINGS, PT_EARLYOUT = 1, 2, 4
 
 INT_MAX = 0x7FFFFFFF
 MAXINTERCEPTS_ORIGINAL = 128
+# Intercepts past the 129th overwrite globals (_OVERRUN); the 148th is the first to write
+# one the gathering reads: its isaline lands at (147 - 129) * 12 + 4 = 220, bmapwidth.
+SAFE_INTERCEPTS = 147
 
 _I32_MIN, _I32_MAX = -0x80000000, 0x7FFFFFFF
 
@@ -76,8 +87,26 @@ def _w(v):
     return v if _I32_MIN <= v <= _I32_MAX else wrap32(v)
 
 
+def _first_step(a1, a2, b1, b2):
+    """Along axis a, from a1 to a2 (blockmap-relative; b the other axis): the block step,
+    where the trace meets the first block edge across a (on axis b, in blocks, 16.16) and
+    its step from edge to edge."""
+    if (a2 >> MAPBLOCKSHIFT) > (a1 >> MAPBLOCKSHIFT):
+        partial = FRACUNIT - ((a1 >> MAPBTOFRAC) & (FRACUNIT - 1))
+        step, slope = 1, fixed_div(_w(b2 - b1), c_abs(a2 - a1))
+    elif (a2 >> MAPBLOCKSHIFT) < (a1 >> MAPBLOCKSHIFT):
+        partial = (a1 >> MAPBTOFRAC) & (FRACUNIT - 1)
+        step, slope = -1, fixed_div(_w(b2 - b1), c_abs(a2 - a1))
+    else:
+        step, partial, slope = 0, FRACUNIT, 256 * FRACUNIT
+    return step, _w((b1 >> MAPBTOFRAC) + fixed_mul(partial, slope)), slope
+
+
 class PathTraverse:
     """Mixin: p_maputl.c, the intercepts and the path traversal."""
+
+    # sim.blockwalk's tables (block_walk_tables); an instance's own replaces it on first use
+    blockwalk = (None, (None, None, None, None, None))
 
     def init_path_traverse(self):
         if hasattr(self, "trace"):
@@ -191,6 +220,16 @@ class PathTraverse:
     def p_path_traverse(self, x1, y1, x2, y2, flags, trav):
         """Traces from x1, y1 to x2, y2 through the blockmap, collecting the lines
         and/or things crossed, then calls trav on them nearest first."""
+        if not self.gather_intercepts(x1, y1, x2, y2, flags):
+            return False                # early out
+        return self.p_traverse_intercepts(trav, FRACUNIT)
+
+    def gather_intercepts(self, x1, y1, x2, y2, flags, compiled=True):
+        """P_PathTraverse's first half: sets the trace and fills ``intercepts`` with what
+        it crosses, block by block (a block's lines, then its things); False on an early
+        out.  The lines come from ``sim.blockwalk``'s compiled walk, unless ``compiled``
+        is false (the tests' reference) or the blockmap is one it cannot read: then from
+        the Python walk, ``trace_blocks`` and P_BlockLinesIterator."""
         self.earlyout = (flags & PT_EARLYOUT) != 0
         self.validcount += 1
         self.intercepts = []
@@ -203,56 +242,27 @@ class PathTraverse:
         trace.y = y1
         trace.dx = _w(x2 - x1)
         trace.dy = _w(y2 - y1)
+        tables = self.block_walk_tables() if compiled else None
+        if tables is None:
+            return self.gather_blocks(self.trace_blocks(x1, y1, x2, y2), flags)
+        return self._gather_compiled(tables, x1, y1, x2, y2, flags)
 
+    def trace_blocks(self, x1, y1, x2, y2):
+        """The blocks P_PathTraverse steps through from x1, y1 (already off the block
+        edges) to x2, y2, in order, as (x, y); at most 64, a guard against a round-off
+        error skipping the end (a block may then come twice)."""
         x1 = _w(x1 - self.bmaporgx)
         y1 = _w(y1 - self.bmaporgy)
-        xt1 = x1 >> MAPBLOCKSHIFT
-        yt1 = y1 >> MAPBLOCKSHIFT
         x2 = _w(x2 - self.bmaporgx)
         y2 = _w(y2 - self.bmaporgy)
         xt2 = x2 >> MAPBLOCKSHIFT
         yt2 = y2 >> MAPBLOCKSHIFT
-
-        if xt2 > xt1:
-            mapxstep = 1
-            partial = FRACUNIT - ((x1 >> MAPBTOFRAC) & (FRACUNIT - 1))
-            ystep = fixed_div(_w(y2 - y1), c_abs(x2 - x1))
-        elif xt2 < xt1:
-            mapxstep = -1
-            partial = (x1 >> MAPBTOFRAC) & (FRACUNIT - 1)
-            ystep = fixed_div(_w(y2 - y1), c_abs(x2 - x1))
-        else:
-            mapxstep = 0
-            partial = FRACUNIT
-            ystep = 256 * FRACUNIT
-        yintercept = _w((y1 >> MAPBTOFRAC) + fixed_mul(partial, ystep))
-
-        if yt2 > yt1:
-            mapystep = 1
-            partial = FRACUNIT - ((y1 >> MAPBTOFRAC) & (FRACUNIT - 1))
-            xstep = fixed_div(_w(x2 - x1), c_abs(y2 - y1))
-        elif yt2 < yt1:
-            mapystep = -1
-            partial = (y1 >> MAPBTOFRAC) & (FRACUNIT - 1)
-            xstep = fixed_div(_w(x2 - x1), c_abs(y2 - y1))
-        else:
-            mapystep = 0
-            partial = FRACUNIT
-            xstep = 256 * FRACUNIT
-        xintercept = _w((x1 >> MAPBTOFRAC) + fixed_mul(partial, xstep))
-
-        # Step through map blocks; the count guards against a round-off error skipping
-        # the break.
-        mapx, mapy = xt1, yt1
-        for _ in range(64):
-            if flags & PT_ADDLINES:
-                if not self.p_block_lines_iterator(mapx, mapy,
-                                                   self.pit_add_line_intercepts):
-                    return False        # early out
-            if flags & PT_ADDTHINGS:
-                if not self.p_block_things_iterator(mapx, mapy,
-                                                    self.pit_add_thing_intercepts):
-                    return False
+        mapxstep, yintercept, ystep = _first_step(x1, x2, y1, y2)
+        mapystep, xintercept, xstep = _first_step(y1, y2, x1, x2)
+        mapx, mapy = x1 >> MAPBLOCKSHIFT, y1 >> MAPBLOCKSHIFT
+        blocks = []
+        for _ in range(MAXSTEPS):
+            blocks.append((mapx, mapy))
             if mapx == xt2 and mapy == yt2:
                 break
             if (yintercept >> FRACBITS) == mapy:
@@ -261,5 +271,86 @@ class PathTraverse:
             elif (xintercept >> FRACBITS) == mapx:
                 xintercept = _w(xintercept + xstep)
                 mapy += mapystep
-        # go through the sorted list
-        return self.p_traverse_intercepts(trav, FRACUNIT)
+        return blocks
+
+    def gather_blocks(self, blocks, flags):
+        """Adds the lines (P_BlockLinesIterator with PIT_AddLineIntercepts) and/or the
+        things of each block in turn; False on an early out."""
+        for mapx, mapy in blocks:
+            if flags & PT_ADDLINES:
+                if not self.p_block_lines_iterator(mapx, mapy,
+                                                   self.pit_add_line_intercepts):
+                    return False        # early out
+            if flags & PT_ADDTHINGS:
+                if not self.p_block_things_iterator(mapx, mapy,
+                                                    self.pit_add_thing_intercepts):
+                    return False
+        return True
+
+    def _gather_compiled(self, tables, x1, y1, x2, y2, flags):
+        starts, blocklines, rows, marks, out, visited = tables
+        n, nblocks = blockwalk.gather_lines(
+            starts, blocklines, rows, marks, self.validcount, self.bmaporgx, self.bmaporgy,
+            self.bmapwidth, self.bmapheight, x1, y1, x2, y2, (flags & PT_ADDLINES) != 0,
+            out, visited)
+        found = out[:n].tolist()
+        stop = self._early_out(found) if self.earlyout else None
+        if stop is not None:
+            nblocks = found[stop][2] + 1        # C stops in this block, at this line
+            del found[stop:]
+        if flags & PT_ADDTHINGS or n > SAFE_INTERCEPTS:
+            return self._add_by_block(tables, found, visited[:nblocks].tolist(),
+                                      stop is not None, flags)
+        lines, add = self.lines, self._add_intercept
+        for num, frac, _ in found:
+            add(Intercept(frac, True, lines[num], None))
+        return stop is None
+
+    def _early_out(self, found):
+        """Where PIT_AddLineIntercepts stops an earlyout walk among the lines found: the
+        first one-sided line closer than the trace's end (None: nowhere)."""
+        lines = self.lines
+        for index, (num, frac, _) in enumerate(found):
+            if frac < FRACUNIT and not lines[num].backsector:
+                return index
+        return None
+
+    def _add_by_block(self, tables, found, blocks, stopped, flags):
+        """Adds the compiled walk's lines block by block, each block's things after them.
+        Should the overrun change the blockmap's size, C walks the blocks left with the
+        new size: so does the Python walk here."""
+        width, height = self.bmapwidth, self.bmapheight
+        lines, add = self.lines, self._add_intercept
+        j = 0
+        for k, (mapx, mapy) in enumerate(blocks):
+            if self.bmapwidth != width or self.bmapheight != height:
+                # the lines P_BlockLinesIterator marked in the blocks before
+                for num in blockwalk.lines_of_blocks(tables, blocks[:k], width, height):
+                    lines[num].validcount = self.validcount
+                return self.gather_blocks(blocks[k:], flags)
+            while j < len(found) and found[j][2] == k:
+                num, frac, _ = found[j]
+                add(Intercept(frac, True, lines[num], None))
+                j += 1
+            if stopped and k == len(blocks) - 1:
+                return False            # early out
+            if flags & PT_ADDTHINGS:
+                if not self.p_block_things_iterator(mapx, mapy,
+                                                    self.pit_add_thing_intercepts):
+                    return False
+        return True
+
+    def block_walk_tables(self):
+        """``sim.blockwalk.walk_tables`` for the map's lines and blockmap, made again when
+        the blockmap changes (the overrun can write its size); None if the compiled walk
+        cannot read it.  Keyed by the list of lines, as ``bsptables`` keys its tables."""
+        lines, (lump, offset, width, height, tables) = self.blockwalk
+        if (lines is self.lines and lump is self.blockmaplump and offset == self.blockmap
+                and width == self.bmapwidth and height == self.bmapheight):
+            return tables
+        rows = [(ld.v1.x, ld.v1.y, ld.v2.x, ld.v2.y, ld.dx, ld.dy) for ld in self.lines]
+        tables = blockwalk.walk_tables(self.blockmaplump, self.blockmap, self.bmapwidth,
+                                       self.bmapheight, rows)
+        self.blockwalk = (self.lines, (self.blockmaplump, self.blockmap, self.bmapwidth,
+                                       self.bmapheight, tables))
+        return tables
