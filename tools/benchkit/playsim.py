@@ -140,8 +140,8 @@ def drawn_rate(wad: Path, demo: str, size=(320, 200)) -> float:
 
 
 def _warm_up() -> float:
-    """35 tics of freedoom1's DEMO1 and a call of each compiled node walk (numba loads or
-    compiles them on their first call in a process); its seconds."""
+    """35 tics of freedoom1's DEMO1 and a call of each compiled node and block walk (numba
+    loads or compiles them on their first call in a process); its seconds."""
     from wallbsp.game.playsim.demos import load_demo
     from wallbsp.game.playsim.play import play_class
     from wallbsp.game.playsim.trace import trace_line
@@ -156,6 +156,8 @@ def _warm_up() -> float:
     nodes, subsectors, segs, marks, out, far, _ = play.sight_arrays()
     nodewalks.cross_bsp(nodes, subsectors, segs, marks.copy(), 1, 0, 0, 1, 1, out, far)
     nodewalks.point_in_subsector(play.node_array(), 0, 0)
+    mo = play.players[play.consoleplayer].mo      # and the path traversal's line gathering
+    play.p_path_traverse(mo.x, mo.y, mo.x + 256 * 65536, mo.y, 1, lambda _: True)
     return time.perf_counter() - started
 
 
