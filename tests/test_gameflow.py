@@ -79,6 +79,23 @@ def test_a_game_saved_from_the_menu_loads_back_exactly(walk, tmp_path):
     assert (walk.player.x, walk.player.y) == (again.player.x, again.player.y)
 
 
+def test_the_automaps_seen_walls_are_saved_with_the_game(walk, tmp_path):
+    """DOOM keeps a seen wall as its line's ML_MAPPED flag, which a save keeps."""
+    from wallbsp.app.gamescreen import compose
+    from wallbsp.app.hud import seen_lines
+    compose(walk)
+    run(walk, 30, forward=1, turn=3)
+    compose(walk)
+    seen = seen_lines(walk).walls.copy()
+    assert 0 < seen.sum() < len(seen)
+    keys(walk, "F2", "RETURN", "a", "RETURN")
+    run(walk, 60, turn=-8)
+    compose(walk)
+    assert (seen_lines(walk).walls & ~seen).any()           # more seen since the save
+    keys(walk, "F3", "RETURN")
+    assert seen_lines(walk).walls.tolist() == seen.tolist()
+
+
 def test_a_damaged_save_is_one_line_and_nothing_changes(walk, tmp_path, capsys):
     folder = tmp_path / "saves"
     folder.mkdir()

@@ -29,6 +29,7 @@ COLOURS = {"wall": (255, 0, 0), "teleporter": (155, 0, 0), "floor_change": (191,
 ML_SECRET, ML_DONTDRAW = 32, 128          # DOOM's line flags
 TELEPORT = 39                             # the special AM_drawWalls draws apart
 KINDS = ("wall", "teleporter", "floor_change", "ceiling_change", "two_sided", "unseen")
+ML_MAPPED = 0x100                         # DOOM's line flag: seen, on the automap
 SEEN_TICS = 8                             # a frame's seen walls are noted every this many tics
 THING_SIZE = 16.0                         # map units: AM_drawThings' 16<<FRACBITS
 ARROW_SIZE = 8 * 16 / 7                   # map units: R = 8 * PLAYERRADIUS / 7
@@ -63,9 +64,12 @@ class SeenLines:
     """The walls of a level the player has seen: every ``SEEN_TICS`` tics, the walls
     drawn in a frame (every other column of its ``kind`` and ``index``), and the two-sided
     walls between two sectors whose floor or ceiling was drawn (a step seen from above
-    shows no wall of its own, yet DOOM maps it as its seg is stored)."""
+    shows no wall of its own, yet DOOM maps it as its seg is stored).  ``lines``: the
+    play's line of each wall (``PlayState.walls``), where DOOM keeps them (``ML_MAPPED``
+    in its flags, which its saves keep): the walls start as those lines say and each wall
+    seen sets its line's flag."""
 
-    def __init__(self, level):
+    def __init__(self, level, lines=None):
         self.walls = np.zeros(len(level.walls), bool)
         self.sectors = np.zeros(len(level.sectors), bool)
         fronts = np.array([w.front for w in level.walls], np.int64)
@@ -73,7 +77,10 @@ class SeenLines:
         self._two = np.flatnonzero(backs >= 0)
         self._sides = (fronts[self._two], backs[self._two])
         self.tic = None
-        self.count = 0                  # how many walls are seen (a cache key)
+        self.lines = lines
+        if lines is not None:
+            self.walls[:] = [bool(line.flags & ML_MAPPED) for line in lines]
+        self.count = int(self.walls.sum())      # how many walls are seen (a cache key)
 
     def note(self, frame, tic) -> None:
         """The walls ``frame`` shows, when ``SEEN_TICS`` tics have passed since the last."""
@@ -85,7 +92,11 @@ class SeenLines:
         self.sectors[index[(kind == 2) | (kind == 3)]] = True
         front, back = self._sides
         self.walls[self._two[self.sectors[front] & self.sectors[back]]] = True
-        self.count = int(self.walls.sum())
+        count = int(self.walls.sum())
+        if count != self.count and self.lines is not None:
+            for wall in np.flatnonzero(self.walls).tolist():
+                self.lines[wall].flags |= ML_MAPPED
+        self.count = count
 
 
 def automap_layer(tree, kinds, view, size, like, overlay=False, partitions=None):

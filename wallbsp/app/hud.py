@@ -127,7 +127,10 @@ def seen_lines(walk) -> SeenLines:
     this one again after a death)."""
     state = walk.world.state
     if walk.seen is None or walk.seen[0] is not state:
-        walk.seen = (state, SeenLines(walk.tree.level))
+        lines = [line for line, _, _ in getattr(state, "walls", ())]
+        if len(lines) != len(walk.tree.level.walls):
+            lines = None                # not a play's state: the walls seen are the app's
+        walk.seen = (state, SeenLines(walk.tree.level, lines))
     return walk.seen[1]
 
 
