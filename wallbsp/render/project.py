@@ -14,7 +14,7 @@ from typing import NamedTuple
 import numpy as np
 
 from wallbsp.camera import Projection, column_angles
-from wallbsp.jit import kernel, step_kernel
+from wallbsp.jit import step_kernel
 
 __all__ = ["NEAR", "View", "view_of", "project_seg", "box_columns", "sky_columns",
            "FLAT_OFFSET"]
@@ -59,10 +59,12 @@ def view_of(view: Projection) -> View:
                 view.x + FLAT_OFFSET, FLAT_OFFSET - view.y)
 
 
-@kernel
-def project_seg(view, x1, y1, x2, y2, out):
-    """A seg seen with ``(x1, y1)`` on the left, into ``out``: columns ``[c1, c2)`` and
-    ``1/depth = A + B*u`` as ``(c1, c2, A, B)``; False when it covers no column."""
+@step_kernel
+def project_seg(view, x1, y1, x2, y2):
+    """A seg seen with ``(x1, y1)`` on the left: ``(covers, c1, c2, A, B)``, columns
+    ``[c1, c2)`` and ``1/depth = A + B*u``; ``covers`` False when it covers no column
+    (numbers only: the walk inlines it per seg, and an array handed to an inlined helper
+    is reference-counted at each call, ``fill``'s docstring)."""
     ax = x1 - view.x
     ay = y1 - view.y
     bx = x2 - view.x
@@ -70,12 +72,12 @@ def project_seg(view, x1, y1, x2, y2, out):
     d1 = ax * view.fx + ay * view.fy
     d2 = bx * view.fx + by * view.fy
     if d1 < NEAR and d2 < NEAR:
-        return False
+        return False, 0, 0, 0.0, 0.0
     r1 = ax * view.rx + ay * view.ry
     r2 = bx * view.rx + by * view.ry
     k = r2 * d1 - d2 * r1              # > 0 when seen from the front, left end first
     if k <= 0.0:
-        return False
+        return False, 0, 0, 0.0, 0.0
     f, x0 = view.f, view.x0
     if d1 < NEAR:
         c1 = math.ceil(x0 + f * (r1 + (NEAR - d1) / (d2 - d1) * (r2 - r1)) / NEAR)
@@ -88,24 +90,21 @@ def project_seg(view, x1, y1, x2, y2, out):
     c1 = c1 if c1 > 0 else 0
     c2 = c2 if c2 < view.width else view.width
     if c1 >= c2:
-        return False
-    out[0], out[1], out[2], out[3] = c1, c2, (r2 - r1) / k, (d1 - d2) / k
-    return True
+        return False, 0, 0, 0.0, 0.0
+    return True, c1, c2, (r2 - r1) / k, (d1 - d2) / k
 
 
 @step_kernel
-def box_columns(view, box, span):
-    """A column range ``[lo, hi)`` into ``span`` that holds every column any seg inside the
-    box can cover (DOOM's ``R_CheckBBox``); False when there is none.  The box's silhouette
-    is bounded by a left corner p and a right corner q, chosen by the eye's region (row
-    above/inside/below, column left/inside/right of the box)."""
+def box_columns(view, minx, miny, maxx, maxy):
+    """``(any, lo, hi)``: a column range ``[lo, hi)`` that holds every column any seg inside
+    the box can cover (DOOM's ``R_CheckBBox``); ``any`` False when there is none.  The
+    box's silhouette is bounded by a left corner p and a right corner q, chosen by the
+    eye's region (row above/inside/below, column left/inside/right of the box)."""
     ex, ey, width = view.x, view.y, view.width
-    minx, miny, maxx, maxy = box[0], box[1], box[2], box[3]
     col = 0 if ex < minx else (2 if ex > maxx else 1)
     row = 0 if ey > maxy else (2 if ey < miny else 1)
     if row == 1 and col == 1:
-        span[0], span[1] = 0, width
-        return True
+        return True, 0, width
     left = (3, 3, 2, 1, 0, 2, 1, 0, 0)[row * 3 + col]     # bit 1: max x, bit 0: max y
     right = (0, 1, 1, 0, 0, 3, 2, 2, 3)[row * 3 + col]
     px = (maxx if left & 2 else minx) - ex
@@ -115,16 +114,15 @@ def box_columns(view, box, span):
     dp = px * view.fx + py * view.fy
     dq = qx * view.fx + qy * view.fy
     if dp <= 0.0 and dq <= 0.0:
-        return False
+        return False, 0, 0
     lo = np.floor(view.x0 + view.f * (px * view.rx + py * view.ry) / dp) if dp > 1e-9 else 0.0
     hi = np.floor(view.x0 + view.f * (qx * view.rx + qy * view.ry) / dq) + 2 if dq > 1e-9 \
         else float(width)
     lo = lo if lo > 0 else 0.0
     hi = hi if hi < width else float(width)
     if lo >= hi:
-        return False
-    span[0], span[1] = int(lo), int(hi)
-    return True
+        return False, 0, 0
+    return True, int(lo), int(hi)
 
 
 def sky_columns(view: Projection, width) -> np.ndarray:

@@ -177,26 +177,6 @@ def visible_things(leaves, n_leaves, leaf, alive, drawn, x, y, radius, view, pie
     return considered, ids[:kept], out[:, :kept], masked
 
 
-@step_kernel
-def _last_nearer(col, lo, fraction, ds_col, ds_w, keys):
-    """``(has, last)``: whether column ``col`` has a drawseg (``lo``: its first, if it
-    has one), and the last of them nearer than depth ``d`` (``fraction``: ``d / (1 +
-    d)``; ``lo - 1`` when none is).  The column's drawsegs are searched by the key ``col +
-    1/(1 + w)`` (running max), which ``keys`` keeps once made (NaN before)."""
-    if lo == ds_col.shape[0] or ds_col[lo] != col:
-        return False, lo - 1
-    q = col + fraction
-    last, key = lo - 1, -np.inf
-    while last + 1 < ds_col.shape[0] and ds_col[last + 1] == col:
-        if np.isnan(keys[last + 1]):
-            keys[last + 1] = 1.0 / (1.0 + ds_w[last + 1])
-        key = max(key, col + keys[last + 1])
-        if not key < q:
-            break
-        last += 1
-    return True, last
-
-
 @kernel
 def _chosen_pictures(seen, things):
     """Each thing's picture ``slot * 2 + mirrored`` at the rotation it is seen from (as
@@ -261,6 +241,9 @@ def sprite_columns(seen, things, pictures, scene, lit, view, u, clip, wall_ints,
     floor, ceiling = scene.floor, scene.ceiling
     ds_col, ds_w, ds_open_top, ds_open_bottom = clip.col, clip.w, clip.open_top, clip.open_bottom
     ds_piece, piece_keys, key_near, key_far = clip.piece, clip.piece_keys, clip.key_near, clip.key_far
+    sector, thing_z, thing_height, flags = things.sector, things.z, things.height, things.flags
+    bright, paletted, sector_light = things.bright, pictures.paletted, scene.sector_light
+    n_ds = ds_col.shape[0]
     m = ids.shape[0]
     picture = _chosen_pictures(seen, things)
     first = np.empty(m, dtype=np.int64)
@@ -278,20 +261,19 @@ def sprite_columns(seen, things, pictures, scene, lit, view, u, clip, wall_ints,
     walls = wall_ints.shape[1]
     ints = np.empty((SLICE_INTS, total + walls), dtype=np.int64)
     floats = np.empty((SLICE_FLOATS, total + walls), dtype=np.float64)
-    keys = np.full(ds_col.shape[0], np.nan)
+    keys = np.full(n_ds, np.nan)
     n, drawn = 0, 0
     for s in range(m):
         if counts[s] == 0:
             continue
         i, d, p = ids[s], depth[s], picture[s] >> 1
         w, h, lft = pic_width[p], pic_height[p], pic_left[p]
-        own = things.sector[i]
+        own = sector[i]
         home = max(own, 0)
-        if np.isnan(things.z[i]):
-            feet = ceiling[home] - things.height[i] if things.flags[i] & SPAWNCEILING \
-                else floor[home]
+        if np.isnan(thing_z[i]):
+            feet = ceiling[home] - thing_height[i] if flags[i] & SPAWNCEILING else floor[home]
         else:
-            feet = things.z[i]
+            feet = thing_z[i]
         top_height = feet + pic_top[p]
         scale = view.f / d
         r1 = int(np.ceil(view.y0 - (top_height - view.z) * scale))
@@ -299,10 +281,10 @@ def sprite_columns(seen, things, pictures, scene, lit, view, u, clip, wall_ints,
         tstep = d / view.f
         t0 = top_height - view.z - view.y0 * tstep
         level = FULL_BRIGHT
-        if lit and not things.bright[i]:
-            level = light_level(far_level(scene.sector_light[home]), 1.0 / d)
-        if pictures.paletted[p]:                      # a player's colours (R_ProjectSprite)
-            level += LIGHT_LEVELS * ((things.flags[i] & TRANSLATION) >> TRANSLATION_SHIFT)
+        if lit and not bright[i]:
+            level = light_level(far_level(sector_light[home]), 1.0 / d)
+        if paletted[p]:                               # a player's colours (R_ProjectSprite)
+            level += LIGHT_LEVELS * ((flags[i] & TRANSLATION) >> TRANSLATION_SHIFT)
         if min(r2, view.height) <= max(r1, 0):        # above or below the frame
             continue
         before = n
@@ -310,16 +292,26 @@ def sprite_columns(seen, things, pictures, scene, lit, view, u, clip, wall_ints,
         fraction = d / (1.0 + d)
         mirrored = picture[s] & 1
         for col in range(first[s], first[s] + counts[s]):
-            while lo < ds_col.shape[0] and ds_col[lo] < col:
+            while lo < n_ds and ds_col[lo] < col:
                 lo += 1
             tx = int(np.floor(u[col] * d - (along[s] - lft)))
             tx = min(max(tx, 0), w - 1)
             if mirrored:
                 tx = w - 1 - tx
             # the window this column leaves open at depth d (module docstring): that of
-            # the last nearer piece, closed further by the floor and ceiling of the sector
-            # beyond it when that is not the thing's own
-            has, last = _last_nearer(col, lo, fraction, ds_col, ds_w, keys)
+            # the last nearer piece (the last of the column's drawsegs whose running max
+            # of the key col + 1/(1 + w), made once, is below col + d/(1 + d); written
+            # here, not in a helper taking the arrays: see fill's docstring), closed
+            # further by the floor and ceiling of the sector beyond it when that is not
+            # the thing's own
+            has, last, key = lo < n_ds and ds_col[lo] == col, lo - 1, -np.inf
+            while has and last + 1 < n_ds and ds_col[last + 1] == col:
+                if np.isnan(keys[last + 1]):
+                    keys[last + 1] = 1.0 / (1.0 + ds_w[last + 1])
+                key = max(key, col + keys[last + 1])
+                if not key < col + fraction:
+                    break
+                last += 1
             if not has:                                       # no piece: out of the map
                 win_top, win_bottom, beyond = 0, view.height, -1
             elif last >= lo:                                  # a nearer piece

@@ -72,15 +72,16 @@ def eye_tolerance(line_max, ex, ey) -> float:
 
 
 @step_kernel
-def _eye_side(lines, node, view, tol, known):
-    """The side of the eye of ``node``'s line by its sign; NaN when doubles cannot tell
-    and ``known`` (rows ``node, side``: the rationals' answers so far) does not say."""
-    s = lines[node, 0] * view.x + lines[node, 1] * view.y + lines[node, 2]
-    if not (s < -tol or s > tol):
-        s = np.nan
-        for k in range(known.shape[0]):
-            if known[k, 0] == node:
-                s = known[k, 1]
+def _eye_side(s, node, tol, known):
+    """The side of the eye of ``node``'s line by the sign of ``s = a*x + b*y + c`` at the
+    eye; NaN when doubles cannot tell and ``known`` (rows ``node, side``: the rationals'
+    answers so far) does not say."""
+    if s < -tol or s > tol:
+        return s
+    s = np.nan
+    for k in range(known.shape[0]):
+        if known[k, 0] == node:
+            s = known[k, 1]
     return s
 
 
@@ -133,37 +134,26 @@ def open_spans(starts, ends, count, c1, c2, spans):
 
 
 @step_kernel
-def _seen(view, e, i, back, out):
-    """Project seg ``i`` (ends ``e``) as seen from its front or ``back`` into ``out``."""
+def _seen(view, x1, y1, x2, y2, back):
+    """``project_seg`` of a seg with ends ``(x1, y1)``, ``(x2, y2)`` as seen from its front
+    or ``back``."""
     if back:
-        return project_seg(view, e[i, 2], e[i, 3], e[i, 0], e[i, 1], out)
-    return project_seg(view, e[i, 0], e[i, 1], e[i, 2], e[i, 3], out)
+        return project_seg(view, x2, y2, x1, y1)
+    return project_seg(view, x1, y1, x2, y2)
 
 
 @step_kernel
-def _add_piece(pieces, n, key, seen, c1, c2):
-    """Piece ``n`` into ``pieces``, doubled when full: ``(pieces, n + 1)``."""
-    if n == pieces.shape[0]:
-        grown = np.empty((2 * n, 5), dtype=np.float64)
-        for k in range(n):                 # a loop: a slice copy compiles a shape check
-            for j in range(5):
-                grown[k, j] = pieces[k, j]
-        pieces = grown
-    pieces[n, 0], pieces[n, 1], pieces[n, 2] = key, seen[2], seen[3]
-    pieces[n, 3], pieces[n, 4] = c1, c2
-    return pieces, n + 1
-
-
-@step_kernel
-def _append(values, n, x):
-    """``values[n] = x`` in a buffer doubled when full: ``(buffer, n + 1)``."""
-    if n == len(values):
-        grown = np.empty(2 * n, dtype=values.dtype)
-        for k in range(n):
-            grown[k] = values[k]
-        values = grown
-    values[n] = x
-    return values, n + 1
+def _doubled_pieces(pieces, more):
+    """``pieces`` in a buffer twice as long, or ``more`` rows longer if that is longer (a
+    loop: a slice copy compiles a shape check).  The walks call it only when the buffer is
+    full and write the pieces themselves: handing the array to a helper per piece would
+    cost a reference count each time (``fill``'s docstring)."""
+    n = pieces.shape[0]
+    grown = np.empty((max(2 * n, n + more), 5), dtype=np.float64)
+    for k in range(n):
+        for j in range(5):
+            grown[k, j] = pieces[k, j]
+    return grown
 
 
 @step_kernel
@@ -179,7 +169,9 @@ def _stack(n_nodes, root):
 def front_to_back(view, tol, root, tree, boxes, solid, known):
     """``(unsure node or -1, pieces (n, 5), leaves, nodes visited, segs drawn, early
     exit)``: the walk, or the first node whose side it needs in rationals (nothing else
-    is then meaningful)."""
+    is then meaningful).  The helpers it inlines per node and per seg take numbers, bar
+    the closed-column list's (``fill``'s docstring: arrays handed to them are
+    reference-counted at each call)."""
     view, tree = View(*view), WalkTables(*tree)
     lines, kids, seg_ranges, inside = tree.lines, tree.kids, tree.seg_ranges, tree.inside
     ends, flips, one_sided = tree.ends, tree.flips, tree.one_sided
@@ -192,26 +184,28 @@ def front_to_back(view, tol, root, tree, boxes, solid, known):
     stack, top = _stack(n_nodes, root)
     pieces = np.empty((64, 5), dtype=np.float64)
     n_pieces = 0
-    leaves = np.empty(64, dtype=np.int64)
+    leaves = np.empty(inside.shape[0], dtype=np.int64)   # each leaf is entered once
     n_leaves = 0
     spans = np.empty((width + 2, 2), dtype=np.int64)
-    seen = np.empty(4, dtype=np.float64)
-    span = np.empty(2, dtype=np.int64)
     visited = segs_drawn = 0
     early_exit = False
     while top > 0:
         top -= 1
         item = stack[top]
         if item >= n_nodes:
-            leaves, n_leaves = _append(leaves, n_leaves, item - n_nodes)
+            leaves[n_leaves] = item - n_nodes
+            n_leaves += 1
             continue
         if item >= 0:
-            if not box_columns(view, boxes[item], span):
+            in_view, lo, hi = box_columns(view, boxes[item, 0], boxes[item, 1],
+                                          boxes[item, 2], boxes[item, 3])
+            if not in_view:
                 continue
-            if stops[_bisect(starts, count, span[0], True) - 1] >= span[1]:
+            if stops[_bisect(starts, count, lo, True) - 1] >= hi:
                 continue                          # hidden behind one closed interval
             visited += 1
-            s = _eye_side(lines, item, view, tol, known)
+            s = _eye_side(lines[item, 0] * view.x + lines[item, 1] * view.y + lines[item, 2],
+                          item, tol, known)
             if np.isnan(s):
                 return item, pieces[:0], leaves[:0], visited, segs_drawn, early_exit
             k0, k1 = kids[item, 0], kids[item, 1]
@@ -232,7 +226,8 @@ def front_to_back(view, tol, root, tree, boxes, solid, known):
                 stack[top] = near
                 top += 1
             elif inside[~near]:
-                leaves, n_leaves = _append(leaves, n_leaves, ~near)   # it would be next
+                leaves[n_leaves] = ~near                         # it would be next
+                n_leaves += 1
             continue
         code = ~item
         eye_back = code & 1
@@ -241,18 +236,22 @@ def front_to_back(view, tol, root, tree, boxes, solid, known):
             back = eye_back ^ flips[i]
             if back and one_sided[i]:
                 continue
-            if not _seen(view, ends, i, back, seen):
+            covers, c1, c2, a, b = _seen(view, ends[i, 0], ends[i, 1], ends[i, 2], ends[i, 3],
+                                         back)
+            if not covers:
                 continue
-            c1, c2 = int(seen[0]), int(seen[1])
             key = (i << 1) | back
             n = open_spans(starts, stops, count, c1, c2, spans)
             if n:
                 segs_drawn += 1
                 if solid[key]:
                     count = close_span(starts, stops, count, c1, c2)
+                if n_pieces + n > pieces.shape[0]:
+                    pieces = _doubled_pieces(pieces, n)
                 for j in range(n):
-                    pieces, n_pieces = _add_piece(pieces, n_pieces, key, seen, spans[j, 0],
-                                                  spans[j, 1])
+                    pieces[n_pieces, 0], pieces[n_pieces, 1], pieces[n_pieces, 2] = key, a, b
+                    pieces[n_pieces, 3], pieces[n_pieces, 4] = spans[j, 0], spans[j, 1]
+                    n_pieces += 1
         if count == 1:
             early_exit = True
             break
@@ -269,8 +268,6 @@ def back_to_front(view, tol, root, tree, known):
     stack, top = _stack(n_nodes, root)
     pieces = np.empty((64, 5), dtype=np.float64)
     n_pieces = 0
-    seen = np.empty(4, dtype=np.float64)
-    span = np.empty(2, dtype=np.int64)
     visited = 0
     while top > 0:
         top -= 1
@@ -283,12 +280,19 @@ def back_to_front(view, tol, root, tree, known):
                 back = eye_back ^ flips[i]
                 if back and one_sided[i]:
                     continue
-                if _seen(view, ends, i, back, seen):
-                    pieces, n_pieces = _add_piece(pieces, n_pieces, (i << 1) | back, seen,
-                                                  int(seen[0]), int(seen[1]))
-        elif box_columns(view, boxes[item], span):
+                covers, c1, c2, a, b = _seen(view, ends[i, 0], ends[i, 1], ends[i, 2],
+                                             ends[i, 3], back)
+                if covers:
+                    if n_pieces == pieces.shape[0]:
+                        pieces = _doubled_pieces(pieces, 1)
+                    pieces[n_pieces, 0], pieces[n_pieces, 1] = (i << 1) | back, a
+                    pieces[n_pieces, 2], pieces[n_pieces, 3], pieces[n_pieces, 4] = b, c1, c2
+                    n_pieces += 1
+        elif box_columns(view, boxes[item, 0], boxes[item, 1], boxes[item, 2],
+                         boxes[item, 3])[0]:
             visited += 1
-            s = _eye_side(lines, item, view, tol, known)
+            s = _eye_side(lines[item, 0] * view.x + lines[item, 1] * view.y + lines[item, 2],
+                          item, tol, known)
             if np.isnan(s):
                 return item, pieces[:0], visited
             k0, k1 = kids[item, 0], kids[item, 1]
