@@ -87,7 +87,8 @@ def column_entries(pieces, view, u, key_heights):
         fz1 = view.f * (key_heights[1, key] - view.z)
         fz2 = view.f * (key_heights[2, key] - view.z)
         fz3 = view.f * (key_heights[3, key] - view.z)
-        for c in range(int(pieces[p, 3]), int(pieces[p, 4])):
+        for column in range(int(pieces[p, 3]), int(pieces[p, 4])):
+            c, at = np.uint64(column), np.uint64(i)    # unsigned: no negative-index wrap
             w = max(wa + wb * u[c], W_MIN)
             p1 = _boundary(view, fz0, w)
             fl = max(p1, _boundary(view, fz1, w))
@@ -95,12 +96,12 @@ def column_entries(pieces, view, u, key_heights):
             lo = min(max(_boundary(view, fz3, w), up), fl)
             top = open_top[c]
             bottom = max(open_bottom[c], top)
-            keys[i], piece_of[i], cols[i], ws[i] = key, p, c, w
-            bounds[0, i], bounds[1, i] = int(p1), int(up)
-            bounds[2, i], bounds[3, i] = int(lo), int(fl)
-            bounds[4, i], bounds[5, i] = top, bottom
-            bounds[6, i] = min(max(int(up), top), bottom)
-            bounds[7, i] = min(max(int(lo), top), bottom)
+            keys[at], piece_of[at], cols[at], ws[at] = key, p, column, w
+            bounds[0, at], bounds[1, at] = int(p1), int(up)
+            bounds[2, at], bounds[3, at] = int(lo), int(fl)
+            bounds[4, at], bounds[5, at] = top, bottom
+            bounds[6, at] = min(max(int(up), top), bottom)
+            bounds[7, at] = min(max(int(lo), top), bottom)
             open_top[c] = max(top, int(up))
             open_bottom[c] = min(open_bottom[c], int(lo))
             per_col[c + 1] += 1
@@ -114,7 +115,7 @@ def column_entries(pieces, view, u, key_heights):
     ds_windows = np.empty((4, n), dtype=np.int64)
     for i in range(n):
         c = cols[i]
-        k = per_col[c]
+        k = np.uint64(per_col[c])
         per_col[c] += 1
         ds_piece[k], ds_col[k], ds_w[k] = piece_of[i], c, ws[i]
         ds_windows[0, k], ds_windows[1, k] = bounds[4, i], bounds[5, i]

@@ -53,11 +53,13 @@ def paint_layers(entries, view, parts, scene, painter, kind_out, index_out, dept
                 a = 0.0
                 h = ceiling[index] if kind == KIND_CEILING else floor[index]
                 b = abs(view.f * (h - view.z))
+            column = np.uint64(c)        # unsigned: numba skips the negative-index wrap
             for r in range(r0, r1):
-                kind_out[c, r] = kind
-                index_out[c, r] = index
-                scale = b * inverse[r] if b > 0.0 else b
-                depth_out[c, r] = np.float32(a + scale)
+                row = np.uint64(r)
+                kind_out[column, row] = kind
+                index_out[column, row] = index
+                scale = b * inverse[row] if b > 0.0 else b
+                depth_out[column, row] = np.float32(a + scale)
     if not painter:
         _nothing(entries, painter, kind_out, index_out, depth_out)
 
@@ -69,13 +71,13 @@ def _nothing(entries, painter, kind_out, index_out, depth_out):
     if painter:
         for c in range(kind_out.shape[0]):
             for r in range(kind_out.shape[1]):
-                _put_nothing(kind_out, index_out, depth_out, c, r)
+                _put_nothing(kind_out, index_out, depth_out, np.uint64(c), np.uint64(r))
         return
     open_top, open_bottom = entries.open_top, entries.open_bottom
     for c in range(len(open_top)):
         top = open_top[c]
         for r in range(top, max(open_bottom[c], top)):
-            _put_nothing(kind_out, index_out, depth_out, c, r)
+            _put_nothing(kind_out, index_out, depth_out, np.uint64(c), np.uint64(r))
 
 
 @step_kernel
@@ -104,7 +106,7 @@ def observe_rows(entries, view, parts, scene, painter, overlay, packed, rgb, dep
         pixel, which, slice_kind, slice_index, slice_depth = overlay
         for k in range(len(pixel)):
             p, s = pixel[k], which[k]
-            c, r = p // height, p % height
+            c, r = np.uint64(p // height), np.uint64(p % height)
             kind[c, r], index[c, r] = slice_kind[s], slice_index[s]
             depth[c, r] = np.float32(slice_depth[s])
     if rgb.size:

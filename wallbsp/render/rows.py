@@ -28,11 +28,13 @@ def transpose_kernel(columns, rows):
 def rgb_rows_kernel(packed, rows):
     """Packed little-endian rgb pixels ``(W, H)`` into ``(H, W, 3)`` bytes."""
     for r in range(packed.shape[1]):
+        row = np.uint64(r)              # unsigned: numba skips the negative-index wrap
         for c in range(packed.shape[0]):
-            v = packed[c, r]
-            rows[r, c, 0] = v & 255
-            rows[r, c, 1] = (v >> 8) & 255
-            rows[r, c, 2] = (v >> 16) & 255
+            column = np.uint64(c)
+            v = packed[column, row]
+            rows[row, column, 0] = v & 255
+            rows[row, column, 1] = (v >> 8) & 255
+            rows[row, column, 2] = (v >> 16) & 255
 
 
 @kernel
