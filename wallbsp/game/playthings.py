@@ -221,9 +221,11 @@ class PlayThings(Things):
         if rows:
             a = np.array(rows, dtype=np.int64)
             ids = a[:, 0]
-            moved, placed = write_rows(a, self.x, self.y, self.z, self.angle, self.type,
-                                       self.bright, self.flags, self.drawn, self.radius,
-                                       self.height, self.alive, NOSECTOR, FRAC, ANGLE_DEGREES)
+            hidden = slot_of.get(self.hidden, -1) if self.hidden is not None else -1
+            moved, placed, shown = write_rows(
+                a, self.x, self.y, self.z, self.angle, self.type, self.bright, self.flags,
+                self.drawn, self.radius, self.height, self.alive, NOSECTOR, FRAC,
+                ANGLE_DEGREES, hidden)
             if moved.any():
                 m = ids[moved]
                 leaf = locate_leaves(self.tree, self.x[m], self.y[m])
@@ -233,11 +235,10 @@ class PlayThings(Things):
                 t = self.mobjs[i].type
                 self.mobjtype[i] = t
                 self.doomednum[i] = info.MOBJINFO[t].doomednum
-            hidden = slot_of.get(self.hidden) if self.hidden is not None else None
-            if hidden is not None:           # its row written as drawn again: not so
-                self.drawn[hidden] = False
-            if placed.any():
+            if shown.any():
                 self._changed(ids[placed])
+            elif placed.any():               # none drawn, before or now: no frame changes
+                self._unlisted(ids[placed])
             # a new frame, angle or height only: the renderer reads those arrays each frame
         if gone:
             ids = np.array([slot_of.pop(mo) for mo in gone if mo in slot_of], dtype=np.int64)

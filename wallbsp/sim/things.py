@@ -241,6 +241,12 @@ class Things:
         """Things ``i`` changed: caches out of date, but blockmaps only for their flags."""
         self.version += 1
         self._grouped = None
+        self._unlisted(i)
+
+    def _unlisted(self, i):
+        """Things ``i``, none of them drawn before or now, changed: only the blockmaps of
+        their flags are out of date (the drawn things' groups and boxes, and ``version``
+        that keys what a frame keeps, are not)."""
         if self._blockmaps:
             flags = self.flags[i]
             touched = int(np.bitwise_or.reduce(flags, axis=None)) if flags.size else 0
