@@ -17,7 +17,7 @@ import numpy as np
 
 from wallbsp.assets.animations import update_tic
 
-__all__ = ["Cycles", "members", "animated_tables"]
+__all__ = ["Cycles", "MemberSlots", "members", "animated_tables"]
 
 SIZE_FIELDS = 5                 # part_table's base, pitch, stride, height, width
 
@@ -110,6 +110,56 @@ class Animated:
                     self.sizes[ids[self.part_member]]
             self.last = step
         return self.part_table, self.plane_base
+
+
+class MemberSlots:
+    """The animated ones among some places' wall texture names, for pictures drawn from an
+    atlas (the masked pass's middles: DOOM's R_RenderMaskedSegRange reads
+    ``texturetranslation[midtexture]``): ``at(leveltime)`` is the places' slots with each
+    member's the slot of the picture it shows then, by the rule ``Cycles`` draws solid walls
+    by.  ``of`` gives None when no place shows a member whose every picture has a slot."""
+
+    def __init__(self, slots, places, start, offset, speed, length, pictures):
+        self.slots = slots.copy()                     # the places' slots as drawn now
+        self.own = slots[places]
+        self.places, self.start, self.offset = places, start, offset
+        self.speed, self.length, self.pictures = speed, length, pictures
+        self.speeds = tuple(sorted(set(speed.tolist())))
+        self.last = None
+
+    @classmethod
+    def of(cls, runs, slots, places, names, slot_of):
+        """``slots`` (per place, -1: none) with ``places`` named ``names``; ``slot_of(name)``
+        is a picture's slot (None: no picture)."""
+        member = {n.upper(): (run, k) for run in runs if run.kind == "wall"
+                  for k, n in enumerate(run.names)}
+        pictures, run_start, rows = [], {}, []
+        for place, name in zip(places, names):
+            found = None if name is None else member.get(name.upper())
+            if found is None:
+                continue
+            run, k = found
+            if run not in run_start:
+                run_slots = [slot_of(n) for n in run.names]
+                run_start[run] = None if None in run_slots else len(pictures)
+                if run_start[run] is not None:
+                    pictures.extend(run_slots)
+            if run_start[run] is not None:
+                rows.append((place, run_start[run], run.first + k, run.speed, len(run.names)))
+        if not rows:
+            return None
+        columns = [np.array(c, dtype=np.int64) for c in zip(*rows)]
+        return cls(slots, *columns, np.array(pictures, dtype=np.int64))
+
+    def at(self, leveltime: int) -> np.ndarray:
+        """The places' slots after ``leveltime`` tics (rewritten only when a picture turns)."""
+        tic = update_tic(leveltime)
+        step = None if tic is None else tuple(tic // s for s in self.speeds)
+        if step != self.last:
+            self.slots[self.places] = self.own if tic is None else self.pictures[
+                self.start + (tic // self.speed + self.offset) % self.length]
+            self.last = step
+        return self.slots
 
 
 _ANIMATED: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()

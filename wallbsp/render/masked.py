@@ -11,6 +11,8 @@ repeated vertically â€” with transparent texels showing what lies behind (SPEC Â
   ``[0, height)``; ``top`` is ``min(ceilings)``, or ``max(floors) + height`` when the wall
   is lower-unpegged;
 - light as the wall's own (its side's sector, DOOM's fake contrast, depth).
+- an animated texture shows the picture a solid wall of that name shows at the play's
+  leveltime (R_RenderMaskedSegRange reads ``texturetranslation``; ``animate.MemberSlots``).
 """
 from __future__ import annotations
 
@@ -19,7 +21,9 @@ from typing import NamedTuple
 
 import numpy as np
 
+from wallbsp.assets.animations import animations
 from wallbsp.jit import kernel
+from wallbsp.render.animate import MemberSlots
 from wallbsp.render.atlas import Pictures
 from wallbsp.render.entries import DrawSegs
 from wallbsp.render.project import View
@@ -43,14 +47,17 @@ class MaskedWalls(NamedTuple):
 
 class MaskedKeys:
     """Per side key: the atlas slot of its middle texture now (-1: none), where the
-    texture starts and runs, and its offsets and pegging (``textures.side_geometry``)."""
+    texture starts and runs, and its offsets and pegging (``textures.side_geometry``);
+    ``arrays_at(leveltime)`` with an animated middle's slot the picture it shows then."""
 
     def __init__(self, tables, state, atlas):
         level = state.tree.level
         self.texture_version = state.texture_version
         self.slot = np.full(len(tables.key_wall), -1, dtype=np.int64)
-        for key in _middle_keys(tables, state):
+        keys, names = _middle_keys(tables, state), []
+        for key in keys:
             name = state.wall_texture(int(tables.key_wall[key]), key & 1, "middle")
+            names.append(name)
             slot = None if name is None else atlas.wall_slot(name)
             if slot is not None:
                 self.slot[key] = slot
@@ -58,12 +65,24 @@ class MaskedKeys:
                 if partner is not None:
                     atlas.wall_slot(partner)
         self.any = bool((self.slot >= 0).any())
-        self.arrays = None
+        self.arrays, self.animated = None, None
         if self.any:
             start, direction, x_offset, y_offset, _ = side_geometry(tables, level)
             unpegged = np.array([w.lower_unpegged for w in level.walls],
                                 dtype=bool)[tables.key_wall]
             self.arrays = MaskedWalls(self.slot, start, direction, x_offset, y_offset, unpegged)
+            self.animated = MemberSlots.of(animations(atlas.resources), self.slot, keys,
+                                           names, atlas.wall_slot)
+            if self.animated is not None:         # its slots are rewritten in place
+                self.drawn = self.arrays._replace(slot=self.animated.slots)
+
+    def arrays_at(self, leveltime: int) -> MaskedWalls:
+        """``arrays`` as drawn after ``leveltime`` tics (the same arrays when no middle
+        is animated)."""
+        if self.animated is None:
+            return self.arrays
+        self.animated.at(leveltime)
+        return self.drawn
 
 
 def _middle_keys(tables, state) -> list:

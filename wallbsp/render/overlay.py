@@ -174,7 +174,8 @@ def draw_masked(view, u, state, tables, scene, walk, piece_keys, drawsegs, atlas
     dx, dy, depth, along = offsets
     wall_rows = _NO_WALLS
     if any_masked:
-        wall_rows = masked.masked_columns(tuple(drawsegs), piece_keys, tuple(keys.arrays),
+        wall_rows = masked.masked_columns(tuple(drawsegs), piece_keys,
+                                   tuple(keys.arrays_at(state.leveltime)),
                                    tuple(scene), tuple(atlas.arrays()), bool(light), tuple(view),
                                    u)
         stats["masked_columns"] = wall_rows[0].shape[1]
