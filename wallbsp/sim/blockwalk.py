@@ -87,9 +87,9 @@ def block_tables(lump, offset, width, height, nlines):
 
 
 @step_kernel
-def _point_on_divline_side(x, y, lx, ly, ldx, ldy):
-    """P_PointOnDivlineSide: 0 or 1 (the sign bits decide when the products' signs
-    differ)."""
+def _axis_side(x, y, lx, ly, ldx, ldy):
+    """The side (0 or 1) of a vertical or horizontal line, as P_PointOnDivlineSide and
+    P_PointOnLineSide both take it first; -1 for any other line."""
     if ldx == 0:
         if x <= lx:
             return 1 if ldy > 0 else 0
@@ -98,6 +98,16 @@ def _point_on_divline_side(x, y, lx, ly, ldx, ldy):
         if y <= ly:
             return 1 if ldx < 0 else 0
         return 1 if ldx > 0 else 0
+    return -1
+
+
+@step_kernel
+def _point_on_divline_side(x, y, lx, ly, ldx, ldy):
+    """P_PointOnDivlineSide: 0 or 1 (the sign bits decide when the products' signs
+    differ)."""
+    side = _axis_side(x, y, lx, ly, ldx, ldy)
+    if side >= 0:
+        return side
     dx = wrap32(x - lx)
     dy = wrap32(y - ly)
     if (ldy ^ ldx ^ dx ^ dy) < 0:
@@ -110,14 +120,9 @@ def _point_on_divline_side(x, y, lx, ly, ldx, ldy):
 @step_kernel
 def _point_on_line_side(x, y, v1x, v1y, ldx, ldy):
     """P_PointOnLineSide: 0 (front) or 1 (back)."""
-    if ldx == 0:
-        if x <= v1x:
-            return 1 if ldy > 0 else 0
-        return 1 if ldy < 0 else 0
-    if ldy == 0:
-        if y <= v1y:
-            return 1 if ldx < 0 else 0
-        return 1 if ldx > 0 else 0
+    side = _axis_side(x, y, v1x, v1y, ldx, ldy)
+    if side >= 0:
+        return side
     dx = wrap32(x - v1x)
     dy = wrap32(y - v1y)
     left = ((ldy >> 16) * dx) >> 16

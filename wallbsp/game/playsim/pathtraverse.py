@@ -334,10 +334,8 @@ class PathTraverse:
                 j += 1
             if stopped and k == len(blocks) - 1:
                 return False            # early out
-            if flags & PT_ADDTHINGS:
-                if not self.p_block_things_iterator(mapx, mapy,
-                                                    self.pit_add_thing_intercepts):
-                    return False
+            if not self.gather_blocks([(mapx, mapy)], flags & PT_ADDTHINGS):
+                return False
         return True
 
     def block_walk_tables(self):
