@@ -263,9 +263,12 @@ class Scenario:
         mo.angle = int(round(angle % 360.0 * (1 << 32) / 360.0)) & 0xFFFFFFFF
         if check:
             flags = mo.flags
-            mo.flags |= info.MF_SOLID if flags & info.MF_SHOOTABLE else 0
-            fits = play.p_check_position(mo, mo.x, mo.y)
-            mo.flags = flags
+            if flags & (info.MF_SOLID | info.MF_SHOOTABLE):
+                mo.flags |= info.MF_SOLID
+                fits = play.p_check_position(mo, mo.x, mo.y)
+                mo.flags = flags
+            else:                   # ZDoom: solid things do not block what is not solid
+                fits = play.p_check_lines(mo, mo.x, mo.y)
             if not fits or not _inside(world, mo):
                 play.p_remove_mobj(mo)
                 return None

@@ -242,7 +242,17 @@ class Collide:
         # things first, possibly picking things up
         if not self._things_blocks(self.pit_check_thing):
             return False
-        # then lines
+        return self._lines_fit()
+
+    def p_check_lines(self, thing, x, y):
+        """P_CheckPosition without its things: whether the thing fits at x, y among the
+        lines alone (sets what P_CheckPosition sets).  ZDoom lets a thing that is not solid
+        stand where solid things are (killough's rule in its PIT_CheckThing), so a
+        scenario's ``Spawn`` of an item or a missile is refused by walls only."""
+        self._set_tm(thing, x, y)
+        return True if self.tmflags & info.MF_NOCLIP else self._lines_fit()
+
+    def _lines_fit(self):
         box = self.tmbbox
         xl = (box[BOXLEFT] - self.bmaporgx) >> MAPBLOCKSHIFT
         xh = (box[BOXRIGHT] - self.bmaporgx) >> MAPBLOCKSHIFT
