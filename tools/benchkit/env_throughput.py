@@ -226,6 +226,51 @@ class NullEnv:
         return _Null()
 
 
+class PlainProcesses:
+    """``count`` plain environments in as many processes, each driven like a
+    ``RandomDriver`` (the same actions, so the same walk), stepped together round by
+    round: what the cores give, measured in the same rounds as the configurations it
+    bounds.  Steps/s of a round: every process's steps over the time until the last one
+    finished.  ``close()`` ends the processes."""
+
+    def __init__(self, options, count: int = 2):
+        import multiprocessing
+        context = multiprocessing.get_context("fork")
+        self.count, self.best_cpu, self.env = count, 0.0, self
+        self.conns, self.processes = [], []
+        for _ in range(count):
+            mine, theirs = context.Pipe()
+            process = context.Process(target=_plain_loop, args=(options, theirs), daemon=True)
+            process.start()
+            self.conns.append(mine)
+            self.processes.append(process)
+        for conn in self.conns:
+            conn.recv()                               # built and reset
+
+    def rate(self, calls: int) -> float:
+        started = time.perf_counter()
+        for conn in self.conns:
+            conn.send(calls)
+        for conn in self.conns:
+            conn.recv()
+        return self.count * calls / (time.perf_counter() - started)
+
+    def close(self) -> None:
+        for conn in self.conns:
+            conn.send(None)
+        for process in self.processes:
+            process.join(5)
+
+
+def _plain_loop(options, conn):
+    import gymnasium as gym
+    driver = RandomDriver(gym.make("wallbsp/Exit-v0", **options))
+    conn.send("ready")
+    while (calls := conn.recv()) is not None:
+        driver.rate(calls)
+        conn.send("done")
+
+
 def _lone_rate(options, steps, rounds, start, results):
     """A worker of ``plain_processes``: one environment's best rate, started together."""
     import gymnasium as gym

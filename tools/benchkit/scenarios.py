@@ -111,6 +111,15 @@ def vizdoom(python, name, steps, episodes, seed):
     return json.loads(out.stdout.strip().splitlines()[-1])
 
 
+def scenarios_path(python) -> str:
+    """ViZDoom's scenario folder, as its own Python finds it (four of our scenarios play
+    on ViZDoom's maps, converted from there)."""
+    out = subprocess.run([python, "-c", "import vizdoom; print(vizdoom.scenarios_path)"],
+                         capture_output=True, text=True, timeout=120,
+                         cwd=tempfile.gettempdir())
+    return out.stdout.strip() if out.returncode == 0 else ""
+
+
 def summary(run):
     if "error" in run:
         return run
@@ -133,6 +142,8 @@ def main(argv) -> int:
     if args.quick:
         args.episodes, args.steps = 10, 300
     have_vizdoom = os.path.exists(args.vizdoom)
+    if have_vizdoom and not os.environ.get("WALLBSP_VIZDOOM"):
+        os.environ["WALLBSP_VIZDOOM"] = scenarios_path(args.vizdoom)   # for our side's maps
     results = {"load_start": os.getloadavg()[0]}
     for name in args.only.split(","):
         row = {"wallbsp": summary(ours(name, args.steps, args.episodes, args.seed))}
