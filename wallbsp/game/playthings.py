@@ -23,9 +23,9 @@ import operator
 import numpy as np
 
 from wallbsp.sim import info
-from wallbsp.sim.things import Things, leaf_sectors, locate_leaves
+from wallbsp.sim.things import Things, leaf_sectors, locate_leaves, walk_arrays
 from wallbsp.sim.things import spawned_at
-from wallbsp.sim.thingrows import write_rows
+from wallbsp.sim.thingrows import ROW, write_rows
 from wallbsp.sim.thingtypes import COUNTKILL, NOSECTOR, ThingInfo, thing_info
 
 __all__ = ["PlayThings", "ThingsView", "picture_code", "FRAC", "ANGLE_DEGREES"]
@@ -61,6 +61,8 @@ class PlayThings(Things):
         self.incremental = False         # the last sync read only what a tic touched
         self.movers: list = []           # the last sync's other thinkers (doors, lights, ...)
         self.hidden = None               # a mobj no view draws (``hide``)
+        self._walk = (*walk_arrays(tree), int(tree.root))   # write_rows' tree
+        self._found = np.empty(64, dtype=np.int64)           # write_rows' things found
         self._grow(capacity)
 
     def _info(self, code: int):
@@ -128,10 +130,10 @@ class PlayThings(Things):
                 touched[p.mo] = None
         live, gone, movers, last = [], [], [], self._read_of
         for th in touched:
-            if getattr(th, "sector", None) is not None:
-                movers.append(th)                # a door, lift, light...: no mobj
-            elif th.func is mobj_func:
+            if th.func is mobj_func:             # first: a mobj has no ``sector`` to miss
                 live.append(th)
+            elif getattr(th, "sector", None) is not None:
+                movers.append(th)                # a door, lift, light...: no mobj
             elif th in last:                     # removed (a mobj never read: skipped)
                 gone.append(th)
         self.movers = movers
@@ -215,31 +217,10 @@ class PlayThings(Things):
             code = (st.sprite << 8) | (st.frame & 0xFF)
             if code not in pictures:
                 self._learn(st, mo)
-            rows.append((i, x, y, z, angle, code, st.frame & FF_FULLBRIGHT, flags, radius,
-                         height))
-        self._grow(len(mobjs))
+            rows += (i, x, y, z, angle, code, st.frame & FF_FULLBRIGHT, flags, radius, height)
         if rows:
-            a = np.array(rows, dtype=np.int64)
-            ids = a[:, 0]
-            hidden = slot_of.get(self.hidden, -1) if self.hidden is not None else -1
-            moved, placed, shown = write_rows(
-                a, self.x, self.y, self.z, self.angle, self.type, self.bright, self.flags,
-                self.drawn, self.radius, self.height, self.alive, NOSECTOR, FRAC,
-                ANGLE_DEGREES, hidden)
-            if moved.any():
-                m = ids[moved]
-                leaf = locate_leaves(self.tree, self.x[m], self.y[m])
-                self.leaf[m] = leaf
-                self.sector[m] = leaf_sectors(self.tree)[leaf]
-            for i in ids[self.mobjtype[ids] < 0].tolist():
-                t = self.mobjs[i].type
-                self.mobjtype[i] = t
-                self.doomednum[i] = info.MOBJINFO[t].doomednum
-            if shown.any():
-                self._changed(ids[placed])
-            elif placed.any():               # none drawn, before or now: no frame changes
-                self._unlisted(ids[placed])
-            # a new frame, angle or height only: the renderer reads those arrays each frame
+            self._grow(len(mobjs))
+            self._write(np.array(rows, dtype=np.int64))
         if gone:
             ids = np.array([slot_of.pop(mo) for mo in gone if mo in slot_of], dtype=np.int64)
             for i in ids.tolist():
@@ -247,6 +228,35 @@ class PlayThings(Things):
             self.alive[ids] = False
             self._changed(ids)
         return bool(rows or gone)
+
+    def _write(self, rows) -> None:
+        """``rows`` (``thingrows``) into the arrays, in one compiled call."""
+        hidden = self._slot.get(self.hidden, -1) if self.hidden is not None else -1
+        n = len(rows) // ROW
+        if len(self._found) < 2 * n:
+            self._found = np.empty(4 * n, dtype=np.int64)
+        n_moved, n_placed, shown, sure, untyped = write_rows(
+            rows, self.x, self.y, self.z, self.angle, self.type, self.bright, self.flags,
+            self.drawn, self.radius, self.height, self.alive, self.leaf, self.sector,
+            self.mobjtype, *self._walk, NOSECTOR, FRAC, ANGLE_DEGREES, hidden, self._found)
+        if not sure:                         # near a node's line: Python's exact test
+            moved = self._found[:n_moved].copy()
+            leaf = locate_leaves(self.tree, self.x[moved], self.y[moved])
+            self.leaf[moved] = leaf
+            self.sector[moved] = leaf_sectors(self.tree)[leaf]
+        if untyped:
+            ids = rows[::ROW]
+            for i in ids[self.mobjtype[ids] < 0].tolist():
+                t = self.mobjs[i].type
+                self.mobjtype[i] = t
+                self.doomednum[i] = info.MOBJINFO[t].doomednum
+        if n_placed:
+            placed = self._found[n:n + n_placed]       # read at once, not kept
+            if shown:
+                self._changed(placed)
+            else:                            # none drawn, before or now: no frame changes
+                self._unlisted(placed)
+        # a new frame, angle or height only: the renderer reads those arrays each frame
 
 
 class ThingsView:

@@ -12,9 +12,9 @@ from __future__ import annotations
 
 import numpy as np
 
-from wallbsp.jit import kernel
+from wallbsp.jit import kernel, step_kernel
 
-__all__ = ["extent", "descend", "grow_boxes"]
+__all__ = ["extent", "descend", "walk_down", "grow_boxes"]
 
 
 @kernel
@@ -39,19 +39,27 @@ def descend(a, b, c, front, back, x, y, tol, node, which):
     count = 0
     for j in range(which.shape[0]):
         k = which[j]
-        at, px, py = node[k], x[k], y[k]
-        while at >= 0:
-            s = a[at] * px + b[at] * py + c[at]
-            if s < -tol:
-                at = front[at]
-            elif s > tol:
-                at = back[at]
-            else:
-                unsure[count] = k
-                count += 1
-                break
+        at = walk_down(a, b, c, front, back, node[k], x[k], y[k], tol)
+        if at >= 0:
+            unsure[count] = k
+            count += 1
         node[k] = at
     return unsure[:count]
+
+
+@step_kernel
+def walk_down(a, b, c, front, back, at, px, py, tol):
+    """``descend``'s walk of one point from node ``at``: its leaf (a code < 0), or the node
+    whose line is too close to tell in doubles."""
+    while at >= 0:
+        s = a[at] * px + b[at] * py + c[at]
+        if s < -tol:
+            at = front[at]
+        elif s > tol:
+            at = back[at]
+        else:
+            break
+    return at
 
 
 @kernel

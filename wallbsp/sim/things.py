@@ -43,7 +43,7 @@ from wallbsp.sim.thingtypes import (DEATHMATCH_START, PLAYER_STARTS, SOLID, SPAW
     thing_info)
 
 __all__ = ["Things", "level_things", "spawned_at", "locate_leaves", "leaf_sectors",
-           "MULTIPLAYER_ONLY"]
+           "walk_arrays", "MULTIPLAYER_ONLY"]
 
 MULTIPLAYER_ONLY = 16              # THINGS flag bit 4
 _MARKERS = frozenset(PLAYER_STARTS) | {DEATHMATCH_START}
@@ -78,6 +78,9 @@ class _TreeLines:
         self.front, self.back = np.ascontiguousarray(child[:, 0]), np.ascontiguousarray(child[:, 1])
         self.exact = np.asarray(tree.node_line).reshape(-1, 3).tolist()   # ints for exact_side
         self.leaf_sector = np.asarray(tree.leaf_sector, dtype=np.int64)
+        # the largest |a|, |b|, |c| of the node lines, as ``BSPTree.side_tolerance`` takes
+        self.line_max = np.abs(np.asarray(tree.node_line).reshape(-1, 3)).max(
+            axis=0, initial=0).astype(np.float64)
         self._ancestors = None
 
     @property
@@ -113,6 +116,14 @@ def _tree_lines(tree) -> _TreeLines:
 def leaf_sectors(tree) -> np.ndarray:
     """The sector of each leaf of ``tree`` (int64, made once per tree)."""
     return _tree_lines(tree).leaf_sector
+
+
+def walk_arrays(tree) -> tuple:
+    """``(a, b, c, front, back, leaf_sector, line_max)``: what a compiled walk of ``tree``
+    from its root to a point's leaf reads (``locate_leaves``'s, ``leafwalk.walk_down``),
+    made once per tree."""
+    t = _tree_lines(tree)
+    return t.a, t.b, t.c, t.front, t.back, t.leaf_sector, t.line_max
 
 
 def locate_leaves(tree, x, y) -> np.ndarray:
