@@ -6,8 +6,10 @@ Buttons (``BUTTONS``): ``ATTACK``, ``USE``, ``SPEED``, ``MOVE_FORWARD``, ``MOVE_
 ``TURN_LEFT_RIGHT_DELTA`` (degrees a tic, positive to the right, at most ±180),
 ``MOVE_FORWARD_BACKWARD_DELTA`` and ``MOVE_LEFT_RIGHT_DELTA`` (fractions of walking speed,
 in [-1, 1], of running speed with ``SPEED``; positive forward and to the right).  A turn key
-held for fewer than 6 tics turns at half speed (DOOM's and ZDoom's ``SLOWTURNTICS``).  ``command(names, values, player)`` is the
-``TicCmd`` of one tic.
+held for fewer than 6 tics turns at half speed (DOOM's and ZDoom's ``SLOWTURNTICS``).
+``command(names, values, player)`` is the ``TicCmd`` of one tic; an environment reads its
+names once, ``Controls(names)``, and each step's action is a ``Press`` whose ``command``
+is each tic's.
 
 Game variables (``VARIABLES``), read from the play's ``player_t`` and its mobj, by
 ViZDoom's weapon slots (1 fist/chainsaw, 2 pistol, 3 shotguns, 4 chaingun, 5 rocket
@@ -19,18 +21,19 @@ weapon of the slot is held), ``SELECTED_WEAPON`` (its slot), ``SELECTED_WEAPON_A
 ``POSITION_X/Y/Z``, ``ANGLE`` (degrees), ``VELOCITY_X/Y/Z`` (map units a tic),
 ``ON_GROUND``, ``FRAGCOUNT`` (DOOM's status-bar frags).  The damage and hit counters come
 from a scenario's ``Events``; ``player=k`` reads player ``k`` of a net game.
+``Variables(names).read(world, events)`` reads them with each name looked up once.
 """
 from __future__ import annotations
 
 import numpy as np
 
 from wallbsp.game.playsim.structs import PST_DEAD
-from wallbsp.game.ticcmds import ticcmd
+from wallbsp.game.ticcmds import TicCmd, ticcmd
 from wallbsp.sim import info
 
 __all__ = ["BUTTONS", "BINARY_BUTTONS", "DELTA_BUTTONS", "VARIABLES", "SLOT_WEAPONS",
            "command", "game_variables", "check_buttons", "check_variables", "action_space",
-           "button_values"]
+           "button_values", "variables_array", "Controls", "Press", "Variables"]
 
 FRAC = 1.0 / 65536
 BINARY_BUTTONS = ("ATTACK", "USE", "SPEED", "MOVE_FORWARD", "MOVE_BACKWARD", "MOVE_LEFT",
@@ -102,53 +105,151 @@ def command(names, values, player, turnheld=SLOW_TURN_TICS):
     weapon look at what it holds); ``turnheld``: the tics a turn key has been held,
     this one included (``G_BuildTiccmd``'s: under ``SLOW_TURN_TICS`` the turn is half the
     keyboard's, as a tapped key turns in DOOM and ZDoom)."""
-    forward = strafe = turn = 0.0
-    fire = use = run = False
-    weapon = None
-    for name, v in zip(names, values):
-        v = float(v)
-        if name in DELTA_LIMITS:
-            limit = DELTA_LIMITS[name]
-            v = min(limit, max(-limit, v))
-            if name == "TURN_LEFT_RIGHT_DELTA":
-                turn -= v
-            elif name == "MOVE_FORWARD_BACKWARD_DELTA":
-                forward += v
-            else:
-                strafe += v
-            continue
-        if v <= 0.5:
-            continue
-        if name == "ATTACK":
-            fire = True
-        elif name == "USE":
-            use = True
-        elif name == "SPEED":
-            run = True
-        elif name == "MOVE_FORWARD":
-            forward += 1.0
-        elif name == "MOVE_BACKWARD":
-            forward -= 1.0
-        elif name == "MOVE_LEFT":
-            strafe -= 1.0
-        elif name == "MOVE_RIGHT":
-            strafe += 1.0
-        elif name == "TURN_LEFT":
-            turn += TURN_DEGREES
-        elif name == "TURN_RIGHT":
-            turn -= TURN_DEGREES
-        elif name.startswith("SELECT_WEAPON"):
-            weapon = int(name[-1])
+    return Controls(names).press(values).command(player, turnheld)
+
+
+class Controls:
+    """Buttons ``names`` read once for an environment: ``press(values)`` is a step's
+    ``Press``, and ``pressed(kind, action)`` the same for an action of ``action_space(names,
+    kind)``, remembered for the few actions a discrete or multibinary space has (an
+    environment's step looks no button name up)."""
+
+    MEMORY = 4096               # actions remembered at most (multibinary: 2 ** buttons)
+
+    def __init__(self, names):
+        self.names = tuple(names)
+        self._reads = tuple(_BUTTON_READS[name] for name in self.names)
+        self._deltas = any(name in DELTA_LIMITS for name in self.names)
+        self._known: dict = {}
+
+    def pressed(self, kind: str, action) -> "Press":
+        if kind == "box":
+            return self.press(button_values(self.names, kind, action))
+        if kind == "discrete":
+            key = int(action)
         else:
-            weapon = _next_slot(player, +1 if name == "SELECT_NEXT_WEAPON" else -1)
-    forward, strafe = max(-1.0, min(1.0, forward)), max(-1.0, min(1.0, strafe))
-    if turn and not any(n in DELTA_LIMITS for n in names):
-        if turnheld < SLOW_TURN_TICS:
-            turn *= 0.5                     # angleturn[2]: the slow turn of a tapped key
-        elif run:
-            turn *= 2.0                     # angleturn[1]: running
-    return ticcmd(forward=forward, strafe=strafe, turn=turn, use=use, run=run, fire=fire,
-                  weapon=weapon)
+            key = np.asarray(action, dtype=np.float32).reshape(len(self.names)).tobytes()
+        press = self._known.get(key)
+        if press is None:
+            press = self.press(button_values(self.names, kind, action))
+            if len(self._known) >= self.MEMORY:
+                self._known.clear()
+            self._known[key] = press
+        return press
+
+    def press(self, values) -> "Press":
+        """The buttons at ``values`` (one a name), as ``command`` reads them."""
+        made = Press(self._deltas)
+        for read, v in zip(self._reads, values):
+            read(made, float(v))
+        made.forward = max(-1.0, min(1.0, made.forward))
+        made.strafe = max(-1.0, min(1.0, made.strafe))
+        return made
+
+
+class Press:
+    """One step's buttons: the moves, turn and flags, and the weapon key (or the direction
+    of the next/previous weapon asked for, ``cycle``); ``command(player, turnheld)`` is a
+    tic's ``TicCmd``, its numbers made once for each slow/normal/running turn and key."""
+
+    def __init__(self, deltas):
+        self.deltas, self.turning = deltas, False
+        self.forward = self.strafe = self.turn = 0.0
+        self.fire = self.use = self.run = False
+        self.weapon, self.cycle = None, 0
+        self._fields: dict = {}
+
+    def command(self, player, turnheld) -> TicCmd:
+        scale = 1.0
+        if self.turn and not self.deltas:
+            if turnheld < SLOW_TURN_TICS:
+                scale = 0.5                 # angleturn[2]: the slow turn of a tapped key
+            elif self.run:
+                scale = 2.0                 # angleturn[1]: running
+        weapon = _next_slot(player, self.cycle) if self.cycle else self.weapon
+        fields = self._fields.get((scale, weapon))
+        if fields is None:
+            cmd = ticcmd(forward=self.forward, strafe=self.strafe, turn=self.turn * scale,
+                         use=self.use, run=self.run, fire=self.fire, weapon=weapon)
+            fields = self._fields[scale, weapon] = (cmd.forwardmove, cmd.sidemove,
+                                                    cmd.angleturn, cmd.buttons)
+        return TicCmd(*fields)
+
+
+def _delta(add):
+    def read(press, v, limit=DELTA_LIMITS[add]):
+        v = min(limit, max(-limit, v))
+        if add == "TURN_LEFT_RIGHT_DELTA":
+            press.turn -= v
+        elif add == "MOVE_FORWARD_BACKWARD_DELTA":
+            press.forward += v
+        else:
+            press.strafe += v
+    return read
+
+
+def _binary(act):
+    """The read of a binary button: ``act(press)`` when pressed (``v <= 0.5`` is not, as
+    ``command`` has it: a NaN is pressed)."""
+    def read(press, v):
+        if not v <= 0.5:
+            act(press)
+    return read
+
+
+def _weapon_key(key):
+    def act(press):
+        press.weapon, press.cycle = key, 0
+    return act
+
+
+def _cycle(step):
+    def act(press):
+        press.weapon, press.cycle = None, step
+    return act
+
+
+def _turn(degrees):
+    def act(press):
+        press.turn += degrees
+    return act
+
+
+def _turning_read(act):
+    """A turn key's read: it also says whether the key is held (``v > 0.5``: a NaN turns
+    but is not held, as ``ScenarioEnv`` counts ``turnheld``)."""
+    def read(press, v):
+        if v > 0.5:
+            press.turning = True
+        if not v <= 0.5:
+            act(press)
+    return read
+
+
+def _set(field, value):
+    def act(press):
+        setattr(press, field, value)
+    return act
+
+
+def _add(field, amount):
+    def act(press):
+        setattr(press, field, getattr(press, field) + amount)
+    return act
+
+
+_BUTTON_READS = {
+    "ATTACK": _binary(_set("fire", True)), "USE": _binary(_set("use", True)),
+    "SPEED": _binary(_set("run", True)),
+    "MOVE_FORWARD": _binary(_add("forward", 1.0)),
+    "MOVE_BACKWARD": _binary(_add("forward", -1.0)),
+    "MOVE_LEFT": _binary(_add("strafe", -1.0)), "MOVE_RIGHT": _binary(_add("strafe", 1.0)),
+    "TURN_LEFT": _turning_read(_turn(TURN_DEGREES)),
+    "TURN_RIGHT": _turning_read(_turn(-TURN_DEGREES)),
+    **{f"SELECT_WEAPON{k}": _binary(_weapon_key(k)) for k in range(1, 8)},
+    "SELECT_NEXT_WEAPON": _binary(_cycle(+1)), "SELECT_PREV_WEAPON": _binary(_cycle(-1)),
+    **{name: _delta(name) for name in DELTA_BUTTONS},
+}
 
 
 def _next_slot(p, step):
@@ -166,67 +267,93 @@ def _next_slot(p, step):
 def game_variables(world, names, events=None, player=0) -> dict:
     """``{name: value}`` of ViZDoom's ``names`` now (floats; ``events``: a scenario's
     ``Events`` for the damage and hit counters, 0 without) of player ``player``."""
-    p = world.play.players[player]
-    mo = p.mo
-    out = {}
-    for name in names:
-        if name == "FRAGCOUNT":        # others killed, less suicides (ST's frags)
-            out[name] = float(sum(p.frags) - 2 * p.frags[player])
-            continue
-        out[name] = float(_variable(name, p, mo, events))
-    return out
+    return dict(zip(names, Variables(names, player).read(world, events)))
 
 
-def _slot_ammo(p, slot):
+def variables_array(world, names, events=None, player=0) -> np.ndarray:
+    return np.array(Variables(names, player).read(world, events), dtype=np.float32)
+
+
+class Variables:
+    """ViZDoom's variables ``names`` of player ``player``, each name looked up once (an
+    environment's): ``read(world, events)`` is their values now, floats in order."""
+
+    def __init__(self, names, player=0):
+        self.names, self.player = tuple(names), player
+        self._getters = tuple(_getter(name) for name in self.names)
+
+    def read(self, world, events=None) -> list:
+        k = self.player
+        p = world.play.players[k]
+        mo = p.mo
+        return [float(get(p, mo, events, k)) for get in self._getters]
+
+
+def _getter(name):
+    """``get(p, mo, events, player)``: variable ``name`` of DOOM's ``player_t`` ``p``."""
+    get = _GETTERS.get(name)
+    if get is None:
+        raise ValueError(f"unknown game variable {name!r}")
+    return get
+
+
+def _slot_ammo(slot):
+    """The ammo number of the first weapon of ``slot`` that uses ammo, or None."""
     for wp in SLOT_WEAPONS.get(slot, ()):
         ammo = info.WEAPONINFO[wp].ammo
         if ammo != info.am_noammo:
-            return p.ammo[ammo]
-    return 0
+            return ammo
+    return None
 
 
-def _variable(name, p, mo, events):
-    if name == "HEALTH":
-        return p.health
-    if name == "ARMOR":
-        return p.armorpoints
-    if name.startswith("AMMO"):
-        return _slot_ammo(p, int(name[4:]))
-    if name.startswith("WEAPON"):
-        return int(any(p.weaponowned[w] for w in SLOT_WEAPONS.get(int(name[6:]), ())))
-    if name == "SELECTED_WEAPON":
-        return WEAPON_SLOT.get(p.readyweapon, 0)
-    if name == "SELECTED_WEAPON_AMMO":
-        ammo = info.WEAPONINFO[p.readyweapon].ammo
-        return 0 if ammo == info.am_noammo else p.ammo[ammo]
-    if name == "KILLCOUNT":
-        return p.killcount
-    if name == "ITEMCOUNT":
-        return p.itemcount
-    if name == "SECRETCOUNT":
-        return p.secretcount
-    if name in ("DAMAGECOUNT", "DAMAGE_TAKEN", "HITCOUNT", "HITS_TAKEN"):
-        if events is None:
-            return 0
-        return {"DAMAGECOUNT": events.damage_dealt, "DAMAGE_TAKEN": events.damage_taken,
-                "HITCOUNT": events.hits, "HITS_TAKEN": events.hits_taken}[name]
-    if name == "DEAD":
-        return int(p.playerstate == PST_DEAD or p.health <= 0)
-    if name in MOBJ_FIXED:
-        return getattr(mo, MOBJ_FIXED[name]) * FRAC
-    if name == "ANGLE":
-        return (mo.angle & 0xFFFFFFFF) * 360.0 / 4294967296.0
-    if name == "ON_GROUND":
-        return int(mo.z <= mo.floorz)
-    raise ValueError(f"unknown game variable {name!r}")
+def _ammo_getter(slot):
+    ammo = _slot_ammo(slot)
+    if ammo is None:
+        return lambda p, mo, events, k: 0
+    return lambda p, mo, events, k: p.ammo[ammo]
 
+
+def _weapon_getter(slot):
+    weapons = SLOT_WEAPONS.get(slot, ())
+    return lambda p, mo, events, k: int(any(p.weaponowned[w] for w in weapons))
+
+
+def _selected_ammo(p, mo, events, k):
+    ammo = info.WEAPONINFO[p.readyweapon].ammo
+    return 0 if ammo == info.am_noammo else p.ammo[ammo]
+
+
+def _counter_getter(field):
+    """One of the ``Events`` counters (0 without events)."""
+    return lambda p, mo, events, k: 0 if events is None else getattr(events, field)
+
+
+def _fixed_getter(field):
+    return lambda p, mo, events, k: getattr(mo, field) * FRAC
 
 
 # ViZDoom's position and velocity variables: the player's map object's fixed-point fields
 MOBJ_FIXED = {"POSITION_X": "x", "POSITION_Y": "y", "POSITION_Z": "z",
               "VELOCITY_X": "momx", "VELOCITY_Y": "momy", "VELOCITY_Z": "momz"}
 
-
-def variables_array(world, names, events=None, player=0) -> np.ndarray:
-    values = game_variables(world, names, events, player)
-    return np.array([values[n] for n in names], dtype=np.float32)
+_GETTERS = {
+    "HEALTH": lambda p, mo, events, k: p.health,
+    "ARMOR": lambda p, mo, events, k: p.armorpoints,
+    **{f"AMMO{slot}": _ammo_getter(slot) for slot in range(10)},
+    **{f"WEAPON{slot}": _weapon_getter(slot) for slot in range(10)},
+    "SELECTED_WEAPON": lambda p, mo, events, k: WEAPON_SLOT.get(p.readyweapon, 0),
+    "SELECTED_WEAPON_AMMO": _selected_ammo,
+    "KILLCOUNT": lambda p, mo, events, k: p.killcount,
+    "ITEMCOUNT": lambda p, mo, events, k: p.itemcount,
+    "SECRETCOUNT": lambda p, mo, events, k: p.secretcount,
+    "DAMAGECOUNT": _counter_getter("damage_dealt"),
+    "DAMAGE_TAKEN": _counter_getter("damage_taken"),
+    "HITCOUNT": _counter_getter("hits"),
+    "HITS_TAKEN": _counter_getter("hits_taken"),
+    "DEAD": lambda p, mo, events, k: int(p.playerstate == PST_DEAD or p.health <= 0),
+    **{name: _fixed_getter(field) for name, field in MOBJ_FIXED.items()},
+    "ANGLE": lambda p, mo, events, k: (mo.angle & 0xFFFFFFFF) * 360.0 / 4294967296.0,
+    "ON_GROUND": lambda p, mo, events, k: int(mo.z <= mo.floorz),
+    # others killed, less suicides (ST's frags)
+    "FRAGCOUNT": lambda p, mo, events, k: sum(p.frags) - 2 * p.frags[k],
+}

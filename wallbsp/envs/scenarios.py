@@ -113,6 +113,8 @@ class ScenarioEnv(WallbspEnv):
         self.observation_space = self._make_observation_space()
         self.tree = scenario_tree(sc.level)
         self._turnheld = 0
+        self._controls = gamevars.Controls(self.buttons)
+        self._variables = gamevars.Variables(self.variables)
 
     # -- spaces -------------------------------------------------------------------------------
     def _make_action_space(self):
@@ -124,9 +126,6 @@ class ScenarioEnv(WallbspEnv):
         if self.with_gamevars:
             made["gamevars"] = spaces.Box(-np.inf, np.inf, (len(self.variables),), np.float32)
         return spaces.Dict(made)
-
-    def _values(self, action) -> np.ndarray:
-        return gamevars.button_values(self.buttons, self.action_kind, action)
 
     # -- episodes -----------------------------------------------------------------------------
     def episode_tree(self):
@@ -144,21 +143,18 @@ class ScenarioEnv(WallbspEnv):
             self.world.tic()
             sc.after_tic(self.world)
         self._start_hud()
-        return self._observe(), self._info()
+        values = self._variables.read(self.world, sc.recorder)
+        return self._observe(values), self._info(values)
 
     def step(self, action):
         if self.world is None:
             raise RuntimeError("step() before reset()")
         world, sc = self.world, self.scenario
-        values = self._values(action)
+        press = self._controls.pressed(self.action_kind, action)
         reward, terminated = 0.0, False
-        turning = any(v > 0.5 for b, v in zip(self.buttons, values)
-                      if b in ("TURN_LEFT", "TURN_RIGHT"))
         for _ in range(self.frame_skip):
-            self._turnheld = self._turnheld + 1 if turning else 0
-            cmd = gamevars.command(self.buttons, values, world.play.players[0],
-                                   self._turnheld)
-            world.tic(cmd)
+            self._turnheld = self._turnheld + 1 if press.turning else 0
+            world.tic(press.command(world.play.players[0], self._turnheld))
             self._tic_hud()
             self._tics += 1
             reward += sc.living_reward + sc.after_tic(world)
@@ -171,19 +167,24 @@ class ScenarioEnv(WallbspEnv):
             if terminated or world.tic_count >= self.max_tics:
                 break
         truncated = not terminated and world.tic_count >= self.max_tics
-        return self._observe(), float(reward), terminated, truncated, self._info()
+        values = self._variables.read(world, sc.recorder)
+        return self._observe(values), float(reward), terminated, truncated, self._info(values)
 
-    def _observe(self) -> dict:
+    def _observe(self, values=None) -> dict:
+        """The observation; ``values``: the game variables now, when already read."""
         obs = super()._observe() if self._keys_wanted else {}
         obs = {k: obs[k] for k in self._keys_wanted}
         if self.with_gamevars:
-            obs["gamevars"] = gamevars.variables_array(self.world, self.variables,
-                                                       self.scenario.recorder)
+            if values is None:
+                values = self._variables.read(self.world, self.scenario.recorder)
+            obs["gamevars"] = np.array(values, dtype=np.float32)
         return obs
 
-    def _info(self) -> dict:
+    def _info(self, values=None) -> dict:
         world = self.world
+        if values is None:
+            values = self._variables.read(world, self.scenario.recorder)
         out = {"tics": world.tic_count, "exited": world.exited,
                "health": int(world.play.players[0].health)}
-        out.update(gamevars.game_variables(world, self.variables, self.scenario.recorder))
+        out.update(zip(self.variables, values))
         return out

@@ -243,6 +243,8 @@ class Scenario:
     @property
     def shots(self) -> int:
         """Rounds the player fired this tic."""
+        if not self.events:
+            return 0
         return sum(e.amount for e in self.events if e.kind == "shot")
 
     # -- the helpers ---------------------------------------------------------------------

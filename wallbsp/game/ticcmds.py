@@ -85,6 +85,13 @@ def as_ticcmd(cmd) -> TicCmd:
     buttons a byte."""
     if not isinstance(cmd, TicCmd):
         raise TypeError(f"World: a tic command must be a TicCmd, not {type(cmd).__name__}")
+    forwardmove, sidemove, angleturn, buttons = (cmd.forwardmove, cmd.sidemove,
+                                                 cmd.angleturn, cmd.buttons)
+    if (type(forwardmove) is int and type(sidemove) is int and type(angleturn) is int
+            and type(buttons) is int and -128 <= forwardmove <= 127
+            and -128 <= sidemove <= 127 and -32768 <= angleturn <= 32767
+            and 0 <= buttons <= 255):
+        return cmd                  # every command an environment makes: no more to see
     for name, low, high in (("forwardmove", -128, 127), ("sidemove", -128, 127),
                             ("angleturn", -32768, 32767), ("buttons", 0, 255)):
         value = getattr(cmd, name)
