@@ -38,12 +38,15 @@ only, so one step is one press however many tics ``frame_skip`` repeats it for.
 """
 from __future__ import annotations
 
+from functools import lru_cache
 from typing import NamedTuple
 
 import numpy as np
 
+from wallbsp.game.ticcmds import TicCmd, ticcmd
+
 __all__ = ["ACTION_SPACES", "BUTTONS", "DISCRETE_ACTIONS", "TURN_DEGREES", "Buttons",
-           "action_space", "buttons_of"]
+           "action_space", "buttons_of", "tic_command"]
 
 ACTION_SPACES = ("discrete", "multidiscrete", "box")
 TURN_DEGREES = 640 * 360 / 65536      # DOOM's angleturn[1]: 3.515625 degrees a tic
@@ -113,3 +116,15 @@ def buttons_of(kind: str, action) -> Buttons:
         return Buttons(_TRIT[forward], _SIDE[strafe], -_SIDE[turn], bool(use), bool(run))
     forward, strafe, turn, use, run = (float(v) for v in np.clip(a, -1.0, 1.0))
     return Buttons(forward, strafe, turn, use > 0.0, run > 0.0)
+
+
+def tic_command(buttons: Buttons, first: bool) -> TicCmd:
+    """The ``TicCmd`` of ``World.tic(**buttons.tic_inputs(first))``, its numbers worked out
+    once for the buttons a step repeats (a discrete space has 14)."""
+    return TicCmd(*_command_fields(buttons, first))
+
+
+@lru_cache(maxsize=4096)
+def _command_fields(buttons: Buttons, first: bool) -> tuple:
+    cmd = ticcmd(**buttons.tic_inputs(first))
+    return cmd.forwardmove, cmd.sidemove, cmd.angleturn, cmd.buttons

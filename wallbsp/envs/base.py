@@ -109,7 +109,7 @@ class WallbspEnv(gym.Env):
         buttons = actions.buttons_of(self.action_kind, action)
         reward, terminated = 0.0, False
         for i in range(self.frame_skip):
-            self.world.tic(**buttons.tic_inputs(first=i == 0))
+            self.world.tic(actions.tic_command(buttons, first=i == 0))
             self._tic_hud()
             self._tics += 1
             gained, done = self.tic_reward(self.world)
