@@ -90,12 +90,14 @@ class Projection:
         fov = float(camera.fov)
         if not 0.0 < fov < 180.0:
             raise ValueError(f"fov must be between 0 and 180 degrees, got {camera.fov}")
-        values = (camera.x, camera.y, camera.z, camera.angle)
-        if not all(math.isfinite(float(v)) for v in values):
-            raise ValueError(f"camera values must be finite numbers, got {camera}")
-        self.width, self.height = int(width), int(height)
         self.x, self.y, self.z = float(camera.x), float(camera.y), float(camera.z)
         self.angle = float(camera.angle)
+        # one test for the four (a sum is finite when they are, barring an overflow, which
+        # the test value by value settles): this runs every frame
+        if not (math.isfinite(self.x + self.y + self.z + self.angle)
+                or all(map(math.isfinite, (self.x, self.y, self.z, self.angle)))):
+            raise ValueError(f"camera values must be finite numbers, got {camera}")
+        self.width, self.height = int(width), int(height)
         a = math.radians(self.angle)
         self.fx, self.fy = math.cos(a), math.sin(a)
         self.rx, self.ry = math.sin(a), -math.cos(a)

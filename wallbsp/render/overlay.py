@@ -157,27 +157,27 @@ def _choices(atlas, things) -> _Choices:
     return table.fit(len(things))
 
 
-def draw_masked(view, u, state, tables, scene, walk, piece_keys, drawsegs, atlas,
+def draw_masked(view, u, state, tables, scene, walk, piece_keys, drawsegs, atlas, keys,
                 colour_columns, light=True):
     """Draw the things of the walk's leaves and the masked walls of its pieces into
     ``colour_columns``: ``(Overlay, stats)`` (``things_considered``: things of the visited
     leaves; ``things_drawn``: those with a column not wholly hidden; ``masked_columns``:
-    masked-wall columns drawn)."""
+    masked-wall columns drawn; ``keys``: the state's ``masked.MaskedKeys``)."""
     things = state.things
-    keys = masked_keys(tables, state, atlas)
+    view = tuple(view)
     considered, ids, offsets, any_masked = sprites.visible_things(
         walk.leaf_array, len(things.tree.leaf_sector), things.leaf, things.alive,
-        things.drawn, things.x, things.y, things.radius, tuple(view), piece_keys, keys.slot)
+        things.drawn, things.x, things.y, things.radius, view, piece_keys, keys.slot)
     stats = {"things_considered": int(considered), "things_drawn": 0, "masked_columns": 0}
     if not (len(ids) or any_masked):
         return _NOTHING, stats
     dx, dy, depth, along = offsets
     wall_rows = _NO_WALLS
+    scene = tuple(scene)
     if any_masked:
         wall_rows = masked.masked_columns(tuple(drawsegs), piece_keys,
                                    tuple(keys.arrays_at(state.leveltime)),
-                                   tuple(scene), tuple(atlas.arrays()), bool(light), tuple(view),
-                                   u)
+                                   scene, tuple(atlas.arrays()), bool(light), view, u)
         stats["masked_columns"] = wall_rows[0].shape[1]
     # sprites.Seen and sprites.Clip, as plain tuples (numba takes them quicker)
     seen = (ids, depth, along, np.degrees(np.arctan2(dy, dx)))
@@ -189,8 +189,8 @@ def draw_masked(view, u, state, tables, scene, walk, piece_keys, drawsegs, atlas
         arrays = (things.angle, things.type, things.sector, things.flags, things.height,
                   things.z, things.bright, table.kind, table.chosen)     # sprites.ThingArrays
         kind, index, slice_depth, pixel, which, drawn = composite.draw_things(
-            seen, arrays, tuple(atlas.arrays()), tuple(scene), bool(light), tuple(view), u,
-            clip, *wall_rows, colour_columns)
+            seen, arrays, tuple(atlas.arrays()), scene, bool(light), view, u, clip,
+            *wall_rows, colour_columns)     # the atlas after the choices: maybe grown
         if drawn >= 0:
             break
         table.choose(things, ids, seen[3], atlas)
@@ -210,7 +210,8 @@ def draw_overlay(view, u, state, tables, heights, scene, colour_columns, layers,
     over ``layers``)."""
     resources = level_resources(state.tree) if textures else None
     atlas = atlas_for(resources)
-    if not _drawn_things(state.things)[2] and not masked_keys(tables, state, atlas).any:
+    keys = masked_keys(tables, state, atlas)
+    if not _drawn_things(state.things)[2] and not keys.any:
         stats.update(things_considered=0, things_drawn=0, masked_columns=0)
         return layers
     if front is None:
@@ -219,6 +220,6 @@ def draw_overlay(view, u, state, tables, heights, scene, colour_columns, layers,
         front = (walk, piece_keys, drawsegs)
     walk, piece_keys, drawsegs = front
     overlay, counts = draw_masked(view, u, state, tables, scene, walk, piece_keys, drawsegs,
-                                  atlas, colour_columns, light)
+                                  atlas, keys, colour_columns, light)
     stats.update(counts)
     return OverlayLayers(layers, overlay) if len(overlay.pixel) else layers
