@@ -167,6 +167,10 @@ class Layers:
         out = {"rgb": _rows("rgb" in names, rows + (3,), np.uint8, given.get("rgb")),
                "depth": _rows("depth" in names, rows, np.float32, given.get("depth")),
                "labels": _rows("labels" in names, rows + (2,), np.int32, given.get("labels"))}
+        if not (out["depth"].size or out["labels"].size):   # the colour alone: no layers
+            if out["rgb"].size:
+                rgb_rows_kernel(packed.reshape(view.width, view.height), out["rgb"])
+            return {name: out[name] for name in names}
         drawn = _NO_OVERLAY if overlay is None or overlay.slices is None else (
             overlay.pixel, overlay.which, *overlay.slices)
         observe_rows(tuple(self.entries), tuple(view), tuple(self.parts), tuple(self.scene),

@@ -9,7 +9,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from wallbsp.jit import kernel
+from wallbsp.jit import kernel, step_kernel
 
 __all__ = ["rows_of", "rgb_rows", "labels_rows", "packed_pixels",
            "transpose_kernel", "rgb_rows_kernel", "label_rows_kernel"]
@@ -27,8 +27,43 @@ def transpose_kernel(columns, rows):
 @kernel
 def rgb_rows_kernel(packed, rows):
     """Packed little-endian rgb pixels ``(W, H)`` into ``(H, W, 3)`` bytes."""
+    if (packed.shape[0] % 4 == 0 and rows.flags.c_contiguous and rows.size
+            and rows.ctypes.data % 4 == 0):
+        _rgb_rows_in_words(packed, rows)
+    else:
+        _rgb_rows_in_bytes(packed, rows)
+
+
+_BAND = 16      # rows a pass: a column's run in it is one cache line of the packed pixels
+
+
+@step_kernel
+def _rgb_rows_in_words(packed, rows):
+    """Four pixels' 12 bytes as three uint32 stores (a row starts on a word when the
+    width is a multiple of 4), in bands of rows so each column's loads stay in a line:
+    0.7x the time of a byte a store, row by row."""
+    width, height = packed.shape
+    words = rows.reshape(-1).view(np.uint32)
+    row_words = np.uint64(width * 3 // 4)
+    for top in range(0, height, _BAND):
+        for group in range(width // 4):
+            c = np.uint64(4 * group)    # unsigned: numba skips the negative-index wrap
+            for r in range(top, min(top + _BAND, height)):
+                row = np.uint64(r)
+                p0 = packed[c, row] & 0xFFFFFF
+                p1 = packed[c + np.uint64(1), row] & 0xFFFFFF
+                p2 = packed[c + np.uint64(2), row] & 0xFFFFFF
+                p3 = packed[c + np.uint64(3), row] & 0xFFFFFF
+                w = row * row_words + np.uint64(3 * group)
+                words[w] = p0 | (p1 << 24)
+                words[w + np.uint64(1)] = (p1 >> 8) | (p2 << 16)
+                words[w + np.uint64(2)] = (p2 >> 16) | (p3 << 8)
+
+
+@step_kernel
+def _rgb_rows_in_bytes(packed, rows):
     for r in range(packed.shape[1]):
-        row = np.uint64(r)              # unsigned: numba skips the negative-index wrap
+        row = np.uint64(r)
         for c in range(packed.shape[0]):
             column = np.uint64(c)
             v = packed[column, row]
