@@ -19,7 +19,7 @@ from multiprocessing import shared_memory
 import numpy as np
 from gymnasium import spaces
 
-__all__ = ["leaves", "leaf_array", "assemble", "values_at", "Layout", "SharedBlock",
+__all__ = ["leaves", "leaf_array", "assemble", "assembler", "values_at", "Layout", "SharedBlock",
            "InfoSchema", "add_info", "OVERFLOW_BYTES", "MAX_INFO_KEYS"]
 
 OVERFLOW_BYTES = 8192          # a pickled info that does not fit the schema, per env
@@ -50,6 +50,18 @@ def leaf_array(space) -> tuple[tuple, np.dtype]:
 def assemble(space, arrays: list):
     """The value of ``space`` made of its leaves' ``arrays`` (in ``leaves`` order)."""
     return _build(space, iter(arrays))
+
+
+def assembler(space):
+    """A function that does ``assemble(space, arrays)``: for a flat ``Dict`` (or a lone
+    leaf) one ``dict(zip(...))`` of keys worked out once, not a walk down the space."""
+    if isinstance(space, spaces.Dict) and all(isinstance(sub, _LEAF)
+                                              for sub in space.spaces.values()):
+        keys = tuple(space.spaces)
+        return lambda arrays: dict(zip(keys, arrays))
+    if isinstance(space, _LEAF):
+        return lambda arrays: arrays[0]
+    return lambda arrays: _build(space, iter(arrays))
 
 
 def _build(space, it):
@@ -183,6 +195,9 @@ class InfoSchema:
     def decode(self, present, values, rows, size: int, positions=slice(None)) -> dict:
         """gymnasium's info dict (arrays of ``size`` and their ``_key`` masks) of the
         ``rows`` of ``present``/``values``, placed at ``positions``."""
+        if (type(rows) is slice and rows == slice(None) and type(positions) is slice
+                and positions == slice(None) and present.shape[0] == size):
+            return self.decode_all(present, values)
         infos = {}
         got = present[rows]
         if not got.any():
@@ -201,6 +216,29 @@ class InfoSchema:
             full = np.zeros(size, dtype=np.bool_)
             full[positions] = mask
             infos[key], infos["_" + key] = column, full
+        return infos
+
+    def decode_all(self, present, values) -> dict:
+        """``decode`` of every row in order: a column is its values converted (a fresh
+        array, as ``decode``'s) and its mask a copy, one ``any`` call for all columns."""
+        infos = {}
+        count = len(self.columns)
+        if not count:
+            return infos
+        used = present[:, :count].any(axis=0).tolist()
+        if not any(used):
+            return infos
+        size = present.shape[0]
+        for i, (key, kind, typ) in enumerate(self.columns):
+            if not used[i]:
+                continue
+            if kind == "n":
+                column = np.full(size, None, dtype=object)
+            elif kind == "f":
+                column = values[:, i].view(np.float64).astype(typ)
+            else:
+                column = values[:, i].astype(typ)
+            infos[key], infos["_" + key] = column, present[:, i].copy()
         return infos
 
 

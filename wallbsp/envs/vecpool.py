@@ -50,6 +50,8 @@ class ProcessPool:
         self.memory, self.arrays, self.unlinked, self.closed = None, None, False, False
         self.head = 0
         self.steps = np.arange(num_envs, dtype=np.int64)
+        self.group_arrays = [np.array(g, dtype=np.int64) for g in self.groups]
+        self.tails = [0] * workers
 
     # -- starting ---------------------------------------------------------------------
     def start(self):
@@ -106,15 +108,30 @@ class ProcessPool:
 
     def send_steps(self, ids=None) -> None:
         arrays = self.arrays
-        pending, tails, n = arrays["pending"], arrays["pending_tail"], self.num_envs
-        for w, group in enumerate(self.groups):
-            mine = group if ids is None else ids[self.owner[ids] == w]
-            k = len(mine)
-            if k:
-                tail = int(tails[w])
-                pending[w, (tail + self.steps[:k]) % n] = mine
-                tails[w] = tail + k
-                self.wakes[w].release()
+        pending, n = arrays["pending"], self.num_envs
+        tails = arrays["pending_tail"]
+        if ids is None:
+            for w, mine in enumerate(self.group_arrays):
+                self._append(pending[w], tails, w, mine, n)
+            return
+        owner = self.owner[ids]
+        for w in range(len(self.groups)):
+            mine = ids[owner == w]
+            if len(mine):
+                self._append(pending[w], tails, w, mine, n)
+
+    def _append(self, ring, tails, w: int, mine, n: int) -> None:
+        """Queue ``mine`` on worker ``w``'s ``ring`` (by slices: it wraps at most once,
+        as it never holds more than ``n``) and wake it."""
+        k = len(mine)
+        tail = self.tails[w]            # only the caller writes the tails: no read back
+        start = tail % n
+        first = min(k, n - start)
+        ring[start:start + first] = mine[:first]
+        if first < k:
+            ring[:k - first] = mine[first:]
+        tails[w] = self.tails[w] = tail + k
+        self.wakes[w].release()
 
     def send_resets(self, seeds: dict, options) -> None:
         for w, group in enumerate(self.groups):
@@ -147,8 +164,12 @@ class ProcessPool:
                 self.check()
         if counters[FAILED]:
             self.fail()
-        done = self.arrays["done"]
-        ids = done[(head + self.steps[:count]) % self.num_envs]
+        done, n = self.arrays["done"], self.num_envs
+        start = head % n
+        if start + count <= n:
+            ids = done[start:start + count].copy()
+        else:
+            ids = done[(head + self.steps[:count]) % n]
         self.head = head + count
         return ids
 

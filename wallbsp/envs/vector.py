@@ -34,7 +34,7 @@ from gymnasium.vector import AutoresetMode, VectorEnv
 from gymnasium.vector.utils import batch_space
 
 from wallbsp.envs.vecbuffers import (MAX_INFO_KEYS, OVERFLOW_BYTES, InfoSchema, Layout,
-    add_info, assemble, leaf_array, leaves, read_overflow, values_at)
+    add_info, assemble, assembler, leaf_array, leaves, read_overflow, values_at)
 from wallbsp.envs.vecpool import ProcessPool
 from wallbsp.envs.workers import BANK, LocalPool, WorkerError
 
@@ -99,7 +99,11 @@ class WallbspVectorEnv(VectorEnv):
         self.bank = 0                         # the bank of the latest whole batch
         self.act_paths = [p for p, _ in leaves(act_space)]
         self.act_leaves = [self.arrays[f"act{i}"] for i in range(len(self.act_paths))]
+        self.one_action = self.act_paths == [()]          # the action is the leaf's value
+        self.assemble = assembler(obs_space)
+        self.local = isinstance(self.pool, LocalPool)
         self.in_flight = np.zeros(num_envs, dtype=np.bool_)
+        self.running = 0                      # how many of in_flight are set
         self.schema = None
         self.all = np.arange(num_envs, dtype=np.int64)
         self.held = [self._holds(b) for b in range(self.nbanks)]
@@ -135,11 +139,14 @@ class WallbspVectorEnv(VectorEnv):
 
     def step(self, actions):
         self._usable()
-        if self.in_flight.any():
+        if self.running:
             raise RuntimeError("step() while environments sent with send() are running: "
                                "recv() them first")
-        for leaf, value in zip(self.act_leaves, values_at(actions, self.act_paths)):
-            leaf[...] = value
+        if self.one_action:
+            self.act_leaves[0][...] = actions
+        else:
+            for leaf, value in zip(self.act_leaves, values_at(actions, self.act_paths)):
+                leaf[...] = value
         with self._guard():
             bank = self._free_bank()
             self.pool.send_steps(None)
@@ -164,6 +171,7 @@ class WallbspVectorEnv(VectorEnv):
         for leaf, value in zip(self.act_leaves, values_at(actions, self.act_paths)):
             leaf[ids] = value
         self.in_flight[ids] = True
+        self.running += len(ids)
         self.arrays["counters"][BANK] = self.bank = self.spare
         with self._guard():
             self.pool.send_steps(None if env_id is None else ids)
@@ -172,7 +180,7 @@ class WallbspVectorEnv(VectorEnv):
         """The first ``batch_size`` environments to finish: ``(obs, rewards, terminated,
         truncated, infos)`` with their indices in ``infos["env_id"]``."""
         self._usable()
-        running = int(self.in_flight.sum())
+        running = self.running
         if running < self.batch_size:
             raise RuntimeError(f"recv() returns batch_size={self.batch_size} environments "
                                f"but only {running} are running: send() more first")
@@ -180,6 +188,7 @@ class WallbspVectorEnv(VectorEnv):
             ids = self.pool.wait(self.batch_size)
             infos = self._infos(ids, self.batch_size)
         self.in_flight[ids] = False
+        self.running -= len(ids)
         a = self.arrays
         obs = assemble(self.single_observation_space,
                        [leaf[ids] for leaf in self.banks[self.spare]])
@@ -199,6 +208,7 @@ class WallbspVectorEnv(VectorEnv):
             self.arrays["counters"][BANK] = self.bank = self.spare
             self.pool.send_resets(dict(enumerate(seeds)), options)
         self.in_flight[:] = True
+        self.running = self.num_envs
 
     def render(self):
         return self.call("render")
@@ -255,10 +265,11 @@ class WallbspVectorEnv(VectorEnv):
         return _Guard(self)
 
     def _drain(self) -> None:
-        running = int(self.in_flight.sum())
+        running = self.running
         if running:
             self.pool.wait(running)
             self.in_flight[:] = False
+            self.running = 0
 
     def _free_bank(self) -> int:
         """The bank the next whole batch goes to (told to the workers): with ``copy=True``
@@ -266,9 +277,10 @@ class WallbspVectorEnv(VectorEnv):
         bank = 0
         if self.copy:
             bank = self.spare
+            held, holds = self.held, self._holds
             for k in range(1, self.spare + 1):
                 b = (self.bank + k) % self.spare
-                if self._holds(b) == self.held[b]:
+                if holds(b) == held[b]:
                     bank = b
                     break
         self.arrays["counters"][BANK] = self.bank = bank
@@ -277,25 +289,39 @@ class WallbspVectorEnv(VectorEnv):
     def _holds(self, bank: int) -> int:
         """References to the bank's arrays: a view handed out (and any view of it: numpy
         makes the bank's array their base) adds one."""
-        return sum(sys.getrefcount(leaf) for leaf in self.banks[bank])
+        return sum(map(sys.getrefcount, self.banks[bank]))
 
     def _observations(self, bank: int):
         arrays = self.banks[bank]
         if self.copy:
-            arrays = [leaf.copy() if bank == self.spare else leaf[...] for leaf in arrays]
-        return assemble(self.single_observation_space, arrays)
+            arrays = ([leaf.copy() for leaf in arrays] if bank == self.spare else
+                      [leaf[...] for leaf in arrays])
+        return self.assemble(arrays)
 
     def _infos(self, rows, size: int, positions=None) -> dict:
         """gymnasium's infos of the environments ``rows`` (None: all, in order), at
         ``positions`` of arrays of ``size`` (default: 0, 1, ...)."""
-        if isinstance(self.pool, LocalPool):
+        if self.local:
             return self.pool.infos(self.all if rows is None else rows, size, positions)
         a = self.arrays
         index = slice(None) if rows is None else rows
         at = slice(None) if positions is None else positions
-        infos = ({} if self.schema is None else
-                 self.schema.decode(a["present"], a["values"], index, size, at))
+        schema = self.schema
+        if schema is None:
+            infos = {}
+        elif rows is None and positions is None:
+            infos = schema.decode_all(a["present"], a["values"])
+        else:
+            infos = schema.decode(a["present"], a["values"], index, size, at)
         lengths = a["overflow_len"][index]
+        if lengths.size and lengths.max() >= 0:
+            self._spilled(infos, lengths, index, at, size)
+        return infos
+
+    def _spilled(self, infos: dict, lengths, index, at, size: int) -> None:
+        """Merge the pickled infos (``lengths`` >= 0) into ``infos``; their new scalar keys
+        go into the schema the workers encode with."""
+        a = self.arrays
         spilled = np.flatnonzero(lengths >= 0)
         if spilled.size:
             envs = self.all[index]
@@ -310,7 +336,6 @@ class WallbspVectorEnv(VectorEnv):
             if schema is not None:               # the workers take it at their next wake
                 self.schema = schema
                 self.pool.set_schema(schema)
-        return infos
 
 
 class _Guard:
