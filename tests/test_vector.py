@@ -157,6 +157,21 @@ def run_alone(env_id, seed, actions_of, steps, **options):
 
 
 @pytest.mark.parametrize("workers", [0, 2])
+def test_workers_let_frames_go_and_render_draws_them_again(workers, no_leak):
+    """The environments' frames are not kept once written out (their caches are the
+    batch's); render() draws the same picture the step observed."""
+    envs = make_vec("wallbsp/Explore-v0", 2, workers=workers, render_mode="rgb_array",
+                    **SMALL)
+    try:
+        envs.reset(seed=3)
+        obs = envs.step(np.array([1, 5]))[0]
+        assert envs.get_attr("frame") == (None, None)
+        pictures = envs.render()
+        assert all(np.array_equal(p, obs["rgb"][i]) for i, p in enumerate(pictures))
+    finally:
+        envs.close()
+
+@pytest.mark.parametrize("workers", [0, 2])
 def test_send_recv_returns_batches_of_finished_environments(workers, no_leak):
     n, batch = 4, 2
     envs = make_vec("wallbsp/Explore-v0", n, workers=workers, batch_size=batch, **SHORT)

@@ -81,6 +81,9 @@ class Stepper:
         self.reward, self.terminated = arrays["reward"], arrays["terminated"]
         self.truncated, self.seeds = arrays["truncated"], arrays["seed"]
         self.autoreset = {e: False for e in envs}
+        # a wallbsp env lets its frame go once written out (WallbspEnv.forget_frame)
+        self.forget = {e: getattr(getattr(env, "unwrapped", env), "forget_frame", _nothing)
+                       for e, env in envs.items()}
         self.stepped = {}
         self.local, self.schema, self.infos = local, None, {}
         if not local:
@@ -114,6 +117,7 @@ class Stepper:
                 obs, reward, terminated, truncated, info = env.step(self.action(e))
         self.autoreset[e] = bool(terminated or truncated)
         self.write(e, bank, obs, reward, terminated, truncated, info)
+        self.forget[e]()
 
     def reset(self, e: int, seed=None, options=None) -> None:
         bank = int(self.counters[BANK])
@@ -122,6 +126,7 @@ class Stepper:
         self.note_seed(e)
         self.autoreset[e] = False
         self.write(e, bank, obs, 0.0, False, False, info)
+        self.forget[e]()
 
     def write(self, e, bank, obs, reward, terminated, truncated, info) -> None:
         slots = self.slots[bank][e]
@@ -222,6 +227,10 @@ class LocalPool:
                 env.close()
             except Exception:  # noqa: BLE001 - closing goes on
                 pass
+
+
+def _nothing() -> None:
+    pass
 
 
 def _call(env, name, args, kwargs):
