@@ -193,6 +193,21 @@ def test_spawn_follows_zdoom_solid_things_block_only_solid_spawns():
     assert kit.func is None and world.player.health == 95
 
 
+
+def test_spawned_monsters_see_the_player_at_their_first_look():
+    """ViZDoom's spawned monsters all wake at their first A_Look (defend_the_line's demons
+    all move at tic 12, 120 of 120); DOOM's P_LookForPlayers, from a random lastlook,
+    gives up one time in four in a single-player game."""
+    world = World(scenario_tree("basic"), 3)
+    sc = Scenario()
+    demons = [sc.spawn(world, "Demon", 0.0, y, angle=180.0, check=False)
+              for y in range(-160, 200, 45)]
+    for _ in range(11):                        # the spawn state's 10 tics, then A_Look
+        world.tic()
+    player = world.play.players[0].mo
+    assert all(d.target is player for d in demons)
+
+
 def test_a_custom_scenario_as_an_environment():
     class Hunt(HealthGathering):
         acid = 0

@@ -263,6 +263,10 @@ class Scenario:
         mo = play.p_spawn_mobj(int(round(x * FRAC)), int(round(y * FRAC)),
                                info.ONFLOORZ if z is None else int(round(z * FRAC)), mtype)
         mo.angle = int(round(angle % 360.0 * (1 << 32) / 360.0)) & 0xFFFFFFFF
+        # ViZDoom's spawned monsters see the player at their first look, every one; DOOM's
+        # P_LookForPlayers, from a random lastlook, gives up without looking one time in
+        # four in a single-player game (its "stop" is the player it reaches last)
+        mo.lastlook = next((i for i, on in enumerate(play.playeringame) if on), 0)
         if check:
             flags = mo.flags
             if flags & (info.MF_SOLID | info.MF_SHOOTABLE):
