@@ -84,11 +84,7 @@ def view_observation(frame, keys) -> dict:
     vector env copies them on, and only a C-ordered array copies at memory speed; or the
     arrays of an enclosing ``drawn_into``)."""
     names = [name for name in ("rgb", "depth", "labels") if name in keys]
-    if _INTO:
-        return frame.view_rows(names, out=_INTO[-1])
-    if names == ["rgb"]:        # the colour alone: its own pass, without the layers' kernel
-        return {"rgb": frame.rows("rgb")}
-    return frame.view_rows(names)
+    return frame.view_rows(names, out=_INTO[-1]) if _INTO else frame.view_rows(names)
 
 
 def hud_observation(frame, picture, keys) -> dict:

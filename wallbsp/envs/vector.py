@@ -34,7 +34,7 @@ from gymnasium.vector import AutoresetMode, VectorEnv
 from gymnasium.vector.utils import batch_space
 
 from wallbsp.envs.vecbuffers import (MAX_INFO_KEYS, OVERFLOW_BYTES, InfoSchema, Layout,
-    add_info, assemble, assembler, leaf_array, leaves, read_overflow, values_at)
+    add_info, assembler, leaf_array, leaves, read_overflow, values_at)
 from wallbsp.envs.vecpool import ProcessPool
 from wallbsp.envs.workers import BANK, LocalPool, WorkerError
 
@@ -190,8 +190,7 @@ class WallbspVectorEnv(VectorEnv):
         self.in_flight[ids] = False
         self.running -= len(ids)
         a = self.arrays
-        obs = assemble(self.single_observation_space,
-                       [leaf[ids] for leaf in self.banks[self.spare]])
+        obs = self.assemble([leaf[ids] for leaf in self.banks[self.spare]])
         infos["env_id"] = ids.astype(np.int32)
         infos["_env_id"] = np.ones(len(ids), dtype=np.bool_)
         return obs, a["reward"][ids], a["terminated"][ids], a["truncated"][ids], infos
@@ -306,13 +305,8 @@ class WallbspVectorEnv(VectorEnv):
         a = self.arrays
         index = slice(None) if rows is None else rows
         at = slice(None) if positions is None else positions
-        schema = self.schema
-        if schema is None:
-            infos = {}
-        elif rows is None and positions is None:
-            infos = schema.decode_all(a["present"], a["values"])
-        else:
-            infos = schema.decode(a["present"], a["values"], index, size, at)
+        infos = ({} if self.schema is None else
+                 self.schema.decode(a["present"], a["values"], index, size, at))
         lengths = a["overflow_len"][index]
         if lengths.size and lengths.max() >= 0:
             self._spilled(infos, lengths, index, at, size)
@@ -321,21 +315,17 @@ class WallbspVectorEnv(VectorEnv):
     def _spilled(self, infos: dict, lengths, index, at, size: int) -> None:
         """Merge the pickled infos (``lengths`` >= 0) into ``infos``; their new scalar keys
         go into the schema the workers encode with."""
-        a = self.arrays
-        spilled = np.flatnonzero(lengths >= 0)
-        if spilled.size:
-            envs = self.all[index]
-            where = np.arange(size)[at]
-            seen = []
-            for j in spilled:
-                info = read_overflow(a["overflow"][envs[j]], int(lengths[j]))
-                add_info(infos, info, int(where[j]), size)
-                seen.append(info)
-            schema = (InfoSchema.from_infos(seen) if self.schema is None
-                      else self.schema.extended(seen))
-            if schema is not None:               # the workers take it at their next wake
-                self.schema = schema
-                self.pool.set_schema(schema)
+        overflow, envs, where = self.arrays["overflow"], self.all[index], np.arange(size)[at]
+        seen = []
+        for j in np.flatnonzero(lengths >= 0):
+            info = read_overflow(overflow[envs[j]], int(lengths[j]))
+            add_info(infos, info, int(where[j]), size)
+            seen.append(info)
+        schema = (InfoSchema.from_infos(seen) if self.schema is None
+                  else self.schema.extended(seen))
+        if schema is not None:                   # the workers take it at their next wake
+            self.schema = schema
+            self.pool.set_schema(schema)
 
 
 class _Guard:

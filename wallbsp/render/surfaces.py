@@ -147,20 +147,9 @@ def surfaces_of(tex, projection, leveltime: int = 0) -> Surfaces:
     tables = animated_tables(tex, leveltime)
     part_table, plane_base = tables if tables is not None else (tex.part_table,
                                                                 _plane_bases(tex))
-    columns = _sky_columns(tex, projection)
-    # the last one made is handed out again while its three changing arrays are the same
-    # objects (most frames: no picture turned, the view did not turn)
-    last = _SURFACES.get(tex)
-    if last is not None and last.part_table is part_table and last.plane_base is plane_base \
-            and last.sky_columns is columns:
-        return last
-    last = _SURFACES[tex] = Surfaces(
-        part_table, plane_base, int(tex.sky), tex.sky_colour, columns, tex.base, tex.pitch,
-        tex.stride, tex.height, tex.atlas, tex.lut_flat, int(tex.n_colours), int(tex.black))
-    return last
-
-
-_SURFACES: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
+    return Surfaces(part_table, plane_base, int(tex.sky), tex.sky_colour,
+                    _sky_columns(tex, projection), tex.base, tex.pitch, tex.stride,
+                    tex.height, tex.atlas, tex.lut_flat, int(tex.n_colours), int(tex.black))
 
 
 _FLAT: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
