@@ -1,4 +1,4 @@
-"""The Python walks down a map's nodes that ``wallbsp.sim.nodewalks`` compiles, kept as the
+"""The Python walks down a map's nodes that ``wallbsp.doom.nodewalks`` compiles, kept as the
 reference its tests compare with (``test_playsim_nodewalks``): ``p_sight.c``'s
 P_CheckSight (P_CrossBSPNode and P_CrossSubsector, the heights applied at each crossed line
 as C applies them) and ``r_main.c``'s R_PointInSubsector, over a play's map objects.
@@ -12,7 +12,7 @@ objects, not ``bsptables``' arrays, and narrow the window themselves.
     walks.point_in_subsector(x, y)     # as play.r_point_in_subsector
 """
 from wallbsp.game.playsim.sight import divline_side, intercept_vector2
-from wallbsp.sim.fixed import FRACBITS, fixed_div, wrap32
+from wallbsp.doom.fixed import FRACBITS, fixed_div, wrap32
 
 NF_SUBSECTOR = 0x8000
 ML_TWOSIDED = 4

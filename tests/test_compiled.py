@@ -13,7 +13,7 @@ import numpy as np
 import pytest
 
 from wallbsp import Camera, compile_level, load_level, render
-from wallbsp.sim.state import WorldState
+from wallbsp.scene.state import WorldState
 
 ROOT = Path(__file__).resolve().parent.parent
 FREEDOOM = Path("/usr/share/games/doom")

@@ -13,7 +13,7 @@ import pytest
 from test_wad import FREEDOOM_MAPS, FREEDOOM_SAMPLE, freedoom
 
 from wallbsp import Camera, render
-from wallbsp.sim.queries import floor_z
+from wallbsp.scene.queries import floor_z
 from wallbsp.level.wadmap import list_maps
 
 EYE = 41              # DOOM's view height above the floor

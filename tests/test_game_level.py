@@ -16,7 +16,7 @@ from wallbsp.assets.resources import ResourceSet
 from wallbsp.game.world import World
 from wallbsp.render import render
 from wallbsp.render.frame import KIND_THING
-from wallbsp.sim import info
+from wallbsp.doom import info
 from wallbsp.sound import SoundSystem
 
 ROOT = Path(__file__).resolve().parent.parent

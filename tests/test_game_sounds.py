@@ -13,7 +13,7 @@ from toolscripts import tool_script
 
 from wallbsp import compile_level, load_level
 from wallbsp.game.world import World
-from wallbsp.sim import info
+from wallbsp.doom import info
 from wallbsp.sound import SoundSystem, dmx
 from wallbsp.sound.folders import folder_lumps, level_lumps
 

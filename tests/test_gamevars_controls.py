@@ -12,7 +12,7 @@ from wallbsp.envs import gamevars  # noqa: E402
 from wallbsp.envs.scenarios import scenario_tree  # noqa: E402
 from wallbsp.game.ticcmds import TicCmd, as_ticcmd  # noqa: E402
 from wallbsp.game.world import World  # noqa: E402
-from wallbsp.sim import info  # noqa: E402
+from wallbsp.doom import info  # noqa: E402
 
 
 def fields(cmd):

@@ -9,9 +9,9 @@ import pytest
 PACKAGE = Path(__file__).resolve().parent.parent / "wallbsp"
 
 # folder → its place in the pipeline; a module imports only from lower places or its own folder
-LAYERS = {"core": 0, "assets": 1, "level": 2, "bsp": 3, "generate": 3, "sim": 4,
-          "render": 5, "game": 5, "sound": 5, "screen": 6, "app": 7,
-          "envs": 8}
+LAYERS = {"core": 0, "assets": 1, "level": 2, "bsp": 3, "generate": 3, "doom": 4,
+          "scene": 5, "render": 6, "game": 6, "sound": 6, "screen": 7, "app": 8,
+          "envs": 9}
 ENTRY_POINTS = {"wallbsp", "wallbsp.__main__"}     # the lazy API and `python -m wallbsp`
 
 
@@ -113,7 +113,7 @@ def test_the_top_level_stays_small_and_modules_readable():
 def test_importing_the_package_loads_neither_renderer_nor_game():
     import subprocess
     import sys
-    code = ("import sys, wallbsp, wallbsp.sim.things; "
+    code = ("import sys, wallbsp, wallbsp.scene.things; "
             "sys.exit(sorted(m for m in sys.modules if m.startswith(('wallbsp.render', "
             "'wallbsp.game', 'numba'))) != [])")
     assert subprocess.run([sys.executable, "-c", code]).returncode == 0

@@ -15,7 +15,7 @@ from wallbsp.generate import TARGET_TYPE, generate_level, reachable_sectors, sec
 from wallbsp.assets.catalogue import FLATS, SKY_FLAT, TEXTURE_DIR, WALL_TEXTURES
 from wallbsp.level.model import Level, Sector, Start, Wall
 from wallbsp.level.io import content_hash, level_from_dict, level_to_dict, load_level
-from wallbsp.sim.thingtypes import thing_info
+from wallbsp.scene.thingtypes import thing_info
 
 SEEDS = range(80)
 

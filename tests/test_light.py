@@ -12,7 +12,7 @@ from lightref import colormap_choices, expected_levels, scaled
 
 from wallbsp import Camera, compile_level, load_level, render
 from wallbsp.render.textures import level_resources
-from wallbsp.sim.state import WorldState
+from wallbsp.scene.state import WorldState
 
 ROOT = Path(__file__).resolve().parent.parent
 FREEDOOM = Path("/usr/share/games/doom")

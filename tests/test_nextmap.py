@@ -28,7 +28,7 @@ from wallbsp.game.ticcmds import ticcmd  # noqa: E402
 from wallbsp.game.world import World  # noqa: E402
 from wallbsp.level.wadmap import load_wad_level  # noqa: E402
 from wallbsp.render import render  # noqa: E402
-from wallbsp.sim import info  # noqa: E402
+from wallbsp.doom import info  # noqa: E402
 
 DOOM1 = Path("/usr/share/games/doom/freedoom1.wad")
 DOOM2 = Path("/usr/share/games/doom/freedoom2.wad")

@@ -15,7 +15,7 @@ import pytest
 
 from wallbsp import compile_level, load_level, render
 from wallbsp.camera import eye_camera
-from wallbsp.sim.state import WorldState
+from wallbsp.scene.state import WorldState
 
 ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT / "tools"))

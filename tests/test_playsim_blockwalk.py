@@ -1,4 +1,4 @@
-"""The compiled line gathering of P_PathTraverse (``wallbsp.sim.blockwalk``, what the play
+"""The compiled line gathering of P_PathTraverse (``wallbsp.doom.blockwalk``, what the play
 runs) against the Python walk it replaced (``trace_blocks`` and P_BlockLinesIterator with
 PIT_AddLineIntercepts, kept in ``pathtraverse`` as the reference): for thousands of seeded
 random traces on Freedoom maps -- short ones (P_PointOnLineSide), long ones across the map
@@ -16,7 +16,7 @@ from wallbsp.game.playsim import pathtraverse
 from wallbsp.game.playsim.pathtraverse import (MAPBLOCKSIZE, PT_ADDLINES, PT_ADDTHINGS,
                                                PT_EARLYOUT, SAFE_INTERCEPTS, Intercept)
 from wallbsp.game.playsim.play import play_class
-from wallbsp.sim.fixed import FRACUNIT
+from wallbsp.doom.fixed import FRACUNIT
 
 DOOM = Path("/usr/share/games/doom")
 pytestmark = pytest.mark.skipif(not (DOOM / "freedoom2.wad").exists(),

@@ -184,7 +184,7 @@ def test_a_missile_leaving_the_map_wraps_around_as_in_c(tmp_path):
     four-player deathmatch desynced at tic 2470 when it did not."""
     from playsim_scenarios import write_pwad
     from wallbsp.game.playsim.trace import start_demo
-    from wallbsp.sim import info
+    from wallbsp.doom import info
     wad = wad_path("freedoom2")
     pwad = tmp_path / "test.wad"
     write_pwad(pwad, (("MAP01", 0),))

@@ -1,7 +1,7 @@
-"""wallbsp.sim.fixed against values worked out by hand from m_fixed.c, tables.c and
+"""wallbsp.doom.fixed against values worked out by hand from m_fixed.c, tables.c and
 r_main.c."""
-from wallbsp.sim import fixed
-from wallbsp.sim.fixed import (ANG45, ANG90, ANG180, ANG270, FRACUNIT, MAXINT, MININT,
+from wallbsp.doom import fixed
+from wallbsp.doom.fixed import (ANG45, ANG90, ANG180, ANG270, FRACUNIT, MAXINT, MININT,
                                aprox_distance, c_div, c_mod, fixed_div, fixed_mul,
                                point_to_angle2, slope_div, wrap32)
 

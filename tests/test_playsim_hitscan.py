@@ -1,8 +1,8 @@
 """p_map.c's hitscan half (playsim.hitscan) against hand-computed C results."""
 from wallbsp.game.playsim.hitscan import Hitscan
 from wallbsp.game.playsim.structs import Mobj
-from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACUNIT as F
+from wallbsp.doom import info
+from wallbsp.doom.fixed import FRACUNIT as F
 
 
 class Intercept:

@@ -1,7 +1,7 @@
-"""wallbsp.sim.info: counts and spot values checked against Chocolate Doom's info.c,
+"""wallbsp.doom.info: counts and spot values checked against Chocolate Doom's info.c,
 d_items.c, sounds.c and the headers."""
-from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACUNIT
+from wallbsp.doom import info
+from wallbsp.doom.fixed import FRACUNIT
 
 
 def test_counts():

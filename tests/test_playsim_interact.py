@@ -5,7 +5,7 @@ from wallbsp.game.playsim.damage import Damage
 from wallbsp.game.playsim.interact import Interact
 from wallbsp.game.playsim.structs import Mobj, Player, Sector, Subsector, PST_DEAD, \
     COMMERCIAL, EXE_DOOM_1_9
-from wallbsp.sim import info
+from wallbsp.doom import info
 
 
 class ScriptedRng:

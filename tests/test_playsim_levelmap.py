@@ -15,8 +15,8 @@ from wallbsp.game.playsim.levelmap import (ML_BLOCKING, ML_TWOSIDED, NF_SUBSECTO
                                            start_level)
 from wallbsp.game.playsim.structs import Mobj, TicCmd
 from wallbsp.level.model import Level, Sector, Start, Thing, Wall
-from wallbsp.sim import info
-from wallbsp.sim.fixed import FINECOSINE, FINESINE, FRACUNIT, point_to_angle2
+from wallbsp.doom import info
+from wallbsp.doom.fixed import FINECOSINE, FINESINE, FRACUNIT, point_to_angle2
 
 ROOT = Path(__file__).resolve().parent.parent
 LEVELS = ["wallbsp/data/default.json", "wallbsp/data/textured.json", "levels/multi.json",

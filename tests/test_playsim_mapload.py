@@ -8,7 +8,7 @@ import pytest
 
 from wallbsp.game.playsim.mapload import MapLoad, MapLoadError, pad_reject
 from wallbsp.game.playsim.structs import COMMERCIAL, RETAIL, Node
-from wallbsp.sim import info
+from wallbsp.doom import info
 
 DOOMDIR = "/usr/share/games/doom"
 U = 1 << 16

@@ -10,8 +10,8 @@ from wallbsp.game.playsim.slide import Slide
 from wallbsp.game.playsim.structs import (EXE_ULTIMATE, Line, Mobj, Node, Sector, Seg,
                                           ST_HORIZONTAL, ST_NEGATIVE, ST_POSITIVE,
                                           ST_VERTICAL, Subsector, Vertex)
-from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACUNIT
+from wallbsp.doom import info
+from wallbsp.doom.fixed import FRACUNIT
 
 U = FRACUNIT
 

@@ -3,9 +3,9 @@ stand-in Play whose other modules are stubs."""
 from wallbsp.game.playsim.mobjs import Mobjs
 from wallbsp.game.playsim.structs import MapThing, Player, Sector, Subsector, \
     EXE_DOOM_1_9, EXE_ULTIMATE
-from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACUNIT as F
-from wallbsp.sim.rng import Random
+from wallbsp.doom import info
+from wallbsp.doom.fixed import FRACUNIT as F
+from wallbsp.doom.rng import Random
 
 
 class StubPlay(Mobjs):

@@ -6,9 +6,9 @@ from pathlib import Path
 
 import pytest
 
-from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACUNIT, ANG45, ANG90, ANG180, aprox_distance
-from wallbsp.sim.rng import Random
+from wallbsp.doom import info
+from wallbsp.doom.fixed import FRACUNIT, ANG45, ANG90, ANG180, aprox_distance
+from wallbsp.doom.rng import Random
 from wallbsp.game.playsim.structs import Mobj, Player, Sector, Line, Side, Thinker, \
     EXE_DOOM_1_9, EXE_ULTIMATE, EXE_DOOM_1_2, RETAIL, COMMERCIAL
 from wallbsp.game.playsim.monsters import Monsters, mobj_thinkers, DI_EAST, DI_NORTHEAST, \
@@ -241,7 +241,7 @@ def test_check_melee_range_uses_aprox_distance_and_sight():
 def test_check_missile_range_chance(type_, dist, expected_dist):
     """The attack is made when P_Random() >= the scaled distance: find the threshold
     by starting the table where it returns values around it."""
-    from wallbsp.sim.rng import RNDTABLE
+    from wallbsp.doom.rng import RNDTABLE
     for index in range(256):
         play = Fake()
         play.rng.prndindex = index

@@ -1,4 +1,4 @@
-"""The compiled walks down a map's nodes (``wallbsp.sim.nodewalks``, what the play runs)
+"""The compiled walks down a map's nodes (``wallbsp.doom.nodewalks``, what the play runs)
 against the Python walks they replaced (``nodewalkref``: P_CrossBSPNode/P_CrossSubsector
 and R_PointInSubsector over the map objects): the same answers, and for sight the same
 window (topslope, bottomslope), on Freedoom maps, for every pair of a sample of map

@@ -2,8 +2,8 @@
 from wallbsp.game.playsim.player import PlayerThink
 from wallbsp.game.playsim.structs import Mobj, Player, PST_LIVE, PST_DEAD, PST_REBORN, \
     BT_USE, BT_CHANGE, BT_WEAPONSHIFT, COMMERCIAL, RETAIL, Sector, Subsector
-from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACUNIT as F, ANG90
+from wallbsp.doom import info
+from wallbsp.doom.fixed import FRACUNIT as F, ANG90
 
 VIEWHEIGHT = 41 * F
 
@@ -82,7 +82,7 @@ def test_calc_height_bob():
     play.leveltime = 1                   # angle 409
     play.p_calc_height(player)
     assert player.bob == 0x24000
-    from wallbsp.sim.fixed import FINESINE
+    from wallbsp.doom.fixed import FINESINE
     assert player.viewz == VIEWHEIGHT + ((0x12000 * FINESINE[409]) >> 16)
 
 

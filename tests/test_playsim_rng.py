@@ -1,5 +1,5 @@
-"""wallbsp.sim.rng: m_random.c's table and its two independent cursors."""
-from wallbsp.sim.rng import RNDTABLE, Random
+"""wallbsp.doom.rng: m_random.c's table and its two independent cursors."""
+from wallbsp.doom.rng import RNDTABLE, Random
 
 
 def test_table():

@@ -17,9 +17,9 @@ from wallbsp.game.playsim.structs import (COMMERCIAL, EXE_DOOM_1_9, EXE_FINAL, E
 from wallbsp.game.playsim.switches import Switches
 from wallbsp.game.playsim.teleport import Teleport
 from wallbsp.game.playsim.ticker import Ticker
-from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACUNIT
-from wallbsp.sim.rng import Random
+from wallbsp.doom import info
+from wallbsp.doom.fixed import FRACUNIT
+from wallbsp.doom.rng import Random
 
 U = FRACUNIT
 

@@ -3,8 +3,8 @@ from wallbsp.game.playsim.structs import BT_ATTACK, COMMERCIAL, Mobj, Player, PS
 from wallbsp.game.playsim.weaponfire import WeaponFire
 from wallbsp.game.playsim.weapons import PS_FLASH, PS_WEAPON, WEAPONBOTTOM, WEAPONTOP, \
     Weapons
-from wallbsp.sim import info
-from wallbsp.sim.fixed import ANG90, FRACUNIT
+from wallbsp.doom import info
+from wallbsp.doom.fixed import ANG90, FRACUNIT
 
 
 class ScriptedRng:

@@ -11,7 +11,7 @@ from wallbsp.app.vanilla import map_name
 from wallbsp.game.playsim.structs import Mobj
 from wallbsp.game.playsim.trace import start_demo
 from wallbsp.game.playstate import PlayState, picture_code
-from wallbsp.sim import info
+from wallbsp.doom import info
 
 FREEDOOM = Path("/usr/share/games/doom")
 needs_freedoom = pytest.mark.skipif(not (FREEDOOM / "freedoom2.wad").exists(),

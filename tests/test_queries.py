@@ -1,4 +1,4 @@
-"""Movement and sight over the current world (wallbsp.sim.queries): DOOM's player rules, checked
+"""Movement and sight over the current world (wallbsp.scene.queries): DOOM's player rules, checked
 against brute force over every wall; heights that change; input that is not a number."""
 import math
 from pathlib import Path
@@ -8,8 +8,8 @@ import pytest
 from hypothesis import given, settings, strategies as st
 
 from wallbsp import compile_level
-from wallbsp.sim import queries
-from wallbsp.sim.state import WorldState
+from wallbsp.scene import queries
+from wallbsp.scene.state import WorldState
 from wallbsp.level.model import Level, Sector, Start, Wall
 
 RADIUS, STEP, HEADROOM = queries.PLAYER_RADIUS, queries.MAX_STEP, queries.PLAYER_HEIGHT

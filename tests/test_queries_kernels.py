@@ -4,10 +4,10 @@ one source, compiled or not) must give the same floats, query by query."""
 import numpy as np
 import pytest
 
-from wallbsp.sim import queries, collision as segments
-from wallbsp.sim.queries import PLAYER_RADIUS
-from wallbsp.sim.querytables import Tables
-from wallbsp.sim.state import WorldState
+from wallbsp.scene import queries, collision as segments
+from wallbsp.scene.queries import PLAYER_RADIUS
+from wallbsp.scene.querytables import Tables
+from wallbsp.scene.state import WorldState
 
 
 @pytest.fixture(params=["multi", "E1M1"])

@@ -19,8 +19,8 @@ from wallbsp.assets.wad import wad_bytes
 from wallbsp.camera import Camera
 from wallbsp.render import render
 from wallbsp.render.frame import KIND_FLOOR, KIND_WALL
-from wallbsp.sim.queries import floor_z
-from wallbsp.sim.state import WorldState
+from wallbsp.scene.queries import floor_z
+from wallbsp.scene.state import WorldState
 
 RUNS = {"flat": [("NUKAGE1", "NUKAGE3"), ("FWATER1", "FWATER4"), ("SWATER1", "SWATER4"),
                  ("LAVA1", "LAVA4"), ("BLOOD1", "BLOOD3"), ("RROCK05", "RROCK08"),

@@ -12,7 +12,7 @@ from test_wad import freedoom
 from wallbsp.camera import eye_camera
 from wallbsp.render import render
 from wallbsp.render.frame import KIND_WALL
-from wallbsp.sim.state import WorldState
+from wallbsp.scene.state import WorldState
 
 FALL = 2196                          # two-sided, SFALL1 on its front middle, nothing else
 

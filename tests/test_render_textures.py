@@ -197,7 +197,7 @@ def test_a_pressed_switch_and_a_changed_floor_keep_the_atlas(tmp_path):
     flat): pressing a switch or changing a floor re-gathers the per-key tables only."""
     from wallbsp.render.tables import tree_tables
     from wallbsp.render.textures import level_textures
-    from wallbsp.sim.state import WorldState
+    from wallbsp.scene.state import WorldState
     folder = coded_textures(tmp_path)
     for name, rgb in (("SW1GRID", (200, 0, 0)), ("SW2GRID", (0, 200, 0))):
         save_png(folder / f"{name}.png", np.broadcast_to(np.uint8(rgb), (8, 8, 3)).copy())

@@ -10,7 +10,7 @@ from wallbsp import compile_level
 from wallbsp.camera import EYE_HEIGHT, Camera, eye_camera
 from wallbsp.level.model import Level, Sector, Start, Wall
 from wallbsp.render import render
-from wallbsp.sim.state import WorldState, static_state
+from wallbsp.scene.state import WorldState, static_state
 
 # two rooms joined by a doorway sector (1), west to east: room 0 [0, 256], door [256, 288],
 # room 2 [288, 544]; all 256 deep (y in [0, 256])

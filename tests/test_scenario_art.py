@@ -16,7 +16,7 @@ from wallbsp.envs import scenarios  # noqa: E402
 from wallbsp.envs.scenarios import ScenarioEnv, our_resources, scenario_tree  # noqa: E402
 from wallbsp.envs.vizdoom import Basic  # noqa: E402
 from wallbsp.render.frame import KIND_THING  # noqa: E402
-from wallbsp.sim import info  # noqa: E402
+from wallbsp.doom import info  # noqa: E402
 
 FREEDOOM = "/usr/share/games/doom/freedoom2.wad"
 # what the scenarios spawn (wallbsp/envs/vizdoom_rooms.py, vizdoom_maps.py), what those fire

@@ -16,7 +16,7 @@ from wallbsp.envs.vizdoom import SCENARIOS, Basic, HealthGathering  # noqa: E402
 from wallbsp.envs.vizdoom_source import VizdoomMissing, scenarios_dir  # noqa: E402
 from wallbsp.game.scenario import Scenario  # noqa: E402
 from wallbsp.game.world import World  # noqa: E402
-from wallbsp.sim import info  # noqa: E402
+from wallbsp.doom import info  # noqa: E402
 
 SMALL = {"size": (32, 24)}
 # these play on ViZDoom's own maps, converted from a ViZDoom installation (none shipped)
@@ -90,7 +90,7 @@ def test_basic_rules():
     assert len(caco) == 1 and caco[0].health == 1 and caco[0].x == 0
     # a shot costs 5 and a tic 1; turn the player to face the cacodemon and fire
     p = env.world.play.players[0].mo
-    from wallbsp.sim.fixed import point_to_angle2
+    from wallbsp.doom.fixed import point_to_angle2
     p.angle = point_to_angle2(p.x, p.y, caco[0].x, caco[0].y)
     rewards = []
     for i in range(10):                  # the pistol fires on its attack's second frame

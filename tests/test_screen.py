@@ -144,7 +144,7 @@ def test_weapons_are_their_sprites_at_r_draw_psprites_place(frames, golden):
     """At 320 × 200 with the status bar the view is 320 × 168 (centery 84): a weapon at
     ``sx`` = 1, ``sy`` = WEAPONTOP (32) has its top left at (1 - left, 16 - top), lit by
     COLORMAP row max(0, (15 - light / 16) * 4 - 23); a flash full bright."""
-    from wallbsp.sim import info
+    from wallbsp.doom import info
     weapons = {name: (wad, light) for name, wad, _, _, light in golden.WEAPONS}
     checked = 0
     for name, frame, play in frames:
@@ -198,7 +198,7 @@ def test_the_face_looks_about_by_m_random_and_hurts_by_health(golden):
 
 def test_evil_grin_ouch_turns_rampage_god_and_death(golden):
     from wallbsp.screen.statusbar import FaceState
-    from wallbsp.sim.fixed import ANG90
+    from wallbsp.doom.fixed import ANG90
     play = face_play(golden, health=100)
     p = play.players[0]
     face = FaceState()
@@ -335,7 +335,7 @@ def test_demo_stays_in_sync_while_the_hud_ticks():
 def test_our_own_pictures_cover_every_patch_and_weapon_frame():
     from wallbsp.screen.art import OwnArt
     from wallbsp.screen.statusbar import bar_names
-    from wallbsp.sim import info
+    from wallbsp.doom import info
     art = OwnArt()
     optional = {"STMBARL", "STMBARR", "STFB0", "STFB1", "STFB2", "STFB3"}
     assert [n for n in bar_names() if n not in optional and art.patch(n) is None] == []

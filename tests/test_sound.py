@@ -22,8 +22,8 @@ from pathlib import Path
 
 import pytest
 
-from wallbsp.sim import info
-from wallbsp.sim.fixed import FINESINE, point_to_angle2
+from wallbsp.doom import info
+from wallbsp.doom.fixed import FINESINE, point_to_angle2
 from wallbsp.sound import SoundSystem
 from wallbsp.sound import channels as ch
 from wallbsp.sound import dmx, mixer, music

@@ -14,7 +14,7 @@ from wallbsp.level.model import Level, Sector, Side, Start, Thing, Wall
 from wallbsp.render import render
 from wallbsp.render.textures import level_resources
 from wallbsp.render.sprites import rotations
-from wallbsp.sim.state import WorldState, static_state
+from wallbsp.scene.state import WorldState, static_state
 
 IMP, BARREL, STIMPACK, CANDELABRA = 3001, 2035, 2011, 35
 KIND_WALL, KIND_THING = 1, 4

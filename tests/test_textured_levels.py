@@ -12,7 +12,7 @@ from wallbsp import compile_level
 from toolscripts import tool_script
 from wallbsp.level.io import dumps_level, level_from_dict, load_level
 from wallbsp.assets.resources import ResourceSet
-from wallbsp.sim.thingtypes import thing_info
+from wallbsp.scene.thingtypes import thing_info
 
 ROOT = Path(__file__).resolve().parent.parent
 PAIRS = {"wallbsp/data/textured.json": "wallbsp/data/default.json",

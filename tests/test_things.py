@@ -1,14 +1,14 @@
-"""Things at run time: the skill's things, kept in the leaf that holds them (wallbsp.sim.things)."""
+"""Things at run time: the skill's things, kept in the leaf that holds them (wallbsp.scene.things)."""
 import numpy as np
 import pytest
 from game_levels import LENGTH, WIDTH, corridor, room
 
 from wallbsp import compile_level
 from wallbsp.level.model import Thing, ThingType
-from wallbsp.sim.things import (SPRITE_MARGIN, SPRITE_REACH, Things, level_things,
+from wallbsp.scene.things import (SPRITE_MARGIN, SPRITE_REACH, Things, level_things,
     locate_leaves, spawned_at)
-from wallbsp.sim.thingtypes import SOLID, SPECIAL
-from wallbsp.sim.state import WorldState
+from wallbsp.scene.thingtypes import SOLID, SPECIAL
+from wallbsp.scene.state import WorldState
 
 HANGING = 63          # twitching hanging victim (not solid): hangs from the ceiling, height 68
 STIMPACK, CLIP, BARREL = 2011, 2007, 2035

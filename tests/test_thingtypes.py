@@ -5,7 +5,7 @@ from pathlib import Path
 
 import pytest
 
-from wallbsp.sim.thingtypes import (DOOM_THING_TYPES, NOSECTOR, SOLID, SPAWNCEILING,
+from wallbsp.scene.thingtypes import (DOOM_THING_TYPES, NOSECTOR, SOLID, SPAWNCEILING,
     own_thing_info, thing_info)
 from wallbsp.level.wadmap import list_maps, map_lump_indices
 from wallbsp.assets.wad import open_wad

@@ -10,7 +10,7 @@ from wallbsp.game.playsim.structs import BT_ATTACK, BT_CHANGE, BT_USE, TicCmd
 from wallbsp.game.playstate import picture_code
 from wallbsp.game.ticcmds import ticcmd
 from wallbsp.game.world import World
-from wallbsp.sim import info
+from wallbsp.doom import info
 
 FREEDOOM = Path("/usr/share/games/doom")
 ORACLE = Path(__file__).parent / "oracle"

@@ -1,5 +1,5 @@
 """Extracts DOOM's object tables from Chocolate Doom's sources into
-``wallbsp/data/doom/info.json``, which ``wallbsp.sim.info`` loads.
+``wallbsp/data/doom/info.json``, which ``wallbsp.doom.info`` loads.
 
     python tools/extract_doom_info.py /work/src/choco/src/doom
 

@@ -1,5 +1,5 @@
 """Extracts DOOM's trigonometry tables (finetangent, finesine, tantoangle) from Chocolate
-Doom's ``tables.c`` into ``wallbsp/data/doom/tables.json``, which ``wallbsp.sim.fixed`` loads.
+Doom's ``tables.c`` into ``wallbsp/data/doom/tables.json``, which ``wallbsp.doom.fixed`` loads.
 
     python tools/extract_doom_tables.py /work/src/choco/src/tables.c
 """

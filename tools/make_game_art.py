@@ -7,7 +7,7 @@ fireball, the chaingunner, the rocket, the health bonus: wallbsp/envs/vizdoom*.p
 in, and the red door and lift textures.  The scenarios use these folders when Freedoom's
 IWAD is not installed (``wallbsp.envs.scenarios.our_resources``).
 
-Which frames exist is read from DOOM's state table (``wallbsp.sim.info``): each monster's
+Which frames exist is read from DOOM's state table (``wallbsp.doom.info``): each monster's
 chains (spawn, see, pain, melee, missile, death, gib) say what a frame shows — walking,
 aiming or firing (a full-bright frame is a muzzle flash), in pain, falling over, torn
 apart — so a frame the play can show is never missing.  Rotation 0 (``POSSA0``): one
@@ -26,7 +26,7 @@ from pathlib import Path
 import numpy as np
 
 from wallbsp.assets.catalogue import SPRITES
-from wallbsp.sim import info
+from wallbsp.doom import info
 
 import spritekit as sk
 import texturekit as kit

@@ -5,7 +5,7 @@ DMX lumps (``sounds/DSNAME.lmp``: format 3, 11,025 samples a second, unsigned 8 
 padding samples at each end) into wallbsp/data/game/sounds/, where ``wallbsp.sound`` finds
 them for a level naming that folder among its resources.
 
-One recipe per DOOM sound name (``sfx_*`` in ``wallbsp.sim.info``): the weapons, the
+One recipe per DOOM sound name (``sfx_*`` in ``wallbsp.doom.info``): the weapons, the
 monsters' sight, activity, pain and death, the player's pain and death, doors, lifts,
 switches, pickups, teleports, fireballs, barrels.  Deterministic: each sound's noise comes
 from its name.

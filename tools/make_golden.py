@@ -17,7 +17,7 @@ ROOT = Path(__file__).resolve().parent.parent
 sys.path.insert(0, str(ROOT))
 
 from wallbsp.camera import Camera, eye_camera
-from wallbsp.sim.state import static_state
+from wallbsp.scene.state import static_state
 
 # (name, level in levels/, x, y, angle, fov, (width, height)[, light]); the eye stands on
 # the floor of the sector at (x, y) (camera.eye_camera)

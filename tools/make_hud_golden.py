@@ -59,7 +59,7 @@ def fake_play(wad: str, light: int = 160, **fields):
     """What the Hud reads of a play: a ``Player`` with ``fields`` and a map object in a
     sector of light ``light``."""
     from wallbsp.game.playsim.structs import Player
-    from wallbsp.sim.rng import Random
+    from wallbsp.doom.rng import Random
     player = Player()
     player.health, player.maxammo = 100, [200, 50, 300, 50]
     player.weaponowned = [1, 1, 0, 0, 0, 0, 0, 0, 0]
@@ -74,7 +74,7 @@ def fake_play(wad: str, light: int = 160, **fields):
 def armed(play, weapon: int, flash: bool):
     """The player holding ``weapon`` at rest (``sx`` 1, ``sy`` at the top): its ready
     state, or with ``flash`` its firing state and its first flash frame."""
-    from wallbsp.sim import info
+    from wallbsp.doom import info
     player = play.players[0]
     player.readyweapon = weapon
     weapon_psp, flash_psp = player.psprites
@@ -88,7 +88,7 @@ def armed(play, weapon: int, flash: bool):
 def firing_state(weapon: int) -> int:
     """The weapon's state that fires (its ``A_Fire*`` action sets the flash), after its
     attack state."""
-    from wallbsp.sim import info
+    from wallbsp.doom import info
     state = info.WEAPONINFO[weapon].atkstate
     for _ in range(16):
         if (info.STATES[state].action or "").startswith("A_Fire"):

@@ -15,7 +15,7 @@ from wallbsp.camera import eye_camera
 from wallbsp.image import save_png
 from wallbsp.render import render
 from wallbsp.level.wadmap import load_wad_level
-from wallbsp.sim.state import WorldState
+from wallbsp.scene.state import WorldState
 
 ROOT = Path(__file__).resolve().parent.parent
 FREEDOOM = "/usr/share/games/doom/"

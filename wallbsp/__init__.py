@@ -2,7 +2,7 @@
 textured column renderer, DOOM's play simulation, a pygame walkthrough, headless tools and
 learning environments.
 
-The folders are the pipeline (README, "What is where"): ``level`` → ``bsp`` → ``sim`` →
+The folders are the pipeline (README, "What is where"): ``level`` → ``bsp`` → ``doom`` → ``scene`` →
 ``render`` and ``game`` → ``app``, with ``assets``, ``envs`` and ``generate`` beside them.
 The names below are loaded when first used, so importing the simulation does not load the
 renderer, and ``import wallbsp`` loads neither.
@@ -26,7 +26,7 @@ _PUBLIC = {
     "World": "wallbsp.game.world",
 }
 # modules reached by their earlier, flat names (``from wallbsp import levelio, queries``)
-_MODULES = {"levelio": "wallbsp.level.io", "queries": "wallbsp.sim.queries"}
+_MODULES = {"levelio": "wallbsp.level.io", "queries": "wallbsp.scene.queries"}
 
 __all__ = sorted([*_PUBLIC, "render"])
 __version__ = "0.1.0"

@@ -61,7 +61,7 @@ class LazyKernel:
         return getattr(self.dispatcher, name)
 
 
-# kernels live in sim/ and render/, which never import these folders (tests/test_layout.py)
+# kernels live in doom/, scene/ and render/, which never import these folders (tests/test_layout.py)
 _ABOVE_KERNELS = ("app", "envs", "game")
 
 

@@ -138,7 +138,7 @@ def start_view(tree):
     """The player start as `wallbsp render` places it (the sector's floor): no collision
     data is built, so the frame's memory is the renderer's alone."""
     from wallbsp.camera import eye_camera
-    from wallbsp.sim.state import state_of
+    from wallbsp.scene.state import state_of
     start = tree.level.start
     return eye_camera(state_of(tree), start.x, start.y, start.angle)
 

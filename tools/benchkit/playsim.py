@@ -12,7 +12,7 @@ compared with Chocolate Doom's in ``tests/oracle/``: a demo is in sync when ever
 matches to the last one; the trace's own time is reported apart.  A demo's rate is the median
 over the runs; the target (issue 20) is a median over the 8 demos of ≥ 2,000 tics/s.  Before
 timing, 35 tics of freedoom1's DEMO1 are played once and each compiled node walk
-(``wallbsp.sim.nodewalks``) called once, untimed: numba loads (or, after an edit of
+(``wallbsp.doom.nodewalks``) called once, untimed: numba loads (or, after an edit of
 ``wallbsp/sim`` or ``wallbsp/render``, compiles) them on their first call in a process.
 
 Chocolate Doom (when ``chocolate-doom`` is installed, not with --quick): ``-timedemo demoN``
@@ -145,7 +145,7 @@ def _warm_up() -> float:
     from wallbsp.game.playsim.demos import load_demo
     from wallbsp.game.playsim.play import play_class
     from wallbsp.game.playsim.trace import trace_line
-    from wallbsp.sim import nodewalks
+    from wallbsp.doom import nodewalks
     started = time.perf_counter()
     recording = load_demo(str(FREEDOOM[0]), "DEMO1")
     play = play_class()(str(FREEDOOM[0]))

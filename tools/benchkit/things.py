@@ -17,9 +17,9 @@ import numpy as np
 from wallbsp import compile_level
 from wallbsp.camera import eye_camera
 from wallbsp.render import overlay, render
-from wallbsp.sim.things import level_things
+from wallbsp.scene.things import level_things
 from wallbsp.level.wadmap import load_wad_level
-from wallbsp.sim.state import WorldState
+from wallbsp.scene.state import WorldState
 
 from .freedoom import FREEDOOM
 

@@ -1,5 +1,5 @@
 """Where the benchmarks stand a camera, and the scripted walk through a map: a ``Walker``
-(a player circle of the collision queries, ``wallbsp.sim.queries``), stood at a spot or
+(a player circle of the collision queries, ``wallbsp.scene.queries``), stood at a spot or
 stepped with ``walk_by``.  Not the game's player (DOOM's play simulation): the benchmarks'
 camera paths stay the same whatever the game does.
 
@@ -18,7 +18,7 @@ import numpy as np
 
 from wallbsp import Camera
 from wallbsp.camera import EYE_HEIGHT as EYE
-from wallbsp.sim.queries import move, standing_heights
+from wallbsp.scene.queries import move, standing_heights
 
 CEILING_GAP = 4.0                     # DOOM keeps the eye this far under the ceiling
 

@@ -115,7 +115,7 @@ def open_doors(world, lines) -> None:
 
 def wake_monsters(world) -> int:
     """Every monster chasing the player, as a noise that reached it would have it."""
-    from wallbsp.sim import info
+    from wallbsp.doom import info
     play = world.play
     target = play.players[0].mo
     woken = 0

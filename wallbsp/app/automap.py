@@ -132,7 +132,7 @@ ARROW = (((-7 / 8, 0), (1, 0)), ((1, 0), (0.5, 0.25)), ((1, 0), (0.5, -0.25)),
 
 
 def draw_things(surface, view, things) -> int:
-    """Every alive, drawn thing of ``things`` (``wallbsp.sim.things.Things``) as DOOM's
+    """Every alive, drawn thing of ``things`` (``wallbsp.scene.things.Things``) as DOOM's
     green thin triangle facing its angle; returns how many were drawn."""
     import pygame
     shown = np.flatnonzero(things.alive & things.drawn)

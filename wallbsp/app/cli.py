@@ -120,7 +120,7 @@ def camera_for(tree, args):
     """The camera the user asked for; anything left out comes from the level's start
     (the eye over the floor there: ``camera.eye_camera``'s one rule)."""
     from wallbsp.camera import Camera, eye_camera
-    from wallbsp.sim.state import state_of
+    from wallbsp.scene.state import state_of
     start = tree.level.start
     x, y = args.at if args.at else (start.x, start.y)
     angle = start.angle if args.angle is None else args.angle

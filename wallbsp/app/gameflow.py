@@ -35,7 +35,7 @@ from wallbsp.screen.intermission import IntermissionScreen
 from wallbsp.screen.menu import (EndGame, LoadGame, Menu, NewGame, Option, Quit, SaveGame,
                                  Sound)
 from wallbsp.screen.menudraw import MenuScreen, menu_art, string_width
-from wallbsp.sim import info
+from wallbsp.doom import info
 
 __all__ = ["GameFlow", "menu_key_name", "wad_trees"]
 

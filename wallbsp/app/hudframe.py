@@ -43,8 +43,8 @@ def raise_weapon(player) -> None:
     flash), as it is once P_BringUpWeapon's raise is over: a still frame of a level's
     start shows the weapon ready, not below the view."""
     from wallbsp.screen.weapon import WEAPONTOP
-    from wallbsp.sim import info
-    from wallbsp.sim.fixed import FRACUNIT
+    from wallbsp.doom import info
+    from wallbsp.doom.fixed import FRACUNIT
     weapon, flash = player.psprites
     weapon.state = info.WEAPONINFO[player.readyweapon].readystate
     weapon.sx, weapon.sy = FRACUNIT, WEAPONTOP

@@ -29,7 +29,7 @@ import numpy as np
 
 from wallbsp.game.playsim.structs import PST_DEAD
 from wallbsp.game.ticcmds import TicCmd, ticcmd
-from wallbsp.sim import info
+from wallbsp.doom import info
 
 __all__ = ["BUTTONS", "BINARY_BUTTONS", "DELTA_BUTTONS", "VARIABLES", "SLOT_WEAPONS",
            "command", "game_variables", "check_buttons", "check_variables", "action_space",

@@ -31,7 +31,7 @@ import numpy as np
 
 from wallbsp.files import LevelError
 from wallbsp.game.playsim.structs import MapThing
-from wallbsp.sim.queries import PLAYER_RADIUS, floor_z, move
+from wallbsp.scene.queries import PLAYER_RADIUS, floor_z, move
 
 __all__ = ["MAX_PLAYERS", "DEATHMATCH_MODES", "check_players", "check_deathmatch",
            "join_players", "added_starts"]

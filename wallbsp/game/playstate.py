@@ -32,7 +32,7 @@ import numpy as np
 
 from wallbsp.game.playthings import (ANGLE_DEGREES, FRAC, PlayThings, ThingsView,
                                      picture_code)
-from wallbsp.sim.state import WorldState
+from wallbsp.scene.state import WorldState
 
 __all__ = ["PlayState", "PlayThings", "ThingsView", "wall_lines", "picture_code",
            "FRAC", "ANGLE_DEGREES"]

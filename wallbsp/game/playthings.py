@@ -22,11 +22,11 @@ import operator
 
 import numpy as np
 
-from wallbsp.sim import info
-from wallbsp.sim.things import Things, leaf_sectors, locate_leaves, walk_arrays
-from wallbsp.sim.things import spawned_at
-from wallbsp.sim.thingrows import ROW, write_rows
-from wallbsp.sim.thingtypes import COUNTKILL, NOSECTOR, ThingInfo, thing_info
+from wallbsp.doom import info
+from wallbsp.scene.things import Things, leaf_sectors, locate_leaves, walk_arrays
+from wallbsp.scene.things import spawned_at
+from wallbsp.scene.thingrows import ROW, write_rows
+from wallbsp.scene.thingtypes import COUNTKILL, NOSECTOR, ThingInfo, thing_info
 
 __all__ = ["PlayThings", "ThingsView", "picture_code", "FRAC", "ANGLE_DEGREES"]
 

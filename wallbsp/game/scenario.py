@@ -41,7 +41,7 @@ from __future__ import annotations
 from pathlib import Path
 from typing import NamedTuple
 
-from wallbsp.sim import info
+from wallbsp.doom import info
 
 __all__ = ["Scenario", "Event", "Events", "install_events", "THING_TYPES", "thing_type",
            "SCENARIO_DIR"]

@@ -63,8 +63,8 @@ from wallbsp.game.playsim.levelbsp import LevelMapError
 from wallbsp.game.playsim.structs import TicCmd
 from wallbsp.game.playstate import PlayState, ThingsView
 from wallbsp.game.ticcmds import MAX_TURN, as_ticcmd, checked_number, ticcmd
-from wallbsp.sim import info
-from wallbsp.sim.fixed import ANG90
+from wallbsp.doom import info
+from wallbsp.doom.fixed import ANG90
 
 __all__ = ["World", "PlayerView", "MAX_TURN", "MESSAGE_LOG", "SKILLS", "TICRATE",
            "AMMO_NAMES", "WEAPON_NAMES", "KEY_NAMES", "POWER_NAMES"]

@@ -24,7 +24,7 @@ from __future__ import annotations
 import numpy as np
 
 from wallbsp.camera import Camera, Projection
-from wallbsp.sim.state import state_of
+from wallbsp.scene.state import state_of
 from wallbsp.render.entries import entries_of
 from wallbsp.render import fill
 from wallbsp.render.frame import Frame, save_ids

@@ -34,7 +34,7 @@ from typing import NamedTuple
 import numpy as np
 
 from wallbsp.jit import kernel, step_kernel
-from wallbsp.sim.thingtypes import COUNTKILL, SPAWNCEILING, SPECIAL
+from wallbsp.scene.thingtypes import COUNTKILL, SPAWNCEILING, SPECIAL
 from wallbsp.render.project import View
 from wallbsp.render.shading import FULL_BRIGHT, LIGHT_LEVELS, far_level, light_level
 

@@ -34,7 +34,7 @@ from wallbsp.screen.remap import paste, tint
 from wallbsp.screen.messages import MessageState, paint_text
 from wallbsp.screen.statusbar import ST_HEIGHT, ST_WIDTH, FaceState, bar_patches, paint_bar
 from wallbsp.screen.weapon import draw_psprites
-from wallbsp.sim import info
+from wallbsp.doom import info
 
 __all__ = ["Hud", "draw_hud", "view_size", "palette_index", "bar_height"]
 

@@ -23,7 +23,7 @@ import numpy as np
 
 from wallbsp.screen.menudraw import SCREENWIDTH, Canvas, menu_art, string_width
 from wallbsp.screen.remap import paste
-from wallbsp.sim.rng import RNDTABLE
+from wallbsp.doom.rng import RNDTABLE
 
 __all__ = ["IntermissionScreen", "paint_intermission", "background_name", "level_lump",
            "LNODES", "SP_STATSX", "SP_STATSY", "SP_TIMEX", "SP_TIMEY"]

@@ -13,8 +13,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from wallbsp.sim import info
-from wallbsp.sim.fixed import ANG45, ANG180, ANG_MAX, point_to_angle2
+from wallbsp.doom import info
+from wallbsp.doom.fixed import ANG45, ANG180, ANG_MAX, point_to_angle2
 
 __all__ = ["FaceState", "bar_patches", "paint_bar", "ST_X", "ST_Y", "ST_WIDTH", "ST_HEIGHT",
            "face_names", "bar_names"]

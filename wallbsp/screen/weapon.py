@@ -21,8 +21,8 @@ from __future__ import annotations
 import numpy as np
 
 from wallbsp.screen.remap import fuzz, paste
-from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACBITS, FRACUNIT, fixed_mul
+from wallbsp.doom import info
+from wallbsp.doom.fixed import FRACBITS, FRACUNIT, fixed_mul
 
 __all__ = ["draw_psprites", "psprite_columns", "sprite_level", "WEAPONTOP", "FF_FULLBRIGHT"]
 

@@ -17,8 +17,8 @@ division.  ``M_Random`` is drawn for the pitch variation exactly where DOOM draw
 the audibility test, before the channel search); pitch is then ignored, as vanilla v1.9 and
 Chocolate Doom (``snd_pitchshift`` 0) ignore it.  ``P_Random`` is never touched.
 """
-from wallbsp.sim import info
-from wallbsp.sim.fixed import (ANGLETOFINESHIFT, FINESINE, FRACBITS, FRACUNIT, c_abs, c_div,
+from wallbsp.doom import info
+from wallbsp.doom.fixed import (ANGLETOFINESHIFT, FINESINE, FRACBITS, FRACUNIT, c_abs, c_div,
                                fixed_mul, point_to_angle2, wrap32)
 
 S_CLIPPING_DIST = 1200 * FRACUNIT

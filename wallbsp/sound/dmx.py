@@ -14,7 +14,7 @@ from typing import NamedTuple
 
 import numpy as np
 
-from wallbsp.sim import info
+from wallbsp.doom import info
 
 HEADER = struct.Struct("<HHI")
 PADDING = 16

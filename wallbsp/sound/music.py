@@ -13,7 +13,7 @@ import io
 import os
 import struct
 
-from wallbsp.sim import info
+from wallbsp.doom import info
 
 # MUS controller numbers 0-14 as MIDI (0 is the program change)
 _CONTROLLERS = (0x00, 0x20, 0x01, 0x07, 0x0A, 0x0B, 0x5B, 0x5D, 0x40, 0x43,

@@ -22,7 +22,7 @@ as ``I_StartSound`` failing does in Chocolate Doom.
 import sys
 from typing import NamedTuple, Optional
 
-from wallbsp.sim import info
+from wallbsp.doom import info
 
 from . import dmx
 from .channels import Channels, NUM_CHANNELS

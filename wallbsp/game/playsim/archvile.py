@@ -5,11 +5,11 @@
 scratch globals (``corpsehit``, ``vileobj``, ``viletryx``, ``viletryy``) are set by
 ``init_monsters`` (``monsters.py``).
 """
-from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACUNIT, ANGLETOFINESHIFT, FINECOSINE, FINESINE, fixed_mul, \
+from wallbsp.doom import info
+from wallbsp.doom.fixed import FRACUNIT, ANGLETOFINESHIFT, FINECOSINE, FINESINE, fixed_mul, \
     wrap32
 from wallbsp.game.playsim.monsters import DI_NODIR, XSPEED, YSPEED
-from wallbsp.sim.info import MAPBLOCKSHIFT, MAXRADIUS
+from wallbsp.doom.info import MAPBLOCKSHIFT, MAXRADIUS
 
 
 class ArchVile:

@@ -7,13 +7,13 @@ homing missile, the mancubus' spreads, the lost soul's charge and the pain eleme
 ``A_Tracer``, ``A_SkelWhoosh``, ``A_SkelFist``, ``A_FatRaise``, ``A_FatAttack1..3``,
 ``A_SkullAttack``, ``A_PainShootSkull``, ``A_PainAttack``, ``A_PainDie``.
 """
-from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACUNIT, ANG90, ANG180, ANG270, ANGLETOFINESHIFT, \
+from wallbsp.doom import info
+from wallbsp.doom.fixed import FRACUNIT, ANG90, ANG180, ANG270, ANGLETOFINESHIFT, \
     FINECOSINE, FINESINE, c_div, fixed_mul, point_to_angle2, wrap32
 from wallbsp.game.playsim.structs import EXE_DOOM_1_2
 from wallbsp.game.playsim.monsters import mobj_thinkers
-from wallbsp.sim.info import MELEERANGE
-from wallbsp.sim.info import MISSILERANGE
+from wallbsp.doom.info import MELEERANGE
+from wallbsp.doom.info import MISSILERANGE
 
 TRACEANGLE = 0xC000000                        # the revenant missile's turn per adjustment
 FATSPREAD = ANG90 // 8

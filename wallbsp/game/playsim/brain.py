@@ -7,8 +7,8 @@ the monsters they turn into, and its death.
 A_BrainSpit's static ``easy``, as ``brainspit_easy``) are set by ``init_monsters``
 (``monsters.py``).
 """
-from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACUNIT, c_div, wrap32
+from wallbsp.doom import info
+from wallbsp.doom.fixed import FRACUNIT, c_div, wrap32
 from wallbsp.game.playsim.monsters import mobj_thinkers
 from wallbsp.game.playsim.structs import SK_EASY
 

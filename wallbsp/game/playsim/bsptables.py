@@ -13,9 +13,9 @@ composes without the other.
 """
 import numpy as np
 
-from wallbsp.sim import nodewalks
-from wallbsp.sim.fixed import FRACBITS, fixed_mul, wrap32
-from wallbsp.sim.info import ML_TWOSIDED
+from wallbsp.doom import nodewalks
+from wallbsp.doom.fixed import FRACBITS, fixed_mul, wrap32
+from wallbsp.doom.info import ML_TWOSIDED
 
 
 class BspTables:

@@ -5,8 +5,8 @@ Per-level state: ``init_ceilings()`` sets ``activeceilings``, vanilla's fixed ta
 table is full still moves, but is in no slot: it can never be stopped, and when it reaches
 its end it stays on the thinker list and keeps its sector's ``specialdata`` for good.
 """
-from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACUNIT
+from wallbsp.doom import info
+from wallbsp.doom.fixed import FRACUNIT
 
 from .spectypes import (CEILSPEED, CRUSHANDRAISE, CRUSHED, FASTCRUSHANDRAISE, LOWERANDCRUSH,
                         LOWERTOFLOOR, MAXCEILINGS, PASTDEST, RAISETOHIGHEST,

@@ -13,11 +13,11 @@ State (``init_collide``, set once: C never resets these globals between levels):
 overrun can store an address there, and p_floor.c's ``if (flag == true)`` is then false;
 callers should compare ``== True`` as the C code does.
 """
-from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACUNIT, wrap32
+from wallbsp.doom import info
+from wallbsp.doom.fixed import FRACUNIT, wrap32
 
 from .structs import EXE_DOOM_1_2
-from wallbsp.sim.info import MAPBLOCKSHIFT, MAXRADIUS, ML_BLOCKING, ML_BLOCKMONSTERS
+from wallbsp.doom.info import MAPBLOCKSHIFT, MAXRADIUS, ML_BLOCKING, ML_BLOCKMONSTERS
 
 BOXTOP, BOXBOTTOM, BOXLEFT, BOXRIGHT = range(4)
 MAXSPECIALCROSS = 20

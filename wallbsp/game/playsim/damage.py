@@ -5,8 +5,8 @@
 ``p_spawn_mobj``, ``p_set_mobj_state`` and ``p_drop_weapon`` through ``self``.
 """
 from wallbsp.game.playsim.structs import SK_BABY, PST_DEAD, EXE_DOOM_1_2, EXE_CHEX
-from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACUNIT, ANG180, ANGLETOFINESHIFT, FINESINE, FINECOSINE, \
+from wallbsp.doom import info
+from wallbsp.doom.fixed import FRACUNIT, ANG180, ANGLETOFINESHIFT, FINESINE, FINECOSINE, \
     c_div, fixed_mul, wrap32, point_to_angle2
 
 

@@ -5,7 +5,7 @@
 ``A_BossDeath`` (with ``CheckBossEnd``: which monster's death ends which map depends on the
 executable emulated, ``self.gameversion``, and on ``self.gamemode``).
 """
-from wallbsp.sim import info
+from wallbsp.doom import info
 from wallbsp.game.playsim.structs import Line, COMMERCIAL, EXE_ULTIMATE, MAXPLAYERS
 from wallbsp.game.playsim.monsters import mobj_thinkers
 from wallbsp.game.playsim.spectypes import LOWERFLOORTOLOWEST, RAISETOTEXTURE, VLD_OPEN, \

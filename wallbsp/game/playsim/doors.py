@@ -4,8 +4,8 @@ doors that special sectors start with.
 
 No per-level state of its own.
 """
-from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACUNIT
+from wallbsp.doom import info
+from wallbsp.doom.fixed import FRACUNIT
 
 from .spectypes import (CRUSHED, PASTDEST, TICRATE, VDOORSPEED, VDOORWAIT, VLD_BLAZECLOSE,
                         VLD_BLAZEOPEN, VLD_BLAZERAISE, VLD_CLOSE, VLD_CLOSE30THENOPEN,

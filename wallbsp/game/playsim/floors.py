@@ -7,9 +7,9 @@ whose height vanilla uses too).
 
 No per-level state of its own.
 """
-from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACUNIT, INT_MAX, wrap32
-from wallbsp.sim.info import ML_TWOSIDED
+from wallbsp.doom import info
+from wallbsp.doom.fixed import FRACUNIT, INT_MAX, wrap32
+from wallbsp.doom.info import ML_TWOSIDED
 
 from .spectypes import (BUILD8, CRUSHED, DONUTRAISE, FLOORSPEED, LOWERANDCHANGE, LOWERFLOOR,
                         LOWERFLOORTOLOWEST, OK, PASTDEST, RAISEFLOOR, RAISEFLOOR24,

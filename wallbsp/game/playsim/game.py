@@ -15,9 +15,9 @@ Sounds: ``s_start_sound``/``s_stop_sound`` count calls and forward them to ``sel
 """
 import os
 
-from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACUNIT
-from wallbsp.sim.rng import Random
+from wallbsp.doom import info
+from wallbsp.doom.fixed import FRACUNIT
+from wallbsp.doom.rng import Random
 
 from .demos import DemoError, wad_entries
 from .structs import (BT_SPECIAL, COMMERCIAL, EXE_DOOM_1_9, EXE_FINAL, EXE_ULTIMATE, MAXPLAYERS,

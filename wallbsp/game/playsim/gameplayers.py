@@ -7,8 +7,8 @@ teleport fog) or, in deathmatch, at a random deathmatch start (``G_DeathMatchSpa
 State: ``bodyque``/``bodyqueslot`` (``Game.g_init`` makes them; ``P_SetupLevel`` resets
 the slot).
 """
-from wallbsp.sim import info
-from wallbsp.sim.fixed import (FINECOSINE, FINESINE, FINETANGENT, FRACBITS, TANTOANGLE,
+from wallbsp.doom import info
+from wallbsp.doom.fixed import (FINECOSINE, FINESINE, FINETANGENT, FRACBITS, TANTOANGLE,
                                wrap32)
 
 from .structs import NUMAMMO, PST_LIVE, Player

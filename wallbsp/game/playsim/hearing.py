@@ -2,7 +2,7 @@
 two-sided lines, and at most one sound-blocking line, waking the monsters there
 (``P_NoiseAlert``, ``P_RecursiveSound``).  ``Hearing`` is the mixin for ``Play``."""
 
-from wallbsp.sim.info import ML_SOUNDBLOCK, ML_TWOSIDED
+from wallbsp.doom.info import ML_SOUNDBLOCK, ML_TWOSIDED
 
 
 class Hearing:

@@ -7,10 +7,10 @@ C's globals of this part are attributes of ``self`` with C's names (``linetarget
 ``bombspot``, ``bombdamage``); their class defaults are C's zero initialisation: like C's,
 they keep their values from one level to the next.
 """
-from wallbsp.sim import info
-from wallbsp.sim.fixed import c_div, FRACUNIT, ANGLETOFINESHIFT, FINESINE, FINECOSINE, \
+from wallbsp.doom import info
+from wallbsp.doom.fixed import c_div, FRACUNIT, ANGLETOFINESHIFT, FINESINE, FINECOSINE, \
     fixed_mul, fixed_div, wrap32
-from wallbsp.sim.info import MAPBLOCKSHIFT, MAXRADIUS, ML_TWOSIDED
+from wallbsp.doom.info import MAPBLOCKSHIFT, MAXRADIUS, ML_TWOSIDED
 
 PT_ADDLINES, PT_ADDTHINGS, PT_EARLYOUT = 1, 2, 4
 USERANGE = 64 * FRACUNIT

@@ -8,8 +8,8 @@ decides who hears a pickup), and calls ``p_remove_mobj`` and ``s_start_sound`` t
 ``self``.
 """
 from wallbsp.game.playsim.structs import SK_BABY, SK_NIGHTMARE, NUMAMMO, COMMERCIAL, EXE_DOOM_1_2
-from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACUNIT
+from wallbsp.doom import info
+from wallbsp.doom.fixed import FRACUNIT
 
 BONUSADD = 6
 

@@ -8,7 +8,7 @@ is only what decides the timing.  The tallies' sounds (S_StartSound with no orig
 
 State: ``init_intermission()`` (game-wide; called by ``Game.g_init``).
 """
-from wallbsp.sim import info
+from wallbsp.doom import info
 
 from .game import GA_NOTHING, GA_WORLDDONE, GS_FINALE
 from .structs import BT_ATTACK, BT_USE, COMMERCIAL, MAXPLAYERS

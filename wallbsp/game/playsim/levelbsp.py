@@ -32,8 +32,8 @@ DOOM's limits hold: fewer than 32768 nodes and subsectors (``NF_SUBSECTOR``), a
 """
 import math
 
-from wallbsp.sim.fixed import FRACBITS, FRACUNIT
-from wallbsp.sim.info import ML_TWOSIDED, NF_SUBSECTOR
+from wallbsp.doom.fixed import FRACBITS, FRACUNIT
+from wallbsp.doom.info import ML_TWOSIDED, NF_SUBSECTOR
 
 from .structs import Node, Seg, Subsector, Vertex
 

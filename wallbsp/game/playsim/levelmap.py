@@ -44,9 +44,9 @@ to 45°).  If it holds one, the things alone place the player, as in DOOM.
 """
 from __future__ import annotations
 
-from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACBITS, FRACUNIT
-from wallbsp.sim.info import ML_BLOCKING, ML_DONTPEGBOTTOM, ML_DONTPEGTOP, ML_TWOSIDED, NF_SUBSECTOR
+from wallbsp.doom import info
+from wallbsp.doom.fixed import FRACBITS, FRACUNIT
+from wallbsp.doom.info import ML_BLOCKING, ML_DONTPEGBOTTOM, ML_DONTPEGTOP, ML_TWOSIDED, NF_SUBSECTOR
 
 from .levelbsp import LevelMapError
 from .mapload import set_line_ends

@@ -3,7 +3,7 @@
 
 No per-level state of its own.
 """
-from wallbsp.sim import info
+from wallbsp.doom import info
 
 from .spectypes import (BLAZEDWUS, BUILD8, CRUSHANDRAISE, DOWNWAITUPSTAY, FASTCRUSHANDRAISE,
                         LOWERANDCHANGE, LOWERANDCRUSH, LOWERFLOOR, LOWERFLOORTOLOWEST,

@@ -19,13 +19,13 @@ R_FlatNumForName compare names case-insensitively).
 """
 import struct
 
-from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACBITS, MAXINT, MININT, c_div, fixed_div, wrap32
+from wallbsp.doom import info
+from wallbsp.doom.fixed import FRACBITS, MAXINT, MININT, c_div, fixed_div, wrap32
 
 from .bsptables import BspTables
 from .structs import (COMMERCIAL, ST_HORIZONTAL, ST_NEGATIVE, ST_POSITIVE, ST_VERTICAL, Line,
                       MapThing, Node, Sector, Seg, Side, Subsector, Vertex)
-from wallbsp.sim.info import MAPBLOCKSHIFT, MAXRADIUS
+from wallbsp.doom.info import MAPBLOCKSHIFT, MAXRADIUS
 
 BOXTOP, BOXBOTTOM, BOXLEFT, BOXRIGHT = range(4)
 MAXPLAYERS = 4

@@ -6,8 +6,8 @@ blockmap iterators.  The path traversal, its other half, is in ``pathtraverse.py
 State (``init_maputil``, set once: C never resets these globals between levels):
 ``opentop``, ``openbottom``, ``openrange``, ``lowfloor`` (P_LineOpening's results).
 """
-from wallbsp.sim.fixed import FRACBITS, aprox_distance, fixed_div, fixed_mul, wrap32
-from wallbsp.sim.info import MAPBLOCKSHIFT
+from wallbsp.doom.fixed import FRACBITS, aprox_distance, fixed_div, fixed_mul, wrap32
+from wallbsp.doom.info import MAPBLOCKSHIFT
 
 
 BOXTOP, BOXBOTTOM, BOXLEFT, BOXRIGHT = range(4)

@@ -10,9 +10,9 @@ from wallbsp.game.playsim import cname
 from wallbsp.game.playsim.structs import EXE_ULTIMATE
 from wallbsp.game.playsim.mobjspawn import (
     MobjSpawn, FRACUNIT, VIEWHEIGHT, ANG45, MTF_AMBUSH, ONFLOORZ, ONCEILINGZ)
-from wallbsp.sim import info
-from wallbsp.sim.fixed import c_div, fixed_mul, aprox_distance, wrap32
-from wallbsp.sim.info import FLOATSPEED, GRAVITY, MAXMOVE
+from wallbsp.doom import info
+from wallbsp.doom.fixed import c_div, fixed_mul, aprox_distance, wrap32
+from wallbsp.doom.info import FLOATSPEED, GRAVITY, MAXMOVE
 
 STOPSPEED = 0x1000
 FRICTION = 0xE800

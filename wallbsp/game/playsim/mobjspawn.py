@@ -4,10 +4,10 @@ players, puffs, blood, missiles) and deathmatch's item respawning.  ``Mobjs``
 """
 from wallbsp.game.playsim.structs import SK_BABY, SK_NIGHTMARE, Mobj, MapThing, MAXPLAYERS, NUMCARDS, PST_LIVE, \
     PST_REBORN
-from wallbsp.sim import info
-from wallbsp.sim.fixed import c_div, FRACUNIT, ANG45, ANGLETOFINESHIFT, FINESINE, FINECOSINE, \
+from wallbsp.doom import info
+from wallbsp.doom.fixed import c_div, FRACUNIT, ANG45, ANGLETOFINESHIFT, FINESINE, FINECOSINE, \
     fixed_mul, point_to_angle2, aprox_distance, wrap32
-from wallbsp.sim.info import MELEERANGE
+from wallbsp.doom.info import MELEERANGE
 
 ONFLOORZ = info.ONFLOORZ        # INT_MIN: spawn on the floor
 ONCEILINGZ = info.ONCEILINGZ    # INT_MAX: spawn hanging from the ceiling

@@ -13,10 +13,10 @@ program starts; every one but A_BrainSpit's static ``easy`` is written before it
 a level, so resetting them is harmless, and ``easy`` (``brainspit_easy``) is kept across
 levels as C keeps it.
 """
-from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACBITS, FRACUNIT, ANG90, ANG270, point_to_angle2, wrap32
+from wallbsp.doom import info
+from wallbsp.doom.fixed import FRACBITS, FRACUNIT, ANG90, ANG270, point_to_angle2, wrap32
 from wallbsp.game.playsim.structs import SK_NIGHTMARE, EXE_DOOM_1_2
-from wallbsp.sim.info import FLOATSPEED, MELEERANGE
+from wallbsp.doom.info import FLOATSPEED, MELEERANGE
 
 # dirtype_t
 DI_EAST, DI_NORTHEAST, DI_NORTH, DI_NORTHWEST, DI_WEST, DI_SOUTHWEST, DI_SOUTH, \

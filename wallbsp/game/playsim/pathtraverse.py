@@ -15,10 +15,10 @@ State (``init_path_traverse``, set once: C never resets these globals between le
 ``trace`` (the divline from the trace's start to its end), ``intercepts`` (the list
 P_PathTraverse fills), ``earlyout``.
 """
-from wallbsp.sim import blockwalk
-from wallbsp.sim.blockwalk import MAXSTEPS
-from wallbsp.sim.fixed import FRACBITS, FRACUNIT, c_abs, fixed_div, fixed_mul, wrap32
-from wallbsp.sim.info import MAPBLOCKSHIFT
+from wallbsp.doom import blockwalk
+from wallbsp.doom.blockwalk import MAXSTEPS
+from wallbsp.doom.fixed import FRACBITS, FRACUNIT, c_abs, fixed_div, fixed_mul, wrap32
+from wallbsp.doom.info import MAPBLOCKSHIFT
 
 MAPBLOCKSIZE = 128 * FRACUNIT
 MAPBTOFRAC = MAPBLOCKSHIFT - FRACBITS

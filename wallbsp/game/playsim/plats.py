@@ -4,12 +4,12 @@ Per-level state: ``init_plats()`` sets ``activeplats``, vanilla's fixed table of
 (30) slots (``P_SpawnSpecials`` empties it again); a 31st platform is a fatal error in
 vanilla, so it raises here.
 """
-from wallbsp.sim import info
+from wallbsp.doom import info
 
 from .spectypes import (BLAZEDWUS, CRUSHED, DOWN, DOWNWAITUPSTAY, IN_STASIS, MAXPLATS,
                         PASTDEST, PERPETUALRAISE, PLATSPEED, PLATWAIT, RAISEANDCHANGE,
                         RAISETONEARESTANDCHANGE, TICRATE, UP, WAITING, plat_t)
-from wallbsp.sim.fixed import FRACUNIT
+from wallbsp.doom.fixed import FRACUNIT
 
 
 class Plats:

@@ -5,8 +5,8 @@ C's global ``onground`` is ``self.onground`` (a class default until first set).
 """
 from wallbsp.game.playsim.structs import PST_LIVE, PST_DEAD, PST_REBORN, BT_USE, \
     BT_SPECIAL, BT_CHANGE, BT_WEAPONMASK, BT_WEAPONSHIFT, COMMERCIAL, SHAREWARE
-from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACUNIT, ANG90, ANG180, ANGLETOFINESHIFT, FINEANGLES, \
+from wallbsp.doom import info
+from wallbsp.doom.fixed import FRACUNIT, ANG90, ANG180, ANGLETOFINESHIFT, FINEANGLES, \
     FINEMASK, FINESINE, FINECOSINE, fixed_mul, wrap32, point_to_angle2
 
 MAXBOB = 0x100000               # 16 pixels of bob

@@ -6,7 +6,7 @@ tests' and tools/check_savegame.py's proof that a load is exact).
 import base64
 import types
 
-from wallbsp.sim import info
+from wallbsp.doom import info
 
 from .savestate import (CACHES, STATIC, UNSET_MARK, References, SaveError, Unset, derived_names,
                         dynamic_fields, map_tables, resolve_class, saved_fields, saved_value,

@@ -34,7 +34,7 @@ import base64
 import importlib
 import types
 
-from wallbsp.sim import info
+from wallbsp.doom import info
 
 from .structs import (DegenMobj, Line, Node, Player, Sector, Seg, Side, Subsector,
                       Thinker, Vertex)
@@ -54,7 +54,7 @@ SECTOR_FIXED = frozenset(("id", "blockbox", "soundorg", "linecount", "lines"))
 LINE_FIXED = frozenset(("id", "v1", "v2", "dx", "dy", "sidenum", "bbox", "slopetype",
                         "frontsector", "backsector"))
 SIDE_FIXED = frozenset(("id", "sector"))
-CLASS_PREFIXES = ("wallbsp.game.playsim.", "wallbsp.sim.")
+CLASS_PREFIXES = ("wallbsp.game.playsim.", "wallbsp.doom.", "wallbsp.scene.")
 _ATOMS = frozenset((int, bool, str, float, type(None), bytes, types.FunctionType))
 UNSET_MARK = {"u": 0}
 

@@ -13,8 +13,8 @@ State (``init_sight``, set once: C never resets these globals between levels):
 ``sightzstart``, ``topslope``, ``bottomslope``, ``strace`` (the divline from looker to
 target), ``t2x``, ``t2y``, ``sightcounts``.
 """
-from wallbsp.sim.fixed import FRACBITS, fixed_div, fixed_mul, wrap32
-from wallbsp.sim import nodewalks
+from wallbsp.doom.fixed import FRACBITS, fixed_div, fixed_mul, wrap32
+from wallbsp.doom import nodewalks
 
 from .bsptables import BspTables
 from .structs import EXE_DOOM_1_2

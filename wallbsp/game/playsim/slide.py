@@ -7,10 +7,10 @@ State (``init_slide``, set once: C never resets these globals between levels):
 ``bestslidefrac``, ``secondslidefrac``, ``bestslideline``, ``secondslideline``,
 ``slidemo``, ``tmxmove``, ``tmymove``.
 """
-from wallbsp.sim.fixed import ANG180, ANGLETOFINESHIFT, FINECOSINE, FINESINE, FRACUNIT, \
+from wallbsp.doom.fixed import ANG180, ANGLETOFINESHIFT, FINECOSINE, FINESINE, FRACUNIT, \
     fixed_mul, point_to_angle2
 
-from wallbsp.sim.info import ML_TWOSIDED
+from wallbsp.doom.info import ML_TWOSIDED
 
 from .structs import ST_HORIZONTAL, ST_VERTICAL
 PT_ADDLINES = 1

@@ -10,9 +10,9 @@ Per-level state: ``init_specials()`` sets ``levelTimer``, ``levelTimeCount``,
 Texture and flat animation (``P_InitPicAnims`` and the first half of ``P_UpdateSpecials``)
 only changes what is drawn, so it is not here.
 """
-from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACUNIT, INT_MAX, wrap32
-from wallbsp.sim.info import ML_TWOSIDED
+from wallbsp.doom import info
+from wallbsp.doom.fixed import FRACUNIT, INT_MAX, wrap32
+from wallbsp.doom.info import ML_TWOSIDED
 
 from .spectypes import (CF_GODMODE, DONUTRAISE, FASTDARK, FLOORSPEED, LOWERFLOOR, MAXBUTTONS,
                         MAXCEILINGS, MAXPLATS, SLOWDARK, TICRATE, TOP, MIDDLE, BOTTOM,

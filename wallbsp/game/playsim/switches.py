@@ -6,8 +6,8 @@ Per-level state: ``init_switches()`` sets ``buttonlist`` (``MAXBUTTONS`` free
 ``button_t``; ``P_SpawnSpecials`` empties it again) and forgets the switch list, which
 ``P_InitSwitchList`` makes from ``self.gamemode`` (called at game start, or on first use).
 """
-from wallbsp.sim import info
-from wallbsp.sim.info import ML_SECRET
+from wallbsp.doom import info
+from wallbsp.doom.info import ML_SECRET
 
 from .spectypes import (BLAZEDWUS, BOTTOM, BUILD8, BUTTONTIME, CRUSHANDRAISE, DOWNWAITUPSTAY,
                         LOWERFLOOR, LOWERFLOORTOLOWEST, LOWERTOFLOOR, MAXBUTTONS, MIDDLE,

@@ -3,8 +3,8 @@ sector tagged as the line.
 
 No per-level state of its own.
 """
-from wallbsp.sim import info
-from wallbsp.sim.fixed import ANGLETOFINESHIFT, FINECOSINE, FINESINE, wrap32
+from wallbsp.doom import info
+from wallbsp.doom.fixed import ANGLETOFINESHIFT, FINECOSINE, FINESINE, wrap32
 
 from .structs import EXE_FINAL
 

@@ -22,7 +22,7 @@ are not collected.  ``take_touched`` hands the list to one watcher, or None when
 vouch for it (a new level or a restored game since that watcher's last take, another
 watcher took it, or it grew past ``TOUCHED_LIMIT`` with nobody taking it).
 """
-from wallbsp.sim import info
+from wallbsp.doom import info
 
 from .structs import Thinker
 

@@ -18,7 +18,7 @@ import sys
 
 import numpy as np
 
-from wallbsp.sim import fnv
+from wallbsp.doom import fnv
 
 from .demos import DemoError, load_demo
 from .mapload import MapLoadError

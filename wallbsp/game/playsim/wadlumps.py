@@ -5,7 +5,7 @@ a mixin of ``Play``; ``Game.g_init`` sets the directory it reads (``wad_dir``,
 ``wad_entries``, ``wad_entry_files``, ``wad_files``)."""
 import struct
 
-from wallbsp.sim.fixed import FRACBITS
+from wallbsp.doom.fixed import FRACBITS
 
 from .demos import wad_image
 

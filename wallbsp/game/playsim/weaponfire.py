@@ -4,8 +4,8 @@
 lowering are in ``weapons.py``, whose ammunition rules these share."""
 from wallbsp.game.playsim.weapons import (AIMRANGE, DEH_BFG_CELLS_PER_SHOT, M32, PS_FLASH,
                                           SAW_SNAP, SAW_TURN, ammo_at, decrease_ammo)
-from wallbsp.sim import info
-from wallbsp.sim.fixed import ANG90, ANG180, ANGLETOFINESHIFT, point_to_angle2, wrap32
+from wallbsp.doom import info
+from wallbsp.doom.fixed import ANG90, ANG180, ANGLETOFINESHIFT, point_to_angle2, wrap32
 
 
 class WeaponFire:

@@ -15,8 +15,8 @@ Method names are exactly ``cname`` of the C names, however they read (``A_BFGsou
 from wallbsp.game.playsim import cname
 from wallbsp.game.playsim.structs import BT_ATTACK, NUMAMMO, NUMPSPRITES, PST_DEAD, \
     SHAREWARE, COMMERCIAL
-from wallbsp.sim import info
-from wallbsp.sim.fixed import FRACBITS, FRACUNIT, ANG90, FINEANGLES, FINEMASK, FINESINE, \
+from wallbsp.doom import info
+from wallbsp.doom.fixed import FRACBITS, FRACUNIT, ANG90, FINEANGLES, FINEMASK, FINESINE, \
     FINECOSINE, fixed_mul, wrap32
 
 # p_pspr.h: which overlay

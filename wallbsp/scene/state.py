@@ -14,14 +14,14 @@ import weakref
 
 import numpy as np
 
-from wallbsp.sim.things import level_things
+from wallbsp.scene.things import level_things
 
 __all__ = ["WorldState", "static_state", "state_of"]
 
 
 class WorldState:
     """Current sector floors, ceilings and light of one compiled tree, and its things
-    (``things``: the level's things at ``skill``, ``wallbsp.sim.things``)."""
+    (``things``: the level's things at ``skill``, ``wallbsp.scene.things``)."""
 
     def __init__(self, tree, skill: int = 3):
         sectors = tree.level.sectors
@@ -41,7 +41,7 @@ class WorldState:
 
     @property
     def things(self):
-        """The level's things at ``skill`` (``wallbsp.sim.things.Things``), made on first use."""
+        """The level's things at ``skill`` (``wallbsp.scene.things.Things``), made on first use."""
         if self._things is None:
             self._things = level_things(self.tree, self.skill)
         return self._things

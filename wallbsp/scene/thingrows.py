@@ -16,7 +16,7 @@ import numpy as np
 
 from wallbsp.geometry import SIDE_ERROR, SIDE_UNDERFLOW
 from wallbsp.jit import kernel
-from wallbsp.sim.leafwalk import walk_down
+from wallbsp.scene.leafwalk import walk_down
 
 __all__ = ["write_rows", "ROW"]
 

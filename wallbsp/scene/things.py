@@ -35,11 +35,11 @@ import weakref
 
 import numpy as np
 
-from wallbsp.sim.blockmap import Blockmap
+from wallbsp.scene.blockmap import Blockmap
 from wallbsp.geometry import exact_side
-from wallbsp.sim.collision import box_sides
-from wallbsp.sim import leafwalk
-from wallbsp.sim.thingtypes import (DEATHMATCH_START, PLAYER_STARTS, SOLID, SPAWNCEILING,
+from wallbsp.scene.collision import box_sides
+from wallbsp.scene import leafwalk
+from wallbsp.scene.thingtypes import (DEATHMATCH_START, PLAYER_STARTS, SOLID, SPAWNCEILING,
     thing_info)
 
 __all__ = ["Things", "level_things", "spawned_at", "locate_leaves", "leaf_sectors",

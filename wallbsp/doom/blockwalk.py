@@ -27,9 +27,9 @@ from __future__ import annotations
 import numpy as np
 
 from wallbsp.jit import kernel, step_kernel
-from wallbsp.sim.fixed import FRACBITS, FRACUNIT
-from wallbsp.sim.info import MAPBLOCKSHIFT
-from wallbsp.sim.nodewalks import fixed_div, fixed_mul, intercept_frac, wrap32
+from wallbsp.doom.fixed import FRACBITS, FRACUNIT
+from wallbsp.doom.info import MAPBLOCKSHIFT
+from wallbsp.doom.nodewalks import fixed_div, fixed_mul, intercept_frac, wrap32
 
 MAPBTOFRAC = MAPBLOCKSHIFT - FRACBITS
 MAXSTEPS = 64               # P_PathTraverse's guard against a round-off skipping the end

@@ -69,11 +69,11 @@ from typing import NamedTuple
 import numpy as np
 
 from wallbsp.geometry import direction
-from wallbsp.sim.querytables import Tables
-from wallbsp.sim import collision as segments
-from wallbsp.sim.collision import (LOCATE, MEET, MOVE, STAND, UNSURE, meet, opening,
+from wallbsp.scene.querytables import Tables
+from wallbsp.scene import collision as segments
+from wallbsp.scene.collision import (LOCATE, MEET, MOVE, STAND, UNSURE, meet, opening,
     segs_near as search, wall_side)
-from wallbsp.sim.state import state_of
+from wallbsp.scene.state import state_of
 
 __all__ = ["PLAYER_RADIUS", "MAX_STEP", "PLAYER_HEIGHT", "MAX_COORDINATE", "move",
            "floor_z", "ceiling_z", "standing_heights", "line_of_sight", "walls_crossed",
