@@ -9,9 +9,9 @@ import pytest
 PACKAGE = Path(__file__).resolve().parent.parent / "wallbsp"
 
 # folder → its place in the pipeline; a module imports only from lower places or its own folder
-LAYERS = {"core": 0, "assets": 1, "level": 2, "bsp": 3, "generate": 3, "doom": 4,
-          "scene": 5, "render": 6, "game": 6, "sound": 6, "screen": 7, "app": 8,
-          "envs": 9}
+LAYERS = {"core": 0, "assets": 1, "level": 2, "bsp": 3, "generate": 3, "doom": 4, "nodes": 4,
+          "scene": 5, "content": 5, "render": 6, "game": 6, "sound": 6, "screen": 7, "edit": 7,
+          "app": 8, "envs": 9, "editor": 9}
 ENTRY_POINTS = {"wallbsp", "wallbsp.__main__"}     # the lazy API and `python -m wallbsp`
 
 

@@ -62,7 +62,7 @@ class LazyKernel:
 
 
 # kernels live in doom/, scene/ and render/, which never import these folders (tests/test_layout.py)
-_ABOVE_KERNELS = ("app", "envs", "game")
+_ABOVE_KERNELS = ("app", "envs", "game", "content", "edit", "editor")
 
 
 def source_digest(root: Path | None = None) -> str:
