@@ -71,6 +71,8 @@ def press(walk, key):
     """A key (or ``MOUSE_FIRE``) went down: the overlay's, else held, tapped, a command."""
     if walk.overlay is not None and walk.overlay.key(walk, key):
         return
+    if isinstance(key, int) and (48 <= key <= 57 or 97 <= key <= 122):
+        walk.cheats.key(walk, chr(key))        # ST_Responder sees the key; the game too
     keys = bindings(walk)
     walk.held.add(key)
     walk.use_tapped |= key in keys.use
@@ -98,8 +100,9 @@ def _toggle(name):
 
 
 def _toggle_things(walk):
-    walk.show_things = not walk.show_things
-    say(walk, f"things on the map: {'on' if walk.show_things else 'off'}")
+    """The automap's things on or off: IDDT's second step, without typing it."""
+    walk.map_cheat = 0 if walk.map_cheat >= 2 else 2
+    say(walk, f"things on the map: {'on' if walk.map_cheat else 'off'}")
 
 
 def _toggle_textures(walk):
