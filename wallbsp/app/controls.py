@@ -71,6 +71,10 @@ def press(walk, key):
     """A key (or ``MOUSE_FIRE``) went down: the overlay's, else held, tapped, a command."""
     if walk.overlay is not None and walk.overlay.key(walk, key):
         return
+    if walk.attract is not None and walk.overlay is not None:
+        import pygame                          # the attract loop: any key opens the menu
+        walk.overlay.key(walk, pygame.K_ESCAPE)
+        return
     if isinstance(key, int) and (48 <= key <= 57 or 97 <= key <= 122):
         walk.cheats.key(walk, chr(key))        # ST_Responder sees the key; the game too
     keys = bindings(walk)

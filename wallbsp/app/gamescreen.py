@@ -104,6 +104,8 @@ def compose(walk, blend=1.0) -> np.ndarray:
     walk.hud.draw(walk.picture, walk.world.play)
     if walk.paused:
         draw_pause(walk.picture, walk.hud.art or art_for(walk.world.play), vh)
+    if getattr(walk, "attract", None) is not None:
+        walk.attract.draw(walk.picture)            # a title or credit page over it all
     if walk.overlay is not None and hasattr(walk.overlay, "draw"):
         walk.overlay.draw(walk, walk.picture)
     return walk.picture

@@ -16,7 +16,7 @@ import os
 from wallbsp.app.cliargs import UsageError
 from wallbsp.app.outputs import check_outputs, write_outputs
 
-__all__ = ["walk_command", "is_lmp", "demo_world"]
+__all__ = ["walk_command", "is_lmp", "demo_world", "first_map_name"]
 
 
 def is_lmp(path) -> bool:
@@ -102,14 +102,17 @@ def _wad_of(spec):
     return parsed[0] if parsed else None
 
 
-def _first_map_spec(wad: str) -> str:
-    """``WAD:E1M1`` (``MAP01`` for Doom II), the map a new game starts on."""
+def first_map_name(wad: str) -> str:
+    """``E1M1`` (``MAP01`` for Doom II), the map a new game starts on."""
     from wallbsp.level.wadmap import list_maps
     maps = list_maps(wad)
     if not maps:
         raise UsageError(f"{wad}: the WAD has no maps")
-    first = "E1M1" if "E1M1" in maps else ("MAP01" if "MAP01" in maps else maps[0])
-    return f"{wad}:{first}"
+    return "E1M1" if "E1M1" in maps else ("MAP01" if "MAP01" in maps else maps[0])
+
+
+def _first_map_spec(wad: str) -> str:
+    return f"{wad}:{first_map_name(wad)}"
 
 
 def _record_setup():

@@ -112,6 +112,7 @@ class Walkthrough:
     aspect: float = 4 / 3            # the picture's shape in the window; None: square pixels
     recorder: object = None          # a vanilla demo being recorded (game.lmprecord)
     playback: object = None          # the tic commands of a demo being played, an iterator
+    attract: object = None           # DOOM's attract loop while it runs (app.attract)
     map_zoom: float = 1.0            # the automap: 1 the whole level, closer follows
     seen: tuple = None               # (world state, automap.SeenLines): the walls seen
     textures: bool = True            # textured view (a level with resources), else flat
@@ -187,7 +188,7 @@ def run_walkthrough(tree, *, size=(320, 200), window=None, frames=None, turn=0.0
         walk.help_until = time.perf_counter() + HELP_SECONDS
     open_display(walk)
     try:
-        if frames is None and walk.playback is None:
+        if frames is None and walk.playback is None and walk.attract is None:
             toggle_mouse_grab(walk)    # DOOM's: the mouse turns from the start (M frees it)
         open_sound(walk, sound, music)
         times = run_frames(walk, frames, turn, max_fps)
@@ -290,6 +291,9 @@ def run_tics(walk, dt):
     tics = int(walk.pending * TICRATE + 1e-9)     # a hair: k/35 s is k tics despite rounding
     walk.pending -= tics / TICRATE
     for _ in range(tics):
+        if walk.attract is not None and walk.attract.page is not None:
+            walk.attract.tic(walk)             # a title or credit page: its tics
+            continue
         cmd = next_command(walk)
         if cmd is None:
             return
@@ -303,7 +307,11 @@ def next_command(walk):
         return tic_inputs(walk)
     cmd = next(walk.playback, None)
     if cmd is None:
-        walk.playback, walk.running = None, False
+        walk.playback = None
+        if walk.attract is not None:
+            walk.attract.advance(walk)         # the attract loop goes on
+        else:
+            walk.running = False
     return cmd
 
 
@@ -366,6 +374,7 @@ def start_level(walk, tree, text, world=None):
     made of ``tree``, a loaded save)."""
     world = World(tree, walk.world.skill) if world is None else world
     walk.world, walk.previous, walk.demo, walk.seen_message = world, None, None, 0
+    walk.attract = walk.playback = None        # a game of one's own ends the attract loop
     walk.was_dead = False
     walk.map_cache, walk.partitions = (None, None), None
     hear(walk)
