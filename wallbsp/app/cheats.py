@@ -17,6 +17,8 @@ As in DOOM, no cheat works on Nightmare (skill 5) except ``iddt`` and ``idmypos`
 """
 from __future__ import annotations
 
+import re
+
 from wallbsp.doom import info
 from wallbsp.game.playsim.structs import NUMAMMO, NUMCARDS, NUMWEAPONS
 
@@ -50,6 +52,14 @@ class CheatTyper:
                 apply_cheat(walk, cheat)
                 return cheat
         return None
+
+    @property
+    def in_progress(self) -> bool:
+        """The letters typed last begin a cheat ("id" at least): the one-shot keys among
+        them (F fullscreen, K screenshot, P, L, O ...) are the cheat's, not commands."""
+        if re.search(r"idclev\d?$", self.typed):
+            return True
+        return any(self.typed.endswith(c[:n]) for c in CHEATS for n in range(2, len(c)))
 
 
 def _idclev(typed: str):

@@ -118,7 +118,12 @@ def build_parser(commands) -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     sub.required = True
 
-    p = sub.add_parser("walk", help="the pygame walkthrough")
+    from wallbsp.app.helpscreen import keys_text
+    p = sub.add_parser("walk", help="play: the bundled game, a level, or a DOOM WAD's game",
+                       description="Play. 'wallbsp walk' plays the bundled episode; "
+                       "'wallbsp walk WAD' starts a DOOM WAD's game as DOOM does (title, "
+                       "demos, menu: any key); 'wallbsp walk WAD:MAP' warps to a map.",
+                       epilog=keys_text(), formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("level", nargs="?",
                    help="level, tree or WAD:MAP (default: the bundled game level)")
     p.add_argument("--size", type=_size, default=(320, 200), metavar="WxH",

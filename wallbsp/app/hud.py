@@ -17,10 +17,10 @@ from wallbsp.screen.hud import view_size
 __all__ = ["HELP", "HELP_SECONDS", "MESSAGE_SECONDS", "draw_overlays", "readout_lines", "inventory_lines",
            "texture_mode", "draw_automap", "say", "map_area", "map_view", "seen_lines"]
 
-HELP = ("WASD/arrows move   Left/Right or mouse (M grab) turn   Shift run   Alt strafe   "
-        "E/Space use   Ctrl/click fire   1-7 weapons   Pause   Esc menu",
-        "Tab map  O overlay  L lines  T things  X textures  R stats  P painter  "
-        "[ ] resolution  - = status bar  F fullscreen  K shot  H help")
+HELP = ("WASD/arrows move   Left/Right or mouse (M frees it) turn   Shift run   Alt strafe   "
+        "E/Space use   Ctrl/click fire   1-7 weapons   Esc menu",
+        "F1 all the keys  Tab map  O overlay  L lines  X textures  R readout  "
+        "P painter  [ ] resolution  - = status bar  F fullscreen  K shot  H this line")
 TEXT, SHADOW = (235, 235, 235), (0, 0, 0)
 MESSAGE_SECONDS = 2.0
 SCREENHEIGHT = 200
@@ -46,9 +46,12 @@ def draw_overlays(walk):
         _draw_text_block(walk, readout_lines(walk), (8, top))
     if walk.show_help and walk.help_until is not None and time.perf_counter() > walk.help_until:
         walk.show_help, walk.help_until = False, None    # it covered the weapon; H brings it back
-    if walk.show_help:
+    if walk.show_help and walk.attract is None:
         bottom = map_area(walk)[1]
         _draw_text_block(walk, HELP, (8, bottom - 8 - len(HELP) * walk.font.get_linesize()))
+    if walk.help_screen:
+        from wallbsp.app.helpscreen import draw_help_screen
+        draw_help_screen(walk)
 
 
 def readout_lines(walk):

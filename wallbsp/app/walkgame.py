@@ -33,7 +33,7 @@ def _level_spec(args):
 def walk_command(args, load_any, next_level_of) -> None:
     from wallbsp.app.config import KeyConfigError, read_bindings
     from wallbsp.app.vanilla import is_wad
-    from wallbsp.app.walkthrough import NoDisplayError, check_display, run_walkthrough
+    from wallbsp.app.window import NoDisplayError, check_display
     args.level = _level_spec(args)
     check_outputs("walk", [args.screenshot, args.record], [args.level])
     wad_game = is_wad(args.level)
@@ -46,6 +46,7 @@ def walk_command(args, load_any, next_level_of) -> None:
             check_display()
         setup, world, tree, demo = None, None, None, None
         if args.playdemo:
+            from wallbsp.app.walkthrough import run_walkthrough
             world = demo_world(_wad_of(args.level), args.playdemo)
             tree = world.tree
             setup = _playback_setup(world)
@@ -54,6 +55,7 @@ def walk_command(args, load_any, next_level_of) -> None:
             return run_game(args, keys)
         else:
             spec = _first_map_spec(args.level) if wad_game else args.level
+            from wallbsp.app.walkthrough import run_walkthrough
             tree = load_any(spec, args, strict=args.strict)
             args.level = spec
         if vanilla and not args.playdemo:

@@ -113,6 +113,7 @@ class Walkthrough:
     recorder: object = None          # a vanilla demo being recorded (game.lmprecord)
     playback: object = None          # the tic commands of a demo being played, an iterator
     attract: object = None           # DOOM's attract loop while it runs (app.attract)
+    help_screen: bool = False        # F1's list of the keys, the game standing still
     map_zoom: float = 1.0            # the automap: 1 the whole level, closer follows
     seen: tuple = None               # (world state, automap.SeenLines): the walls seen
     textures: bool = True            # textured view (a level with resources), else flat
@@ -278,7 +279,7 @@ def tic_inputs(walk):
 def ticking(walk) -> bool:
     """Whether tics run: not paused, and no overlay up that pauses the game (DOOM's
     single player stops the level while the menu is up)."""
-    return not walk.paused and not (walk.overlay is not None
+    return not walk.paused and not walk.help_screen and not (walk.overlay is not None
                                     and getattr(walk.overlay, "pauses", True))
 
 
