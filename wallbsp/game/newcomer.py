@@ -1,4 +1,5 @@
-"""A scripted "newcomer": a random walk, fire held toward the nearest monster in sight.
+"""A scripted "newcomer": a random walk, fire held toward the nearest monster in sight
+(noticed a third of a second late, turned toward slowly, aimed a few degrees off).
 
 It stands for a first-time player in the benchmark of the bundled episode (does level 1's
 first room let one live?) and makes the scripted input of recorded demos.  ``command(world)``
@@ -17,7 +18,9 @@ from wallbsp.game.ticcmds import ticcmd
 __all__ = ["Newcomer", "nearest_monster"]
 
 FRACUNIT = 1 << 16
-AIM_TURN = 12.0             # degrees a tic at most, turning toward a monster
+AIM_TURN = 5.0              # degrees a tic at most, turning toward a monster
+AIM_ERROR = 7.0             # degrees: a newcomer's aim is off by up to this, drawn per target
+REACTION_TICS = 12          # tics from seeing a monster to turning toward it
 SIGHT_RANGE = 1536.0        # map units: farther monsters are not aimed at
 STUCK_TICS = 10             # tics with next to no progress before turning away
 
@@ -48,6 +51,7 @@ class Newcomer:
         self.turn_left = 0          # tics the current turn goes on
         self.last = None            # position STUCK_TICS ago
         self.tics = 0
+        self.target, self.seen_for, self.error = None, 0, 0.0
 
     def command(self, world):
         play = world.play
@@ -57,12 +61,16 @@ class Newcomer:
         if player.health <= 0 or mo is None:
             return ticcmd(use=self.tics % 20 == 0)          # dead: use starts again
         target = nearest_monster(play, mo) if self.aim else None
-        if target is not None:
-            want = math.degrees(math.atan2(target.y - mo.y, target.x - mo.x))
+        if target is not self.target:       # a new monster: noticed late, aimed roughly
+            self.target, self.seen_for = target, 0
+            self.error = self.rng.uniform(-AIM_ERROR, AIM_ERROR)
+        self.seen_for += 1
+        if target is not None and self.seen_for > REACTION_TICS:
+            want = math.degrees(math.atan2(target.y - mo.y, target.x - mo.x)) + self.error
             delta = (want - _angle_of(mo) + 180.0) % 360.0 - 180.0
             turn = max(-AIM_TURN, min(AIM_TURN, delta))
             strafe = self.rng.choice((-1.0, 0.0, 1.0)) if self.tics % 17 == 0 else 0.0
-            return ticcmd(forward=0.3, strafe=strafe, turn=turn, fire=True)
+            return ticcmd(forward=0.5, strafe=strafe, turn=turn, fire=True)
         return self._wander(mo)
 
     def _wander(self, mo):
