@@ -150,3 +150,31 @@ def test_after_the_warm_up_play_compiles_nothing():
             compose(walk)
     assert jit.compiled_signatures() == before
     assert walk.world.tic_count > 0 and np.asarray(walk.picture).any()
+
+
+@pytest.mark.skipif(not os.path.exists("/usr/share/games/doom/freedoom1.wad"),
+                    reason="Freedoom not installed")
+def test_the_title_shown_at_once_is_the_wads_titlepic_as_the_art_decodes_it():
+    from wallbsp.app.attract import page_picture
+    from wallbsp.app.startup import title_rgb
+    from wallbsp.screen.art import WadArt
+    wad = "/usr/share/games/doom/freedoom1.wad"
+    art = WadArt([wad])
+    rgb, mask = page_picture(art, "TITLEPIC", 320, 200)
+    assert np.array_equal(title_rgb(art, wad), np.where(mask[..., None], rgb, 0))
+    assert not title_rgb(art, wad, "NOSUCHPIC").any()               # none: black
+
+
+def test_the_bundled_games_attract_loop_plays_its_shipped_demo():
+    from types import SimpleNamespace
+    from wallbsp.app.cli import load_any
+    from wallbsp.app.startup import OwnGame
+    from importlib.resources import files
+    args = SimpleNamespace(candidates=None, seed=0, strict=False)
+    game = OwnGame(str(files("wallbsp") / "data" / "game.json"), load_any, args)
+    assert game.title().shape == (200, 320, 3) and game.title().any()
+    name, level = game.first_tree(lambda *a: None)
+    assert game.sequence(name) == [("page", "TITLEPIC", 170), ("demo", "level1")]
+    world = game.demo_world("level1")
+    assert world is not None and world.skill == 3 and len(world.demo_commands) > 1000
+    assert game.demo_world("nosuchdemo") is None

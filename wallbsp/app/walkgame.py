@@ -34,6 +34,7 @@ def walk_command(args, load_any, next_level_of) -> None:
     from wallbsp.app.config import KeyConfigError, read_bindings
     from wallbsp.app.vanilla import is_wad
     from wallbsp.app.window import NoDisplayError, check_display
+    bundled = args.level is None
     args.level = _level_spec(args)
     check_outputs("walk", [args.screenshot, args.record], [args.level])
     wad_game = is_wad(args.level)
@@ -50,9 +51,9 @@ def walk_command(args, load_any, next_level_of) -> None:
             world = demo_world(_wad_of(args.level), args.playdemo)
             tree = world.tree
             setup = _playback_setup(world)
-        elif wad_game and args.frames is None and not vanilla:
+        elif (wad_game or bundled) and args.frames is None and not (vanilla or args.record):
             from wallbsp.app.startup import run_game
-            return run_game(args, keys)
+            return run_game(args, keys, load_any)
         else:
             spec = _first_map_spec(args.level) if wad_game else args.level
             from wallbsp.app.walkthrough import run_walkthrough
@@ -148,12 +149,13 @@ def demo_world(wad: str, demo_spec: str):
     play.g_do_play_demo(demo)
     world = World(tree, demo.skill + 1, play=play)
     world.demo = demo
+    world.demo_commands = [row[0].ticcmd() for row in demo.tics]
     return world
 
 
 def _playback_setup(world):
     def setup(walk):
-        walk.playback = iter([row[0].ticcmd() for row in world.demo.tics])
+        walk.playback = iter(world.demo_commands)
     return setup
 
 
