@@ -37,7 +37,20 @@ ROUTE_1 = [
     ("use", 33.5, 9), ("wait", 30), ("go", 33.5, 8), ("go", 33.5, 6), ("go", 35, 5.5),
     ("go", 40, 5.5), ("go", 41, 3.5), ("go", 42.5, 3.5), ("use", 44, 3.5),
 ]
-ROUTES = {1: ROUTE_1}
+# level 2: the start room's shotgun, shells and armour; the secret east of them; the first
+# door; the hall of pillars and its chaingun; the corridor; the yard and the red key on its
+# plinth; the red door; the demons' room; the exit niche
+ROUTE_2 = [
+    ("go", 5, 14), ("go", 3, 14), ("go", 5, 14), ("go", 7, 14), ("go", 9.5, 12.5),
+    ("use", 11, 12.5), ("wait", 30), ("go", 12.5, 12.5), ("go", 12.5, 12), ("go", 12.5, 13),
+    ("go", 9.5, 12.5), ("go", 5.5, 10), ("use", 5.5, 8), ("wait", 30), ("go", 5.5, 7),
+    ("go", 8, 5.5), ("go", 8, 3), ("go", 8, 5.5), ("go", 12.5, 5), ("go", 20.5, 4.5),
+    ("go", 20.5, 6.5),
+    ("go", 20.5, 9), ("go", 21.5, 11), ("go", 26.5, 11), ("go", 26.5, 12.5), ("go", 28.5, 10),
+    ("go", 28.5, 9), ("use", 28.5, 7), ("wait", 30), ("go", 28.5, 6), ("go", 31, 3.5),
+    ("go", 34, 2.5), ("go", 35.5, 2.5), ("use", 37, 2.5),
+]
+ROUTES = {1: ROUTE_1, 2: ROUTE_2}
 
 
 def route_in_map_units(route, map_text):

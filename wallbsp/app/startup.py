@@ -168,13 +168,14 @@ class WadGame:
 
 class OwnGame:
     """The bundled game: our title picture, its level, its shipped demo in the loop."""
-    DEMO = "level1"
 
     def __init__(self, level, load_any, args):
+        from wallbsp.app.walkgame import Episode
         from wallbsp.screen.art import OwnArt
         self.level, self.load_any, self.args = level, load_any, args
         self.art = OwnArt()
         self.tree = None
+        self.episode = Episode(load_any, args)
 
     def title(self):
         import pygame
@@ -191,7 +192,9 @@ class OwnGame:
         return self.tree.level.name, self.tree
 
     def sequence(self, first):
-        return [("page", "TITLEPIC", 170), ("demo", self.DEMO)]
+        from wallbsp.app.walkgame import EPISODE
+        title = ("page", "TITLEPIC", 170)
+        return [step for n in range(1, len(EPISODE) + 1) for step in (title, ("demo", f"level{n}"))]
 
     def demo_world(self, lump):
         from importlib.resources import files
@@ -199,14 +202,19 @@ class OwnGame:
         from wallbsp.game.world import World
         try:
             demo = load_demo(str(files("wallbsp") / "data" / "game" / "demos" / f"{lump}.json"))
-            check_level(demo, self.tree.level)
-            world = World(self.tree, demo.skill)
-        except (OSError, ValueError):      # not the bundled level, or no demo: no demo shown
+            from wallbsp.app.walkgame import EPISODE
+            number = int(lump[len("level"):]) if lump[len("level"):].isdigit() else 0
+            tree = self.tree if number == 1 else self.episode.tree(EPISODE[number - 1])
+            check_level(demo, tree.level)
+            world = World(tree, demo.skill)
+        except (OSError, ValueError, IndexError):   # not the bundled level, or no demo
             return None
         world.demo_commands = list(demo.tics)
         return world
 
     def tree_of(self, walk, trees):
+        self.episode.attach(walk)
+        walk.next_level = self.episode
         return None
 
 

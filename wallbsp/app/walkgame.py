@@ -16,7 +16,7 @@ import os
 from wallbsp.app.cliargs import UsageError
 from wallbsp.app.outputs import check_outputs, write_outputs
 
-__all__ = ["walk_command", "is_lmp", "demo_world", "first_map_name"]
+__all__ = ["walk_command", "is_lmp", "demo_world", "first_map_name", "Episode", "EPISODE"]
 
 
 def is_lmp(path) -> bool:
@@ -46,6 +46,7 @@ def walk_command(args, load_any, next_level_of) -> None:
         if args.frames is None:
             check_display()
         setup, world, tree, demo = None, None, None, None
+        summary_holder = {}
         if args.playdemo:
             from wallbsp.app.walkthrough import run_walkthrough
             world = demo_world(_wad_of(args.level), args.playdemo)
@@ -68,16 +69,19 @@ def walk_command(args, load_any, next_level_of) -> None:
             from wallbsp.game.demo import demo_for
             demo = demo_for(tree.level, args.skill)
         effects = not (args.nosound or args.nosfx)
-        summary_holder = {}
 
         def keep(walk, setup=setup):
             summary_holder["walk"] = walk
+            if summary_holder.get("episode") is not None:
+                summary_holder["episode"].attach(walk)
             if setup is not None:
                 setup(walk)
+        episode = Episode(load_any, args) if bundled else None
+        summary_holder["episode"] = episode
         summary = run_walkthrough(
             tree, size=args.size, frames=args.frames, turn=args.turn,
             screenshot=args.screenshot, max_fps=args.max_fps, demo=demo,
-            next_level=next_level_of(args.level, args), skill=args.skill,
+            next_level=episode or next_level_of(args.level, args), skill=args.skill,
             sound=effects, music=not (args.nosound or args.nomusic), keys=keys,
             saves=args.saves, aspect=None if args.square_pixels else 4 / 3, world=world,
             setup=keep, menus=True if (vanilla or args.playdemo) else None)
@@ -86,6 +90,37 @@ def walk_command(args, load_any, next_level_of) -> None:
     _save_recording(args, demo, summary_holder.get("walk"))
     if args.frames is not None:
         print(summary)
+
+
+EPISODE = ("game.json", "game2.json")      # the bundled episode's levels, in order
+
+
+class Episode:
+    """``next_level(exit)`` of the bundled game: the level after the one being left (the
+    walkthrough's ``world``), compiled; None after the last (the intermission's play goes
+    on there again)."""
+
+    def __init__(self, load_any, args):
+        self.load_any, self.args, self.walk, self.trees = load_any, args, None, {}
+
+    def attach(self, walk) -> None:
+        self.walk = walk
+
+    def tree(self, name):
+        if name not in self.trees:
+            from importlib.resources import files
+            self.trees[name] = self.load_any(str(files("wallbsp") / "data" / name),
+                                             self.args, strict=self.args.strict)
+        return self.trees[name]
+
+    def __call__(self, exit_kind):
+        if self.walk is None:
+            return None
+        names = [self.tree(name).level.name for name in EPISODE]
+        here = self.walk.world.level.name
+        if here not in names or names.index(here) + 1 >= len(EPISODE):
+            return None
+        return self.tree(EPISODE[names.index(here) + 1])
 
 
 def _save_recording(args, demo, walk) -> None:
