@@ -175,7 +175,8 @@ def test_the_bundled_games_attract_loop_plays_its_shipped_demo():
     assert game.title().shape == (200, 320, 3) and game.title().any()
     name, level = game.first_tree(lambda *a: None)
     assert game.sequence(name) == [("page", "TITLEPIC", 170), ("demo", "level1"),
-                                   ("page", "TITLEPIC", 170), ("demo", "level2")]
+                                   ("page", "TITLEPIC", 170), ("demo", "level2"),
+                                   ("page", "TITLEPIC", 170), ("demo", "level3")]
     world = game.demo_world("level1")
     assert world is not None and world.skill == 3 and len(world.demo_commands) > 1000
     assert game.demo_world("level2").level.name == "The depot"

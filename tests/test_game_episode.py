@@ -11,7 +11,8 @@ from wallbsp.game.world import World
 from wallbsp.level.io import load_level
 
 DATA = files("wallbsp") / "data"
-LEVELS = [("game.json", "level1.json"), ("game2.json", "level2.json")]
+LEVELS = [("game.json", "level1.json"), ("game2.json", "level2.json"),
+          ("game3.json", "level3.json")]
 SHOTGUN, ARMOUR, ZOMBIE, SERGEANT = 2001, 2018, 3004, 9
 
 
@@ -50,20 +51,23 @@ def test_the_episode_goes_from_level_one_to_level_two_and_stops_after_the_last()
     episode.attach(walk)
     assert episode("normal").level.name == "The depot"
     walk.world.level = episode.tree("game2.json").level
+    assert episode("normal").level.name == "The keep"
+    walk.world.level = episode.tree("game3.json").level
     assert episode("normal") is None
 
 
-def test_level_two_has_more_monsters_than_level_one_on_every_skill():
-    one, two = (load_level(str(DATA / name)) for name in ("game.json", "game2.json"))
-    monsters = {3004, 9, 3001, 3002}
+def test_each_level_has_more_monsters_than_the_one_before_on_every_skill():
+    levels = [load_level(str(DATA / name)) for name in ("game.json", "game2.json", "game3.json")]
+    monsters = {3004, 9, 3001, 3002, 3005, 65}
     for bit in (1, 2, 4):
-        count = lambda level: sum(t.type in monsters and t.flags & bit > 0   # noqa: E731
-                                  for t in level.things)
-        assert count(two) > count(one)
+        counts = [sum(t.type in monsters and t.flags & bit > 0 for t in level.things)
+                  for level in levels]
+        assert counts == sorted(set(counts)), (bit, counts)     # strictly more each level
 
 
-def test_the_script_writes_the_shipped_second_level():
+@pytest.mark.parametrize("number, name", [(2, "game2.json"), (3, "game3.json")])
+def test_the_script_writes_the_shipped_later_levels(number, name):
     from toolscripts import tool_script
     from wallbsp.level.io import level_from_dict
-    level = level_from_dict(tool_script("make_game_level").level_dict(2))
-    assert level == load_level(str(DATA / "game2.json")) and level.warnings == []
+    level = level_from_dict(tool_script("make_game_level").level_dict(number))
+    assert level == load_level(str(DATA / name)) and level.warnings == []

@@ -166,8 +166,61 @@ START_2 = (5, 15, 90)
 TARGET_2 = ROOT / "wallbsp" / "data" / "game2.json"
 LEVEL_2 = ("The depot", TARGET_2, MAP_2, THINGS_2, START_2)
 
+
+# level 3, "The keep": a yard under the sky (and a secret), the keep's great hall where
+# chaingunners and a cacodemon wait, a lift up to the red key, the red door, the last room
+MAP_3 = """
+########################################
+#zzzzzzzzzzzz################uuuuuu#####
+#zzzzzzzzzzzznn##############uuuuuu#####
+#zzzzzzzzzzzznn##############uuuuuu#####
+#zzz##zzz##zz################uuuuuu#####
+#zzz##zzz##zz################lluu#######
+#zzzzzzzzzzzz################lluu#######
+#zzzzzzzzzzzz###GGGGGGGGGGGGGGGGG#######
+#####rr#########GGGGGGGGGGGGGGGGG#######
+#####GG#########GG##GGGGG##GGGGGG#######
+#GGGGGGGGGGGGGGGGG##GGGGG##GGGGG########
+#GGGGGGGGGGGGGGGGGGGGGGGGGGGGGGG########
+#GGGGGGGGGGGGGGGGGGGGGGGGGGGGGGG########
+########dd##############################
+###yyyyyyyyyyyy#########################
+###yyyyyyyyyyyyess######################
+###yyyyyyyyyyyyess######################
+###yyyyyyyyyyyy#########################
+###yyyyyyyyyyyy#########################
+########################################
+"""
+SECTORS.update({
+    "G": (0, 176, 144, "FLOOR3", "CEIL1", "STONE1", "STEP1", "STONE1", "room", 0),
+})
+CACODEMON, CHAINGUNNER, BONUS = 3005, 65, 2014
+THINGS_3 = [
+    # the yard: the shotgun, shells and armour for a pistol start; a zombieman
+    (6, 16, 90, SHOTGUN, ALL), (10, 16, 90, SHELLS, ALL), (12, 17, 90, ARMOUR, ALL),
+    (4, 17, 0, STIMPACK, EASY | NORMAL), (13, 14, 270, ZOMBIE, ALL),
+    (4, 14, 270, IMP, NORMAL | HARD),
+    # the secret east of the yard
+    (16.5, 15, 0, MEDIKIT, ALL), (16.5, 16, 0, SHELL_BOX, ALL), (17, 15.5, 0, BONUS, ALL),
+    # the great hall
+    (15, 11, 0, CHAINGUN, ALL), (30, 11, 180, CHAINGUNNER, ALL), (22, 8, 270, CHAINGUNNER,
+    NORMAL | HARD), (3, 11, 0, SHOTGUN_GUY, ALL), (12, 12, 90, SHOTGUN_GUY, ALL),
+    (20, 12, 90, IMP, ALL), (28, 8, 270, IMP, ALL), (17, 8, 0, IMP, NORMAL | HARD),
+    (24, 8, 270, CACODEMON, NORMAL | HARD), (1, 12, 0, MEDIKIT, ALL), (31, 12, 0, BULLETS, ALL),
+    (23, 11, 0, MEDIKIT, EASY | NORMAL), (16, 7, 0, SHELL_BOX, ALL),
+    # the ledge up the lift: the red key, armour
+    (32, 2, 180, RED_CARD, ALL), (33, 4, 0, ARMOUR, ALL), (34, 1, 180, IMP, HARD),
+    # the last room behind the red door
+    (3, 2, 270, DEMON, ALL), (10, 2, 270, DEMON, ALL), (6.5, 2, 270, CACODEMON, ALL),
+    (11, 6, 180, IMP, ALL), (2, 6, 0, DEMON, NORMAL | HARD), (7, 1, 270, CACODEMON, HARD),
+    (12, 1, 0, MEDIKIT, ALL), (1, 1, 0, SHELL_BOX, ALL),
+]
+START_3 = (8.5, 17, 90)
+TARGET_3 = ROOT / "wallbsp" / "data" / "game3.json"
+LEVEL_3 = ("The keep", TARGET_3, MAP_3, THINGS_3, START_3)
+
 # the episode: (name, file, map, things, start)
-LEVELS = [("The outpost (a small game)", TARGET, MAP, THINGS, START), LEVEL_2]
+LEVELS = [("The outpost (a small game)", TARGET, MAP, THINGS, START), LEVEL_2, LEVEL_3]
 LEVEL_FILES = [(target, map_text) for _name, target, map_text, *_rest in LEVELS]
 
 

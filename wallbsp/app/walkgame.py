@@ -92,7 +92,7 @@ def walk_command(args, load_any, next_level_of) -> None:
         print(summary)
 
 
-EPISODE = ("game.json", "game2.json")      # the bundled episode's levels, in order
+EPISODE = ("game.json", "game2.json", "game3.json")      # the bundled episode's levels, in order
 
 
 class Episode:
