@@ -181,3 +181,21 @@ def test_the_bundled_games_attract_loop_plays_its_shipped_demo():
     assert world is not None and world.skill == 3 and len(world.demo_commands) > 1000
     assert game.demo_world("level2").level.name == "The depot"
     assert game.demo_world("nosuchdemo") is None
+
+
+def test_idclev_warps_within_the_bundled_episode(opened):
+    from types import SimpleNamespace
+    from wallbsp.app.cli import load_any
+    from wallbsp.app.gameflow import GameFlow
+    from wallbsp.app.walkgame import Episode
+    episode = Episode(load_any, SimpleNamespace(candidates=None, seed=0, strict=False))
+    walk = opened(episode.tree("game.json"))
+    walk.next_level = episode
+    walk.overlay = GameFlow(walk, app.start_level, "/nonexistent")
+    frames(walk, 1)
+    typed("idclev13")
+    frames(walk, 1)
+    assert walk.world.level.name == "The keep"
+    typed("idclev19")                              # no such level: nothing happens
+    frames(walk, 1)
+    assert walk.world.level.name == "The keep"

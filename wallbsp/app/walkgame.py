@@ -113,6 +113,10 @@ class Episode:
                                              self.args, strict=self.args.strict)
         return self.trees[name]
 
+    def level(self, number: int):
+        """Level ``number`` (1-based) of the episode, or None (idclev1N)."""
+        return self.tree(EPISODE[number - 1]) if 1 <= number <= len(EPISODE) else None
+
     def __call__(self, exit_kind):
         if self.walk is None:
             return None
