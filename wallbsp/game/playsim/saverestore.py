@@ -6,7 +6,6 @@ tests' and tools/check_savegame.py's proof that a load is exact).
 import base64
 import types
 
-from wallbsp.doom import info
 
 from .savestate import (CACHES, STATIC, UNSET_MARK, References, SaveError, Unset, derived_names,
                         dynamic_fields, map_tables, resolve_class, saved_fields, saved_value,
@@ -147,7 +146,7 @@ class Decoder:
                 raise SaveError(f"no function {x!r}")
             return fn
         if tag == "mi":
-            return _pick(info.MOBJINFO, x, "mobj type")
+            return _pick(self.play.mobjinfo, x, "mobj type")
         if tag == "t":
             return tuple(self.dec(y) for y in _typed(x, list))
         if tag == "d":
