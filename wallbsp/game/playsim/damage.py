@@ -4,6 +4,7 @@
 ``self.players``, ``self.gameskill``, ``self.gameversion`` and ``self.netgame``, and calls
 ``p_spawn_mobj``, ``p_set_mobj_state`` and ``p_drop_weapon`` through ``self``.
 """
+from wallbsp.game.playsim.events import Damaged, Killed
 from wallbsp.game.playsim.structs import SK_BABY, PST_DEAD, EXE_DOOM_1_2, EXE_CHEX
 from wallbsp.doom import info
 from wallbsp.doom.fixed import FRACUNIT, ANG180, ANGLETOFINESHIFT, FINESINE, FINECOSINE, \
@@ -23,6 +24,7 @@ class Damage:
     """``p_inter.c``'s second half: damaging and killing."""
 
     def p_kill_mobj(self, source, target):
+        self.events.append(Killed(target, source))
         target.flags &= ~(info.MF_SHOOTABLE | info.MF_FLOAT | info.MF_SKULLFLY)
         if target.type != info.MT_SKULL:
             target.flags &= ~info.MF_NOGRAVITY
@@ -87,6 +89,7 @@ class Damage:
                 return                      # god mode or invulnerable
         # do the damage
         target.health -= damage
+        self.events.append(Damaged(target, inflictor, source, damage, target.health))
         if target.health <= 0:
             self.p_kill_mobj(source, target)
             return

@@ -7,6 +7,7 @@ It reads ``self.players``, ``self.gameskill``, ``self.gamemode``, ``self.gamever
 decides who hears a pickup), and calls ``p_remove_mobj`` and ``s_start_sound`` through
 ``self``.
 """
+from wallbsp.game.playsim.events import PickedUp
 from wallbsp.game.playsim.structs import SK_BABY, SK_NIGHTMARE, NUMAMMO, COMMERCIAL, EXE_DOOM_1_2
 from wallbsp.doom import info
 from wallbsp.doom.fixed import FRACUNIT
@@ -217,6 +218,7 @@ class Interact:
                 return
         if special.flags & info.MF_COUNTITEM:
             player.itemcount += 1
+        self.events.append(PickedUp(special, toucher))
         self.p_remove_mobj(special)
         player.bonuscount += BONUSADD
         if self._is_console_player(player):

@@ -15,6 +15,7 @@ levels as C keeps it.
 """
 from wallbsp.doom import info
 from wallbsp.doom.fixed import FRACBITS, FRACUNIT, ANG90, ANG270, point_to_angle2, wrap32
+from wallbsp.game.playsim.events import Woke
 from wallbsp.game.playsim.structs import SK_NIGHTMARE, EXE_DOOM_1_2
 from wallbsp.doom.info import FLOATSPEED, MELEERANGE
 
@@ -233,6 +234,7 @@ class Monsters:
             seen = not actor.flags & info.MF_AMBUSH or self.p_check_sight(actor, targ)
         if not seen and not self.p_look_for_players(actor, False):
             return
+        self.events.append(Woke(actor, actor.target))
         # go into the chase state
         seesound = actor.info.seesound
         if seesound:
