@@ -53,20 +53,22 @@ def is_number(value) -> bool:
             and not isinstance(value, (bool, np.bool_)))
 
 
-def number(where: str, name: str, value, low: float, high: float) -> float:
+def number(where: str, name: str, value, low: float = -math.inf,
+           high: float = math.inf) -> float:
     """``value`` as a finite Python float in ``[low, high]``, else one ValueError line
     (``where: name must be ...``)."""
-    if type(value) is float and low <= value <= high:
+    if type(value) is float and low <= value <= high and -math.inf < value < math.inf:
         return value
     if is_number(value):
         try:
             x = float(value)
         except (OverflowError, ValueError):
             x = math.nan
-        if low <= x <= high:
+        if low <= x <= high and math.isfinite(x):
             return x
-    raise ValueError(f"{where}: {name} must be a number from {low:g} to {high:g}, "
-                     f"not {describe(value)}")
+    what = "a finite number" if low == -math.inf and high == math.inf else \
+        f"a number from {low:g} to {high:g}"
+    raise ValueError(f"{where}: {name} must be {what}, not {describe(value)}")
 
 
 def integer(where: str, name: str, value, low: int, high: int) -> int:
