@@ -82,15 +82,15 @@ def copied_thinkers(data: bytes, count: int) -> bytes:
 
 
 def endless_demo(size: int, seed: int = 1) -> bytes:
-    """A v1.9 demo header (one player, E1M1, skill 3) then ``size`` bytes of tics that never
-    hold the end marker (0x80) where a tic starts."""
+    """A v1.9 demo of at most ``size`` bytes (one player, E1M1, skill 3): whole tics to the
+    end, none starting with the end marker (0x80)."""
     rng = random.Random(seed)
     tics = bytearray(rng.getrandbits(8) for _ in range(4096))
     for k in range(0, len(tics), 4):
         if tics[k] == 0x80:
             tics[k] = 0x7F
     body = bytes(tics) * (size // len(tics))
-    return bytes([109, 2, 1, 1, 0, 0, 0, 0, 0, 1, 0, 0, 0]) + body
+    return bytes([109, 2, 1, 1, 0, 0, 0, 0, 0, 1, 0, 0, 0]) + body[:(size - 13) // 4 * 4]
 
 
 def demo_of_map(episode: int, gamemap: int, tics: int = 35) -> bytes:
