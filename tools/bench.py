@@ -31,6 +31,7 @@ BENCHMARKS = {
     "multiagent": ("multiagent", "several agents in one world: steps/s for 2 and 4 agents"),
     "hud": ("hud", "the status bar, weapon, messages and flashes: CPU ms a frame and a tic"),
     "game": ("game", "the walkthrough as a game on E1M1 under X: frames/s, HUD and sound ms"),
+    "checks": ("input_checks", "env steps/s with issue 34's input checks against a baseline, one process"),
 }
 
 
