@@ -158,30 +158,8 @@ def cmd_render(args):
 
 
 def cmd_walk(args):
-    from wallbsp.app.config import KeyConfigError, read_bindings
-    from wallbsp.app.walkthrough import NoDisplayError, check_display, run_walkthrough
-    from wallbsp.game.demo import demo_for, save_demo
-    if args.level is None:
-        from importlib.resources import files
-        args.level = str(files("wallbsp") / "data" / "game.json")
-    check_outputs("walk", [args.screenshot, args.record], [args.level])
-    try:
-        keys = read_bindings(args.keys)
-        if args.frames is None:
-            check_display()      # before the level is compiled: that may take a while
-        tree = load_any(args.level, args, strict=args.strict)
-        demo = demo_for(tree.level, args.skill) if args.record else None
-        summary = run_walkthrough(tree, size=args.size, frames=args.frames, turn=args.turn,
-                                  screenshot=args.screenshot, max_fps=args.max_fps, demo=demo,
-                                  next_level=_next_level(args.level, args), skill=args.skill,
-                                  sound=not args.nosound, music=not args.nomusic, keys=keys,
-                                  saves=args.saves)
-    except (NoDisplayError, KeyConfigError) as err:
-        raise UsageError(str(err)) from None
-    if demo is not None:
-        save_demo(demo, args.record)
-    if args.frames is not None:
-        print(summary)
+    from wallbsp.app.walkgame import walk_command
+    walk_command(args, load_any, _next_level)
 
 
 def _next_level(spec: str, args):
