@@ -1,0 +1,119 @@
+"""The editor's window and its loop: ``run_editor`` (``wallbsp edit``), ``open_session``.
+
+Each frame drains pygame's events (keys to ``keys``, the mouse to ``mouse``, either to an
+open browser or the panel first), looks up what is under the mouse, then draws
+(``frame``).  The window never waits on the compiler: the tree is made beside it
+(``treeview.LiveTree``) and drawn when it is ready.  Headless (``frames=N``, or a test
+driving ``step``) it runs under SDL's dummy driver.
+"""
+from __future__ import annotations
+
+import os
+import time
+
+import pygame
+
+from wallbsp.edit import Editor
+from wallbsp.editor import keys, mouse
+from wallbsp.editor.frame import STATUS_HEIGHT, draw_frame
+from wallbsp.editor.selection import hover_pick
+from wallbsp.editor.session import Session
+from wallbsp.editor.view import View
+
+__all__ = ["run_editor", "open_session", "step", "close_session"]
+
+DEFAULT_SIZE = (1280, 800)
+
+
+def open_session(source=None, size=DEFAULT_SIZE, editor=None, live_tree=True) -> Session:
+    """A session on ``source`` (a level file, ``WAD:MAP`` or None: a new level) in a window
+    of ``size``; ``editor``: a model already made."""
+    if editor is None:
+        editor = Editor.open(source) if source else Editor()
+    pygame.display.init()
+    pygame.font.init()
+    display = pygame.display.set_mode(size, pygame.RESIZABLE)
+    session = Session(editor, View((size[0], size[1] - STATUS_HEIGHT)))
+    session.display = display
+    session.font = pygame.font.Font(None, 20)
+    session.small_font = pygame.font.Font(None, 17)
+    if editor.level.walls or editor.level.things:
+        session.view.fit(session.arrays().bounds())
+    else:
+        session.view.scale = 0.75
+    from wallbsp.editor.panel import Panel
+    session.panel = Panel()
+    if live_tree:
+        from wallbsp.editor.treeview import LiveTree
+        session.compiler = LiveTree(editor)
+    _caption(session)
+    return session
+
+
+def _caption(session):
+    level = session.level
+    path = getattr(session.editor, "path", None)
+    pygame.display.set_caption(f"wallbsp edit - {level.name}" + (f" ({path})" if path else ""))
+
+
+def step(session, flip=True):
+    """One frame: events, hover, the background compile's news, drawing."""
+    for event in pygame.event.get():
+        handle(session, event)
+    if session.compiler is not None:
+        session.compiler.poll()
+    update_hover(session)
+    draw_frame(session, flip)
+
+
+def handle(session, event):
+    if event.type == pygame.QUIT:
+        session.running = False
+    elif event.type == pygame.VIDEORESIZE or event.type == pygame.WINDOWSIZECHANGED:
+        session.display = pygame.display.get_surface()
+        w, h = session.display.get_size()
+        session.view.resize((w, h - STATUS_HEIGHT))
+    elif session.browser is not None and session.browser.handle(session, event):
+        pass
+    elif event.type == pygame.KEYDOWN:
+        if session.panel is not None and session.panel.key(session, event):
+            return
+        keys.press(session, event)
+    elif event.type == pygame.MOUSEBUTTONDOWN and event.button in (1, 2, 3):
+        mouse.on_press(session, event)
+    elif event.type == pygame.MOUSEBUTTONUP and event.button in (1, 2, 3):
+        mouse.on_release(session, event)
+    elif event.type == pygame.MOUSEMOTION:
+        mouse.on_motion(session, event)
+    elif event.type == pygame.MOUSEWHEEL:
+        mouse.on_wheel(session, event)
+
+
+def update_hover(session):
+    x, y = session.mouse
+    inside = 0 <= x < session.view.width and 0 <= y < session.view.height
+    session.hover = hover_pick(session) if inside and session.draft is None else None
+
+
+def close_session(session):
+    if session.compiler is not None:
+        session.compiler.close()
+    pygame.display.quit()
+
+
+def run_editor(source=None, size=DEFAULT_SIZE, frames=None) -> int:
+    """``wallbsp edit``: the window until it is closed (``frames``: that many, headless)."""
+    if frames is not None and not os.environ.get("DISPLAY"):
+        os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
+    session = open_session(source, size)
+    try:
+        clock = pygame.time.Clock()
+        while session.running and (frames is None or session.frames < frames):
+            step(session)
+            autosave = getattr(session.editor, "autosave", None)
+            if autosave is not None and session.frames % 600 == 0:
+                autosave()
+            clock.tick(120)
+    finally:
+        close_session(session)
+    return session.frames
