@@ -10,6 +10,7 @@ import pygame
 
 from wallbsp.editor import draw
 from wallbsp.editor.selection import selected
+from wallbsp.editor.thingkinds import kind_of
 
 __all__ = ["KEYS", "press", "help_lines"]
 
@@ -283,7 +284,11 @@ def _drawing_key(session, name, mods) -> bool:
     if mods:
         return False
     if name in ("space", "insert", "d"):
-        if session.draft is None:
+        if session.mode == "things" and session.draft is None:
+            x, y = session.snapped_mouse()
+            session.command("add_thing", f"added a {kind_of(session.thing_type).name}", x, y,
+                            session.thing_type)
+        elif session.draft is None:
             draw.start_shape(session)
         else:
             draw.add_point(session)

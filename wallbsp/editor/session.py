@@ -55,6 +55,9 @@ class Session:
     panel: object = None             # the properties panel's state (``panel.Panel``)
     browser: object = None           # an open picture browser, or None
     compiler: object = None          # the background compile (``treeview.LiveTree``)
+    pictures: object = None          # the level's pictures (``pictures.Pictures``)
+    thing_type: int = 3004           # what Insert adds in thing mode (the browser sets it)
+    camera: tuple | None = None      # the 3-D camera (x, y, angle) the author placed
     display: object = None
     font: object = None
     small_font: object = None

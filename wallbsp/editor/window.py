@@ -35,6 +35,7 @@ def open_session(source=None, size=DEFAULT_SIZE, editor=None, live_tree=True) ->
     display = pygame.display.set_mode(size, pygame.RESIZABLE)
     session = Session(editor, View((size[0], size[1] - STATUS_HEIGHT)))
     session.display = display
+    fit_view(session)
     session.font = pygame.font.Font(None, 20)
     session.small_font = pygame.font.Font(None, 17)
     if editor.level.walls or editor.level.things:
@@ -56,8 +57,18 @@ def _caption(session):
     pygame.display.set_caption(f"wallbsp edit - {level.name}" + (f" ({path})" if path else ""))
 
 
+def fit_view(session):
+    """The map view is the window less the status line and the panel when it is shown."""
+    from wallbsp.editor.panel import PANEL_WIDTH
+    w, h = session.display.get_size()
+    panel = PANEL_WIDTH if session.show_panel and w > 2 * PANEL_WIDTH else 0
+    if (session.view.width, session.view.height) != (w - panel, h - STATUS_HEIGHT):
+        session.view.resize((w - panel, h - STATUS_HEIGHT))
+
+
 def step(session, flip=True):
     """One frame: events, hover, the background compile's news, drawing."""
+    fit_view(session)
     for event in pygame.event.get():
         handle(session, event)
     if session.compiler is not None:
@@ -71,8 +82,7 @@ def handle(session, event):
         session.running = False
     elif event.type == pygame.VIDEORESIZE or event.type == pygame.WINDOWSIZECHANGED:
         session.display = pygame.display.get_surface()
-        w, h = session.display.get_size()
-        session.view.resize((w, h - STATUS_HEIGHT))
+        fit_view(session)
     elif session.browser is not None and session.browser.handle(session, event):
         pass
     elif event.type == pygame.KEYDOWN:
@@ -86,7 +96,8 @@ def handle(session, event):
     elif event.type == pygame.MOUSEMOTION:
         mouse.on_motion(session, event)
     elif event.type == pygame.MOUSEWHEEL:
-        mouse.on_wheel(session, event)
+        if session.panel is None or not session.panel.wheel(session, event):
+            mouse.on_wheel(session, event)
 
 
 def update_hover(session):
