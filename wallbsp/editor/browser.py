@@ -11,6 +11,7 @@ from __future__ import annotations
 import pygame
 
 from wallbsp.editor.mapdraw import COLORS
+from wallbsp.editor.pictures import pictures_of
 from wallbsp.editor.selection import selected
 from wallbsp.editor.thingkinds import kind_of
 
@@ -21,8 +22,7 @@ TITLES = {"walls": "wall textures", "flats": "flats", "things": "things"}
 
 
 def open_browser(session, kind, on_pick=None):
-    from wallbsp.editor.panel import _pictures
-    pictures = _pictures(session)
+    pictures = pictures_of(session)
     if kind != "things" and not pictures.names(kind):
         session.say(f"this level names no resources with {TITLES[kind]} "
                     f"(its \"resources\": a WAD or a PNG folder)", refused=True)

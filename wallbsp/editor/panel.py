@@ -13,6 +13,7 @@ import pygame
 
 from wallbsp.editor.fields import FIELDS, SET, value_text
 from wallbsp.editor.mapdraw import COLORS
+from wallbsp.editor.pictures import pictures_of
 from wallbsp.editor.selection import selected
 
 __all__ = ["Panel", "PANEL_WIDTH"]
@@ -61,7 +62,7 @@ class Panel:
             hint = "click to select; drag a box; Insert draws"
             surface.blit(session.small_font.render(hint, True, COLORS["dim"]), (x0 + 10, TOP))
             return
-        pictures = _pictures(session)
+        pictures = pictures_of(session)
         for n, field in enumerate(FIELDS[mode]):
             y = TOP + n * ROW
             rect = pygame.Rect(x0 + 4, y, PANEL_WIDTH - 8, ROW)
@@ -192,12 +193,3 @@ def _safe(get, item):
     except (AttributeError, TypeError, IndexError):
         return None
 
-
-def _pictures(session):
-    """The level's pictures, made again when the level names other resources."""
-    from wallbsp.editor.pictures import Pictures
-    level = session.level
-    cached = getattr(session, "pictures", None)
-    if cached is None or cached.paths != level.resource_paths():
-        session.pictures = Pictures(level)
-    return session.pictures

@@ -9,7 +9,7 @@ import pygame
 from wallbsp.assets.resources import ResourceError, shared_resources
 from wallbsp.editor.thingkinds import kind_of
 
-__all__ = ["Pictures", "KINDS"]
+__all__ = ["Pictures", "KINDS", "pictures_of"]
 
 KINDS = ("walls", "flats", "things")
 _NAMESPACE = {"walls": "wall", "flats": "flat"}
@@ -79,3 +79,11 @@ class Pictures:
             return None
         found = self.resources.sprite_frame(sprite, "A", 1)
         return found[0] if found else self.resources.sprite(sprite + "A0")
+
+
+def pictures_of(session) -> Pictures:
+    """The session's level's pictures, made again when the level names other resources."""
+    level = session.level
+    if session.pictures is None or session.pictures.paths != level.resource_paths():
+        session.pictures = Pictures(level)
+    return session.pictures
