@@ -170,6 +170,11 @@ def _place_camera(s):
     place_camera(s)
 
 
+def _aim_camera(s):
+    from wallbsp.editor.preview import aim_camera
+    aim_camera(s)
+
+
 def _preview(s):
     from wallbsp.editor.preview import toggle_preview
     toggle_preview(s)
@@ -250,6 +255,7 @@ KEYS = {
     ("b", (SHIFT,)): ("browse flats", _browser("flats")),
     ("b", (CTRL,)): ("browse things", _browser("things")),
     ("'", ()): ("place the 3-D camera at the mouse", _place_camera),
+    (";", ()): ("turn the 3-D camera to the mouse", _aim_camera),
     ("tab", ()): ("the 3-D preview", _preview),
     ("f9", ()): ("play from the mouse (Escape comes back)", _play),
     ("f1", ()): ("help", _toggle("show_help", "help")),

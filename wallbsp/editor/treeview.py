@@ -23,7 +23,7 @@ from wallbsp.editor.mapdraw import COLORS, visible_segments
 
 __all__ = ["LiveTree", "TreeOverlay", "draw_tree_overlays", "leaf_cell"]
 
-PARTITION = (40, 90, 150)
+PARTITION = (70, 140, 230)
 LEAF = (60, 200, 220)
 ORDER_SECONDS = 4.0          # the front-to-back animation shows every seg in this long
 PROBLEM = (255, 60, 200)
