@@ -1,9 +1,10 @@
 """What every command keeps: closed sectors and no crossing, overlapping or duplicate walls.
 
-``Soundness(level)`` gathers both facts once (a few tens of milliseconds on a 10,000-wall
-map: one ``bincount`` and the level loader's grid search for conflicts).  A command's result
-is accepted when it breaks nothing that was whole before: ``Soundness.refuse_worse(after)``
-raises ``EditError`` naming the first new unclosed sector or conflict.  An imported map that
+``Soundness(level)`` counts the unclosed sectors (a few milliseconds on a 10,000-wall map).
+A command's result is accepted when it breaks nothing that was whole before:
+``Soundness.refuse_worse(after)`` raises ``EditError`` naming the first new unclosed sector,
+conflict or wall whose sides face the wrong sectors; conflicts and sides are examined in
+the box the edit touched (the level loader's grid search for conflicts there).  An imported map that
 already holds a few of either (real DOOM maps do) can still be edited elsewhere.
 """
 from __future__ import annotations
@@ -11,6 +12,8 @@ from __future__ import annotations
 import numpy as np
 
 from wallbsp.edit.draft import EditError
+from wallbsp.edit.arrays import wall_arrays
+from wallbsp.edit.locate import beside, sector_at
 from wallbsp.level.conflicts import find_wall_conflicts
 from wallbsp.level.model import Level
 
@@ -20,11 +23,8 @@ __all__ = ["Soundness", "unclosed_sectors", "open_ends"]
 def _sides(level: Level):
     """(sector, from vertex, to vertex) of every wall side, each running with its sector on
     its right: the front v1 → v2, the back v2 → v1."""
-    n = len(level.walls)
-    v1 = np.fromiter((w.v1 for w in level.walls), np.int64, n)
-    v2 = np.fromiter((w.v2 for w in level.walls), np.int64, n)
-    front = np.fromiter((w.front for w in level.walls), np.int64, n)
-    back = np.fromiter((-1 if w.back is None else w.back for w in level.walls), np.int64, n)
+    a = wall_arrays(level)
+    v1, v2, front, back = a.v1, a.v2, a.front, a.back
     has_back = back >= 0
     return (np.concatenate((front, back[has_back])), np.concatenate((v1, v2[has_back])),
             np.concatenate((v2, v1[has_back])))
@@ -36,35 +36,44 @@ def open_ends(level: Level) -> np.ndarray:
     if not level.walls:
         return np.empty((0, 2), dtype=np.int64)
     sector, start, end = _sides(level)
-    nv = len(level.vertices)
     # vertices at the same place count as one (imported maps hold a few such pairs)
-    _, place = np.unique(np.array(level.vertices, dtype=np.int64).reshape(-1, 2), axis=0,
-                         return_inverse=True)
-    place = place.reshape(-1)
-    size = (len(level.sectors)) * nv
-    balance = (np.bincount(sector * nv + place[start], minlength=size)
-               - np.bincount(sector * nv + place[end], minlength=size))
-    bad = np.flatnonzero(balance)
-    return np.column_stack((bad // nv, bad % nv))
+    xy = np.array(level.vertices, dtype=np.int64).reshape(-1, 2)
+    place = (xy[:, 0] + (1 << 21)) * (1 << 22) + (xy[:, 1] + (1 << 21))
+    keys = np.concatenate((sector * (1 << 44) + place[start], sector * (1 << 44) + place[end]))
+    unique, inverse = np.unique(keys, return_inverse=True)
+    balance = np.bincount(inverse.reshape(-1), weights=np.r_[np.ones(len(start)),
+                                                              -np.ones(len(end))],
+                          minlength=len(unique))
+    bad = unique[balance != 0]
+    if not len(bad):
+        return np.empty((0, 2), dtype=np.int64)
+    sectors, places = bad >> 44, bad & ((1 << 44) - 1)
+    first_vertex = {p: i for i, p in reversed(list(enumerate(place.tolist())))}
+    return np.array([(s, first_vertex[p]) for s, p in zip(sectors.tolist(), places.tolist())],
+                    dtype=np.int64).reshape(-1, 2)
 
 
 def unclosed_sectors(level: Level) -> list[int]:
     return sorted(set(open_ends(level)[:, 0].tolist()))
 
 
-def _conflict_keys(level: Level) -> dict:
-    """Each crossing, overlap or duplicate as ``{(ends of one, ends of other): message}``
-    keyed by coordinates, so a pair is the same pair whatever the walls' indices."""
-    if len(level.walls) < 2:
+def _conflict_keys(level: Level, walls: np.ndarray, involving: np.ndarray | None = None) -> dict:
+    """The crossings, overlaps and duplicates among ``walls`` (those involving a wall of
+    ``involving``, if given) as ``{(ends of one, ends of other): message}``: keyed by
+    coordinates, a pair is the same pair whatever the walls' indices."""
+    if len(walls) < 2:
         return {}
-    seg = level.segments()
+    seg = wall_arrays(level).seg[walls]
     found = find_wall_conflicts(seg)
     keys = {}
     for kind, pairs in (("crosses", found.crossings), ("overlaps", found.overlaps),
                         ("duplicates", found.duplicates)):
-        for i, j in pairs.tolist():
-            a, b = _ends(seg[i]), _ends(seg[j])
-            keys[(min(a, b), max(a, b))] = f"walls[{i}] {kind} walls[{j}]"
+        for a, b in pairs.tolist():
+            i, j = int(walls[a]), int(walls[b])
+            if involving is not None and not (involving[i] or involving[j]):
+                continue
+            ea, eb = _ends(seg[a]), _ends(seg[b])
+            keys[(min(ea, eb), max(ea, eb))] = f"walls[{i}] {kind} walls[{j}]"
     return keys
 
 
@@ -74,29 +83,79 @@ def _ends(row) -> tuple:
 
 
 class Soundness:
-    """The unclosed sectors and wall conflicts of one level."""
+    """What an edit must not make worse: a level's unclosed sectors (the conflicts are
+    compared near the edit only, see ``refuse_worse``)."""
 
     def __init__(self, level: Level):
         self.level = level
         self.unclosed = unclosed_sectors(level)
-        self.conflicts = _conflict_keys(level)
 
     def refuse_worse(self, after: Level) -> "Soundness":
-        """The facts of ``after``; ``EditError`` if it has a conflict this level has not, or
-        more unclosed sectors."""
+        """The facts of ``after``; ``EditError`` if it has a crossing, overlap or duplicate
+        wall near the edit this level had not there, more unclosed sectors, or a wall whose
+        sides do not face the sectors around it."""
         _zero_length(after)
+        changed, region = _changes(self.level, after)
+        if region is not None:
+            new_a = wall_arrays(after)
+            near_after = new_a.within(*region)
+            involving = np.zeros(len(after.walls), bool)
+            involving[changed] = True
+            was = _conflict_keys(self.level, wall_arrays(self.level).within(*region))
+            now = _conflict_keys(after, near_after, involving)
+            new = [what for key, what in now.items() if key not in was]
+            if new:
+                raise EditError(f"refused: {new[0]}" + (f" (and {len(new) - 1} more)"
+                                                         if len(new) > 1 else ""))
         facts = Soundness(after)
-        new = [what for key, what in facts.conflicts.items() if key not in self.conflicts]
-        if new:
-            raise EditError(f"refused: {new[0]}" + (f" (and {len(new) - 1} more)"
-                                                     if len(new) > 1 else ""))
         if len(facts.unclosed) > len(self.unclosed):
             gone = sorted(set(facts.unclosed) - set(self.unclosed)) or facts.unclosed
             raise EditError(f"refused: sectors[{gone[0]}] would not be closed")
+        if region is not None:
+            _sides_agree(after, _spread(np.union1d(changed, near_after), 256))
         return facts
 
 
 def _zero_length(level: Level) -> None:
-    for i, w in enumerate(level.walls):
-        if level.vertices[w.v1] == level.vertices[w.v2]:
-            raise EditError(f"refused: walls[{i}] would have no length")
+    seg = wall_arrays(level).seg
+    bad = np.flatnonzero((seg[:, 0] == seg[:, 2]) & (seg[:, 1] == seg[:, 3]))
+    if len(bad):
+        raise EditError(f"refused: walls[{int(bad[0])}] would have no length")
+
+
+def _changes(before: Level, after: Level):
+    """The walls of ``after`` that are new or moved or changed between one and two sides,
+    and the box around them and the walls they replaced (None: no wall changed)."""
+    old, new = wall_arrays(before), wall_arrays(after)
+    changed = np.flatnonzero(~np.isin(new.key, old.key))
+    gone = np.flatnonzero(~np.isin(old.key, new.key))
+    if not len(changed) and not len(gone):
+        return changed, None
+    ends = np.vstack((new.seg[changed][:, :2], new.seg[changed][:, 2:],
+                      old.seg[gone][:, :2], old.seg[gone][:, 2:]))
+    lo, hi = ends.min(axis=0), ends.max(axis=0)
+    return changed, (int(lo[0]), int(lo[1]), int(hi[0]), int(hi[1]))
+
+
+def _spread(walls: np.ndarray, limit: int) -> list[int]:
+    """At most ``limit`` of the walls, spread over the list."""
+    walls = walls.tolist()
+    return walls[::len(walls) // limit + 1] if len(walls) > limit else walls
+
+
+def _sides_agree(level: Level, walls: list[int]) -> None:
+    """Each wall's sides face the sectors that are there: from a point a hair off either
+    side, rays to the left and to the right both first meet walls whose sides facing the
+    point name the same sector (a room moved or pasted inside another would not)."""
+    arrays = wall_arrays(level)
+    for i in walls:
+        w = level.walls[i]
+        for front, sector in ((True, w.front), (False, w.back)):
+            x, y = beside(level, i, front)
+            for direction in (1, -1):
+                seen = sector_at(level, x, y, arrays, direction)
+                if seen != sector:
+                    where = "in the void" if seen is None else f"in sectors[{seen}]"
+                    raise EditError(f"refused: walls[{i}]'s {'front' if front else 'back'} "
+                                    f"side would lie {where}, not "
+                                    f"{'the void' if sector is None else f'sectors[{sector}]'}")

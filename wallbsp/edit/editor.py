@@ -19,7 +19,7 @@ from wallbsp.edit.draft import EditError
 from wallbsp.edit.picking import Picker
 from wallbsp.edit.selection import MODES, Selection
 from wallbsp.edit.shapes import Style, draw_shape
-from wallbsp.edit import commands, properties, smart, storage
+from wallbsp.edit import clipboard, commands, properties, smart, storage
 from wallbsp.edit.problems import problems
 from wallbsp.level.model import Level, Start
 
@@ -30,7 +30,8 @@ def empty_level(name: str = "untitled") -> Level:
     return Level(name, [], [], [], Start(0, 0, 90), version=2)
 
 
-class Editor(commands.Commands, properties.Properties, smart.SmartTools, storage.Storage):
+class Editor(commands.Commands, clipboard.Clipboard, properties.Properties, smart.SmartTools,
+             storage.Storage):
     """One level being edited.  ``level``: the current ``Level``; ``version``: +1 per edit
     (and per undo or redo), so a view knows to redraw and recompile; ``selection``."""
 

@@ -12,9 +12,10 @@ from fractions import Fraction
 
 import numpy as np
 
+from wallbsp.edit.arrays import WallArrays, wall_arrays
 from wallbsp.level.model import Level
 
-__all__ = ["sector_at", "inside_polygon", "orient", "WallArrays"]
+__all__ = ["sector_at", "beside", "inside_polygon", "orient", "WallArrays"]
 
 
 def orient(p, q, r):
@@ -22,27 +23,15 @@ def orient(p, q, r):
     return (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0])
 
 
-class WallArrays:
-    """A level's walls as float arrays ``x1, y1, x2, y2`` with their sectors (back -1: none)."""
-
-    def __init__(self, level: Level):
-        self.level = level
-        seg = level.segments().astype(np.float64)
-        self.x1, self.y1, self.x2, self.y2 = (seg[:, k] for k in range(4)) if len(seg) else \
-            (np.empty(0),) * 4
-        self.front = np.fromiter((w.front for w in level.walls), np.int64, len(level.walls))
-        self.back = np.fromiter((-1 if w.back is None else w.back for w in level.walls),
-                                np.int64, len(level.walls))
-
-
-def sector_at(level: Level, x, y, arrays: WallArrays | None = None):
-    """The sector around (x, y) (numbers, Fractions), or None in the void."""
-    arrays = arrays or WallArrays(level)
+def sector_at(level: Level, x, y, arrays: WallArrays | None = None, direction: int = 1):
+    """The sector around (x, y) (numbers, Fractions), or None in the void; the ray goes
+    towards +x (``direction`` -1: towards -x; in a sound level both agree)."""
+    arrays = arrays if arrays is not None else wall_arrays(level)
     x, y = Fraction(x), Fraction(y)
     if y.denominator == 1:
         # no vertex lies on the ray then (vertices are integers): no tie at a shared end
         y += _NUDGE
-    if not len(arrays.x1):
+    if not len(arrays.seg):
         return None
     fy, fx = float(y), float(x)
     lo, hi = np.minimum(arrays.y1, arrays.y2), np.maximum(arrays.y1, arrays.y2)
@@ -51,34 +40,44 @@ def sector_at(level: Level, x, y, arrays: WallArrays | None = None):
         return None
     t = (fy - arrays.y1[near]) / (arrays.y2[near] - arrays.y1[near])
     cross = arrays.x1[near] + t * (arrays.x2[near] - arrays.x1[near])
-    ahead = cross >= fx - 1e-6 * max(1.0, abs(fx))
+    cross = cross * direction
+    ahead = cross >= direction * fx - 1e-6 * max(1.0, abs(fx))
     near, cross = near[ahead], cross[ahead]
-    if not len(near):
-        return None
-    best = float(cross.min())
-    close = near[cross <= best + 1e-6 * max(1.0, abs(best))].tolist()
-    return _nearest_exact(level, close, x, y)
+    order = np.argsort(cross, kind="stable")
+    return _nearest_exact(level, near[order].tolist(), cross[order].tolist(), x, y, direction)
 
 
 _NUDGE = Fraction(1, 1 << 40)
 
 
-def _nearest_exact(level: Level, walls: list, x: Fraction, y: Fraction):
-    """Among walls the ray y = const, x' >= x may meet first, the side of the nearest."""
+def _nearest_exact(level: Level, walls: list, floats: list, x: Fraction, y: Fraction,
+                   direction: int):
+    """Among walls the ray may meet (by their crossing in floats, nearest first), the side
+    facing the point of the one it meets first, decided in rationals."""
     best = None
-    for i in walls:
+    for i, near in zip(walls, floats):
+        if best is not None and near > float(best[0]) + 1e-6 * max(1.0, abs(near)):
+            break
         w = level.walls[i]
         (x1, y1), (x2, y2) = level.vertices[w.v1], level.vertices[w.v2]
         if not (min(y1, y2) < y < max(y1, y2)):
             continue
-        cx = x1 + (y - y1) * Fraction(x2 - x1, y2 - y1)
-        if cx >= x and (best is None or cx < best[0]):
+        cx = direction * (x1 + (y - y1) * Fraction(x2 - x1, y2 - y1))
+        if cx >= direction * x and (best is None or cx < best[0]):
             best = (cx, i)
     if best is None:
         return None
     w = level.walls[best[1]]
     (x1, y1), (x2, y2) = level.vertices[w.v1], level.vertices[w.v2]
     return w.front if orient((x1, y1), (x2, y2), (x, y)) <= 0 else w.back
+
+
+def beside(level: Level, wall: int, front: bool = True):
+    """A point a hair off the middle of the wall, on its front (right) or back side."""
+    w = level.walls[wall]
+    (x1, y1), (x2, y2) = level.vertices[w.v1], level.vertices[w.v2]
+    scale = Fraction(1 if front else -1, (1 << 30) * max(abs(x2 - x1), abs(y2 - y1)))
+    return (Fraction(x1 + x2, 2) + (y2 - y1) * scale, Fraction(y1 + y2, 2) - (x2 - x1) * scale)
 
 
 def inside_polygon(poly: list, p) -> int:

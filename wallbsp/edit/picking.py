@@ -9,7 +9,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from wallbsp.edit.locate import WallArrays, sector_at
+from wallbsp.edit.arrays import wall_arrays
+from wallbsp.edit.locate import sector_at
 from wallbsp.edit.selection import MODES
 from wallbsp.level.model import Level
 
@@ -56,10 +57,9 @@ class Picker:
 
     def __init__(self, level: Level):
         self.level = level
-        self.walls = WallArrays(level)
+        self.walls = wall_arrays(level)
         self.vxy = np.array(level.vertices, dtype=np.float64).reshape(-1, 2)
-        seg = np.column_stack((self.walls.x1, self.walls.y1, self.walls.x2, self.walls.y2))
-        self.seg = seg
+        seg = self.seg = self.walls.fseg
         cell = 128.0
         if len(seg):
             length = np.hypot(seg[:, 2] - seg[:, 0], seg[:, 3] - seg[:, 1])

@@ -26,6 +26,7 @@ from fractions import Fraction
 
 import numpy as np
 
+from wallbsp.edit.arrays import wall_arrays
 from wallbsp.edit.draft import Draft, EditError
 from wallbsp.edit.locate import inside_polygon, orient, sector_at
 from wallbsp.edit.polygon import clean_polygon, strictly_between
@@ -51,13 +52,9 @@ def _cut_points(level: Level, poly: list):
     edge_cuts = [set() for _ in range(n)]
     wall_cuts: dict[int, set] = {}
     xs, ys = [p[0] for p in poly], [p[1] for p in poly]
-    seg = level.segments()
-    if not len(seg):
-        return edge_cuts, wall_cuts
-    near = np.flatnonzero((np.minimum(seg[:, 0], seg[:, 2]) <= max(xs))
-                          & (np.maximum(seg[:, 0], seg[:, 2]) >= min(xs))
-                          & (np.minimum(seg[:, 1], seg[:, 3]) <= max(ys))
-                          & (np.maximum(seg[:, 1], seg[:, 3]) >= min(ys)))
+    arrays = wall_arrays(level)
+    seg = arrays.seg
+    near = arrays.within(min(xs), min(ys), max(xs), max(ys))
     for w in near.tolist():
         c, d = (int(seg[w, 0]), int(seg[w, 1])), (int(seg[w, 2]), int(seg[w, 3]))
         for k in range(n):
@@ -182,11 +179,15 @@ def draw_shape(level: Level, points, style: Style = Style()) -> tuple[Level, int
     edge_cuts, wall_cuts = _cut_points(level, poly)
     _split_walls(d, wall_cuts)
     pieces = _outline_pieces(d, poly, edge_cuts)
-    edges = _gather_edges(d, poly, pieces)
+    n_old = len(level.walls)
+    xs, ys = [p[0] for p in poly], [p[1] for p in poly]
+    near = wall_arrays(level).within(min(xs), min(ys), max(xs), max(ys)).tolist() \
+        + list(range(n_old, len(d.walls)))
+    edges = _gather_edges(d, poly, pieces, near)
     cycles = edges.faces()
     faces = _faces_with_holes(edges, cycles)
     old = {id(f): _old_sector(level, edges, f) for f in faces}
-    carved = _carved(d, edges, faces, old)
+    carved = _carved(d, edges, faces, old, n_old)
     new = len(d.sectors)
     final = {}
     for f in faces:
@@ -201,10 +202,12 @@ def draw_shape(level: Level, points, style: Style = Style()) -> tuple[Level, int
     return d.level(), new
 
 
-def _gather_edges(d: Draft, poly: list, pieces: list) -> _Edges:
+def _gather_edges(d: Draft, poly: list, pieces: list, near: list) -> _Edges:
+    """The outline's pieces and the walls inside it (among ``near``)."""
     edges = _Edges(d)
     by_ends = {}
-    for i, w in enumerate(d.walls):
+    for i in near:
+        w = d.walls[i]
         by_ends.setdefault((min(w.v1, w.v2), max(w.v1, w.v2)), i)
     on_outline = set()
     for u, v in pieces:
@@ -214,7 +217,8 @@ def _gather_edges(d: Draft, poly: list, pieces: list) -> _Edges:
     xs, ys = [p[0] for p in poly], [p[1] for p in poly]
     lo, hi = (min(xs), min(ys)), (max(xs), max(ys))
     poly2 = [(2 * x, 2 * y) for x, y in poly]
-    for i, w in enumerate(d.walls):
+    for i in near:
+        w = d.walls[i]
         if i in on_outline:
             continue
         (x1, y1), (x2, y2) = d.vertices[w.v1], d.vertices[w.v2]
@@ -260,11 +264,16 @@ def _old_sector(level: Level, edges: _Edges, face: list):
     return sector_at(level, x, y)
 
 
-def _carved(d: Draft, edges: _Edges, faces: list, old: dict) -> set:
+def _carved(d: Draft, edges: _Edges, faces: list, old: dict, n_old: int) -> set:
     """The old sectors that also lie outside the outline."""
     inside = {h[2] for h in edges.half if h[2] is not None}
-    carved = {s for i, w in enumerate(d.walls) if i not in inside
-              for s in (w.front, w.back) if s is not None}
+    arrays = wall_arrays(d.base)
+    outside = np.ones(n_old, bool)
+    outside[[i for i in inside if i < n_old]] = False
+    sides = np.concatenate((arrays.front[outside], arrays.back[outside]))
+    carved = set(np.unique(sides[sides >= 0]).tolist())
+    carved |= {s for i, w in enumerate(d.walls[n_old:], n_old) if i not in inside
+               for s in (w.front, w.back) if s is not None}
     for f in faces:
         if old[id(f)] is not None and any(edges.half[h][3] and edges.half[h][2] is None
                                           for cycle in f for h in cycle):
@@ -293,6 +302,7 @@ def _template(level, faces, old, final, new, edges, style: Style) -> Sector:
 
 
 def _assign_sides(d: Draft, edges: _Edges, faces, old, final, style: Style) -> None:
+    new = len(d.sectors) - 1
     right = {}
     for f in faces:
         for cycle in f:
@@ -311,6 +321,9 @@ def _assign_sides(d: Draft, edges: _Edges, faces, old, final, style: Style) -> N
         front = by_start.get(w.v1, w.front)
         back = by_start.get(w.v2, w.back)
         d.walls[wall] = _resided(w, front, back, style)
+        if d.walls[wall].front == d.walls[wall].back == new and w.front != w.back:
+            d.walls[wall] = None     # a wall the new sector now lies on both sides of
+    d.walls = [w for w in d.walls if w is not None]
 
 
 def _new_wall(d: Draft, u: int, v: int, front, back, style: Style) -> None:
