@@ -31,6 +31,7 @@ BENCHMARKS = {
     "multiagent": ("multiagent", "several agents in one world: steps/s for 2 and 4 agents"),
     "hud": ("hud", "the status bar, weapon, messages and flashes: CPU ms a frame and a tic"),
     "game": ("game", "the walkthrough as a game on E1M1 under X: frames/s, HUD and sound ms"),
+    "editor": ("editor", "the editor's window on MAP12: redraw and preview fps, pick ms"),
 }
 
 

@@ -109,9 +109,10 @@ class Session:
     def snapped_mouse(self):
         """The mouse on the grid, or on a vertex within a few pixels (vertices win)."""
         x, y = self.mouse_map()
-        near = nearest_vertex(self.arrays(), x, y, 8 / self.view.scale)
+        near = self.editor.pick(x, y, "vertices", 8 / self.view.scale)
         if near is not None:
-            return near
+            vx, vy = self.level.vertices[near]
+            return int(vx), int(vy)
         return self.view.snapped(x, y)
 
     def set_mode(self, mode: str):
@@ -121,14 +122,3 @@ class Session:
             self.editor.select(mode, ())
         self.say(f"{mode} mode")
 
-
-def nearest_vertex(arrays: LevelArrays, x, y, radius):
-    """The vertex within ``radius`` map units of (x, y) nearest it, as integers, or None."""
-    v = arrays.vertices
-    if not len(v):
-        return None
-    d = (v[:, 0] - x) ** 2 + (v[:, 1] - y) ** 2
-    i = int(d.argmin())
-    if d[i] > radius * radius:
-        return None
-    return int(v[i, 0]), int(v[i, 1])

@@ -51,6 +51,15 @@ class TreeOverlay:
         palette = np.array([depth_color(d, levels) for d in range(levels)], np.int64)
         self.seg_colors = palette[seg_depth] if tree.seg_count else np.zeros((0, 3), np.int64)
         self.stats = tree.stats()
+        self._points = None
+
+    def problem_points(self):
+        """``[(map point, message)]`` of the problems that have a place (made once)."""
+        if self._points is None:
+            level = self.tree.level
+            found = ((problem_point(level, k, w, m), m) for k, w, m in self.problems)
+            self._points = [(p, m) for p, m in found if p is not None]
+        return self._points
 
 
 class LiveTree:
@@ -230,10 +239,7 @@ def _problems(session, surface, overlay):
     mouse."""
     view = session.view
     mx, my = session.mouse
-    for kind, where, message in overlay.problems:
-        point = problem_point(overlay.tree.level, kind, where, message)
-        if point is None:
-            continue
+    for point, message in overlay.problem_points():
         px, py = view.to_screen(*point)
         if not (-20 <= px <= view.width + 20 and -20 <= py <= view.height + 20):
             continue
