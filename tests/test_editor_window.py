@@ -225,6 +225,18 @@ def test_the_player_does_not_fit_an_edge_under_32_units(session):
     assert draw.draft_edges(session)[-1][2] is True
 
 
+def test_the_player_fits_hint_of_the_rectangle_being_drawn(session):
+    session.view.grid = 8
+    session.rect_start = (0, 0)
+    move(at(session, 24, 128))            # 24 units wide: DOOM's player is 32 across
+    step(session)
+    fits, why = draw.fit_hint(session)
+    assert not fits and why
+    move(at(session, 64, 128))
+    step(session)
+    assert draw.fit_hint(session) == (True, "player fits")
+
+
 def test_the_tree_overlay_draws_the_partition_of_the_level(session):
     from wallbsp.editor.treeview import PARTITION, LiveTree
     rectangle(session, 0, 0, 512, 512)

@@ -7,13 +7,15 @@ split where the shape meets them).  Backspace takes the last point back, Escape 
 shape.  Shift+D arms the rectangle tool: press and drag (or click twice) for two corners.
 
 While a shape is drawn, "the player fits here" is shown: each new edge shorter than DOOM's
-player (32 units across) is drawn red, so a corridor too narrow to walk is seen at once.
+player (32 units across) is drawn red, and the shape closed at the mouse is asked whether
+DOOM's player (16 radius, 56 high under the heights of the sector it is drawn in) fits in
+it (the model's ``player_fits``): a green "player fits" or the red reason by the mouse.
 """
 from __future__ import annotations
 
 __all__ = ["start_shape", "add_point", "click_point", "close_shape", "undo_point",
-           "cancel", "arm_rectangle", "rectangle_press", "rectangle_release",
-           "PLAYER_WIDTH"]
+           "cancel", "arm_rectangle", "rectangle_press", "rectangle_release", "draft_edges",
+           "fit_hint", "PLAYER_WIDTH"]
 
 PLAYER_WIDTH = 32          # DOOM's player: radius 16
 PLAYER_HEIGHT = 56
@@ -111,3 +113,34 @@ def draft_edges(session):
         length = ((q[0] - p[0]) ** 2 + (q[1] - p[1]) ** 2) ** 0.5
         edges.append((p, q, length == 0 or length >= PLAYER_WIDTH))
     return edges
+
+
+_hint = {}          # the last shape asked about and its answer (asked once per shape)
+
+
+def fit_hint(session):
+    """``(fits, text)`` for the shape being drawn closed at the mouse, or None (fewer than
+    three corners)."""
+    edges = draft_edges(session)
+    points = [p for p, _, _ in edges] + ([edges[-1][1]] if edges else [])
+    if session.rect_start is not None:
+        points = points[:4]
+    points = [p for i, p in enumerate(points) if i == 0 or p != points[i - 1]]
+    if len(points) < 3 or len(set(points)) < 3:
+        return None
+    key = (id(session.editor), session.editor.version, tuple(points))
+    if _hint.get("key") != key:
+        fits = getattr(session.editor, "player_fits", None)
+        answer = None
+        if fits is not None:
+            x, y = points[0]
+            sector = session.editor.pick(x, y, "sectors", 0)
+            heights = {}
+            if sector is not None:
+                s = session.level.sectors[sector]
+                heights = {"floor": s.floor, "ceiling": s.ceiling}
+            ok, why = fits(points, **heights)
+            answer = (ok, "player fits" if ok else why)
+        _hint.clear()
+        _hint.update(key=key, answer=answer)
+    return _hint["answer"]

@@ -142,6 +142,11 @@ def draw_draft(session, surface):
     fits = all(f for _, _, f in edges[-1:])
     pygame.draw.rect(surface, COLORS["fits"] if fits else COLORS["tight"],
                      (mx - half, my - half, 2 * half, 2 * half), 1)
+    hint = draw.fit_hint(session)
+    if hint is not None:
+        ok, text = hint
+        label = session.small_font.render(text, True, COLORS["fits"] if ok else COLORS["tight"])
+        surface.blit(label, (mx + 14, my + 8))
 
 
 # -- text ----------------------------------------------------------------------------------

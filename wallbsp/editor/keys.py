@@ -82,7 +82,19 @@ def _delete(s):
 
 
 def _paste(s):
-    s.command("paste", "pasted", *s.snapped_mouse())
+    """Paste what was copied centred on the mouse (by whole grid steps, so a room on the
+    grid stays on it)."""
+    copied = getattr(s.editor, "clipboard", None)
+    if copied is None:
+        s.say("nothing copied to paste", refused=True)
+        return
+    points = [p for ends, _ in copied.walls for p in ends] + [(t.x, t.y) for t in copied.things]
+    mx, my = s.mouse_map()
+    cx = (min(p[0] for p in points) + max(p[0] for p in points)) / 2 if points else mx
+    cy = (min(p[1] for p in points) + max(p[1] for p in points)) / 2 if points else my
+    g = s.view.grid if s.view.snap else 1
+    dx, dy = round((mx - cx) / g) * g, round((my - cy) / g) * g
+    s.command("paste", f"pasted, moved by ({dx}, {dy})", dx, dy)
 
 
 def _select_all(s):

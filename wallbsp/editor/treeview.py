@@ -1,7 +1,7 @@
 """The tree, live: the level compiled beside the window after each edit, and drawn.
 
-``LiveTree`` compiles on a worker thread whenever the model's ``version`` moves on, and
-hands the window a ``TreeOverlay`` (the tree, each partition line clipped to its convex
+``LiveTree`` compiles (the model's ``compile_now``: the tree and the problems) on a worker
+thread whenever the model's ``version`` moves on, and hands the window a ``TreeOverlay`` (the tree, each partition line clipped to its convex
 cell, each seg's colour by the depth of its node, the problems) when it is done: the
 window never waits.  An edit made while a compile runs is compiled next; the ones between
 are skipped.  The overlays (``n``: partitions and segs by depth; always, with the tree:
@@ -18,7 +18,7 @@ import numpy as np
 import pygame
 
 from wallbsp.app.mapview import clip_polygon, depth_color, node_depths, partition_pieces
-from wallbsp.bsp.build import compile_level
+from wallbsp.edit.compiler import compile_now
 from wallbsp.editor.mapdraw import COLORS, visible_segments
 
 __all__ = ["LiveTree", "TreeOverlay", "draw_tree_overlays", "leaf_cell"]
@@ -131,19 +131,13 @@ class LiveTree:
                 self.busy = False
 
     def _compile(self, version, level):
-        started = time.perf_counter()
-        try:
-            tree = compile_level(level)
-            problems = self._problems(level)
-            return TreeOverlay(tree, version, time.perf_counter() - started, problems)
-        except (ValueError, RuntimeError) as err:       # a level the compiler refuses
-            return f"not compiled: {err}"
-
-    def _problems(self, level):
-        if not self.with_problems:
-            return []
-        from wallbsp.edit.problems import problems
-        return problems(level)
+        """The model's compile and problems (``edit.compiler.compile_now``), then what the
+        overlays draw, all on this thread."""
+        compiled = compile_now(level, version)
+        if compiled.tree is None:
+            return f"not compiled: {compiled.error}"
+        problems = compiled.problems if self.with_problems else []
+        return TreeOverlay(compiled.tree, version, compiled.seconds, problems)
 
 
 # -- drawing ---------------------------------------------------------------------------------
