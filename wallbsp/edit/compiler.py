@@ -3,7 +3,8 @@ editor goes on; the caller asks for the newest tree when it draws and is never b
 
 ``Compiler.submit(level, version)`` hands over a level (a newer one replaces one still
 waiting: only the newest is worth compiling); ``latest()`` is the newest finished
-``Compiled`` (its ``version``, ``tree`` or the one-line ``error``, ``problems``, seconds)
+``Compiled`` (its ``version``, ``tree`` or the one-line ``error``, ``problems``, seconds and
+the tree's ``overlay``, partitions clipped)
 or None.  ``compile_now(level, version)`` does the same work in the caller's thread (for
 scripts and tests).  The compile is ``wallbsp.compile_level`` (numpy; most of its time is
 spent outside the interpreter lock, so the window keeps drawing).
@@ -15,6 +16,7 @@ import time
 from typing import NamedTuple
 
 from wallbsp.bsp.build import compile_level
+from wallbsp.edit.overlay import TreeOverlay
 from wallbsp.edit.problems import problems
 
 __all__ = ["Compiler", "Compiled", "compile_now"]
@@ -26,6 +28,7 @@ class Compiled(NamedTuple):
     error: str | None
     problems: list
     seconds: float
+    overlay: TreeOverlay | None   # its partition lines already clipped
 
 
 def compile_now(level, version: int = 0, candidates=None, seed: int = 0) -> Compiled:
@@ -36,7 +39,11 @@ def compile_now(level, version: int = 0, candidates=None, seed: int = 0) -> Comp
     except ValueError as err:
         tree, error = None, str(err).splitlines()[0]
     found = problems(level, tree)
-    return Compiled(version, tree, error, found, time.perf_counter() - start)
+    overlay = None
+    if tree is not None:
+        overlay = TreeOverlay(tree)
+        overlay.partitions()
+    return Compiled(version, tree, error, found, time.perf_counter() - start, overlay)
 
 
 class Compiler:

@@ -24,7 +24,10 @@ def _inside(segs, p) -> bool:
 
 def _square_clear(segs, cx, cy, r) -> bool:
     corners = [(cx - r, cy - r), (cx + r, cy - r), (cx + r, cy + r), (cx - r, cy + r)]
-    if not all(_inside(segs, c) for c in corners):
+    # a hair inside the corners: a square touching the walls fits (a 32-wide corridor)
+    inner = Fraction(r) - Fraction(1, 64)
+    if not all(_inside(segs, (cx + sx * inner, cy + sy * inner))
+               for sx, sy in ((-1, -1), (1, -1), (1, 1), (-1, 1))):
         return False
     for a, b in segs:
         if max(a[0], b[0]) <= cx - r or min(a[0], b[0]) >= cx + r \

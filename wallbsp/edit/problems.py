@@ -18,7 +18,6 @@ from wallbsp.edit.arrays import wall_arrays
 from wallbsp.edit.checks import open_ends
 from wallbsp.edit.fit import PLAYER_HEIGHT
 from wallbsp.edit.locate import sector_at
-from wallbsp.edit.picking import Picker
 from wallbsp.edit.reach import reachable_sectors
 from wallbsp.level.conflicts import find_wall_conflicts
 from wallbsp.level.model import Level
@@ -102,21 +101,24 @@ def _stuck(level: Level, tree=None) -> list:
     blocking wall, and any thing in the void."""
     if not level.things:
         return []
-    picker = Picker(level)
+    arrays = wall_arrays(level)
     where = tree.locate if tree is not None else \
-        (lambda x, y: sector_at(level, x, y, picker.walls))
+        (lambda x, y: sector_at(level, x, y, arrays))
+    blocking = np.array([w.back is None or w.blocks for w in level.walls], dtype=bool)
+    seg = arrays.fseg[blocking]
+    lo_x, hi_x = np.minimum(seg[:, 0], seg[:, 2]), np.maximum(seg[:, 0], seg[:, 2])
+    lo_y, hi_y = np.minimum(seg[:, 1], seg[:, 3]), np.maximum(seg[:, 1], seg[:, 3])
     out = []
     for i, t in enumerate(level.things):
         if where(t.x, t.y) is None:
             out.append(("stuck", i, f"things[{i}] (type {t.type}) stands in the void"))
             continue
-        if not _solid(level, t.type) or picker.wall_grid is None:
+        if not _solid(level, t.type):
             continue
         r = thing_radius(level, t.type)
-        near = picker.wall_grid.near(t.x - r, t.y - r, t.x + r, t.y + r)
-        near = [k for k in near.tolist()
-                if level.walls[k].back is None or level.walls[k].blocks]
-        if near and _box_hits(t.x, t.y, r, *(picker.seg[near].T)).any():
+        near = np.flatnonzero((lo_x < t.x + r) & (hi_x > t.x - r)
+                              & (lo_y < t.y + r) & (hi_y > t.y - r))
+        if len(near) and _box_hits(t.x, t.y, r, *(seg[near].T)).any():
             out.append(("stuck", i, f"things[{i}] (type {t.type}, radius {r:g}) "
                                     f"overlaps a wall"))
     return out
