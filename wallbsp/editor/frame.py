@@ -96,7 +96,9 @@ def _objects(session, arrays, mode, items, color, width, offset=(0, 0)):
         for i in sorted(items):
             thing = arrays.level.things[i]
             px, py = view.to_screen(thing.x + ox, thing.y + oy)
-            r = max(3.0, kind_of(thing.type).radius * view.scale)
+            # a second square outside the thing's own, so a selected monster (red itself)
+            # still stands out
+            r = max(3.0, kind_of(thing.type).radius * view.scale) + 3
             pygame.draw.rect(surface, color, (px - r, py - r, 2 * r + 1, 2 * r + 1), width)
 
 

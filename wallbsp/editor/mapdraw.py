@@ -89,7 +89,7 @@ class StaticLayer:
 
 def draw_static(surface, view: View, arrays: LevelArrays, mode: str, under=None, over=None):
     surface.fill(COLORS["background"])
-    if view.show_grid:
+    if view.show_grid and under is None:      # the tree's partition lines replace the grid
         draw_grid(surface, view)
     if under is not None:
         under(surface, view)

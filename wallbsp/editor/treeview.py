@@ -210,22 +210,30 @@ def _leaf_under_mouse(session, surface, overlay):
 
 
 def _order(session, surface, overlay):
-    """The segs in front-to-back order from the camera, one more each frame's share of
-    ORDER_SECONDS; the nearest brightest."""
+    """The segs in front-to-back order from the camera, a growing share of them over
+    ORDER_SECONDS: the nearest white, fading to orange with distance in the order, and the
+    frontier (the last few reached) red."""
     from wallbsp.editor.preview import camera_point
     cx, cy = camera_point(session)
     order = overlay.tree.front_to_back(cx, cy)
     if not order:
         return
-    shown = int(len(order) * ((time.perf_counter() % ORDER_SECONDS) / ORDER_SECONDS)) + 1
-    segs = overlay.tree.seg_xy[order[:shown]]
-    xy = session.view.screen_array(segs).tolist()
     n = len(order)
+    shown = int(n * ((time.perf_counter() % ORDER_SECONDS) / ORDER_SECONDS)) + 1
+    xy = session.view.screen_array(overlay.tree.seg_xy[order[:shown]]).tolist()
+    frontier = max(1, n // 50)
     for rank, (x1, y1, x2, y2) in enumerate(xy):
-        fade = 1.0 - 0.8 * rank / n
-        pygame.draw.line(surface, (int(255 * fade), int(230 * fade), 60), (x1, y1), (x2, y2), 3)
+        if rank >= shown - frontier:
+            color = (255, 60, 40)
+        else:
+            t = rank / n
+            color = (255, int(255 - 120 * t), int(255 - 255 * t))
+        pygame.draw.line(surface, color, (x1, y1), (x2, y2), 3)
     px, py = session.view.to_screen(cx, cy)
-    pygame.draw.circle(surface, (255, 255, 255), (px, py), 5, 1)
+    pygame.draw.circle(surface, (255, 255, 255), (px, py), 6, 2)
+    text = session.small_font.render(f"front to back: {shown} of {n} segs", True,
+                                     COLORS["text"])
+    surface.blit(text, (px + 10, py + 8))
 
 
 def _problems(session, surface, overlay):

@@ -29,7 +29,7 @@ def open_session(source=None, size=DEFAULT_SIZE, editor=None, live_tree=True) ->
     """A session on ``source`` (a level file, ``WAD:MAP`` or None: a new level) in a window
     of ``size``; ``editor``: a model already made."""
     if editor is None:
-        editor = Editor.open(source) if source else Editor()
+        editor = _editor_for(source)
     pygame.display.init()
     pygame.font.init()
     display = pygame.display.set_mode(size, pygame.RESIZABLE)
@@ -49,6 +49,19 @@ def open_session(source=None, size=DEFAULT_SIZE, editor=None, live_tree=True) ->
         session.compiler = LiveTree(editor)
     _caption(session)
     return session
+
+
+def _editor_for(source):
+    """An editor on ``source``; a ``.json`` path that does not exist yet is a new level
+    that saves there (as an editor's "new file")."""
+    from pathlib import Path
+    from wallbsp.edit import empty_level
+    if not source:
+        return Editor()
+    path = Path(source)
+    if path.suffix.lower() == ".json" and not path.exists() and ":" not in path.name:
+        return Editor(empty_level(path.stem), path)
+    return Editor.open(source)
 
 
 def _caption(session):
