@@ -68,15 +68,18 @@ def test_thing_kinds_come_from_dooms_mobjinfo():
     assert types[0] == 1 and 3004 in types and len(set(types)) == len(types)
 
 
-def test_edit_command_runs_headless_and_refuses_a_missing_file(tmp_path, capsys,
-                                                               monkeypatch):
+def test_edit_command_runs_headless_and_refuses_bad_input(tmp_path, capsys, monkeypatch):
     from wallbsp.app.cli import main
     monkeypatch.setenv("SDL_VIDEODRIVER", "dummy")
     assert main(["edit", "--frames", "2"]) == 0
-    missing = tmp_path / "nowhere.json"
-    assert main(["edit", str(missing), "--frames", "1"]) == 2
-    err = capsys.readouterr().err.strip().splitlines()
-    assert len(err) == 1 and "nowhere.json" in err[0]
+    fresh = tmp_path / "new.json"             # a level to be: opens empty, nothing written
+    assert main(["edit", str(fresh), "--frames", "1"]) == 0 and not fresh.exists()
+    broken = tmp_path / "broken.json"
+    broken.write_text("{not json")
+    for bad in (str(broken), str(tmp_path / "nowhere.wad") + ":MAP01"):
+        assert main(["edit", bad, "--frames", "1"]) == 2
+        err = capsys.readouterr().err.strip().splitlines()
+        assert len(err) == 1 and ("broken.json" in err[0] or "nowhere.wad" in err[0])
 
 
 def test_edit_without_a_display_is_a_usage_error(capsys, monkeypatch):
