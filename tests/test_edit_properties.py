@@ -1,4 +1,5 @@
-"""Random sequences of edits (hypothesis): draw, split, merge, move, delete, undo, redo.
+"""Random sequences of edits (hypothesis): draw, split, merge, move, mirror, rotate,
+copy and paste, join, heights, delete, undo, redo.
 Every accepted edit leaves a level that loads without warnings (no crossing or overlapping
 walls), has every sector closed and every wall's sides facing the sectors that are there,
 and compiles to a valid tree; a refused edit changes nothing; undo gives back the exact
@@ -30,6 +31,14 @@ step = st.one_of(
                                          st.integers(-3, 3), st.integers(-3, 3))),
     st.tuples(st.just("delete"), st.tuples(st.sampled_from(["vertices", "lines", "sectors"]),
                                            st.integers(0, 10 ** 6))),
+    st.tuples(st.just("turn"), st.tuples(st.sampled_from(["vertices", "lines", "sectors"]),
+                                         st.integers(0, 10 ** 6),
+                                         st.sampled_from(["x", "y", 90, 45, 180]))),
+    st.tuples(st.just("paste"), st.tuples(st.integers(0, 10 ** 6), st.integers(-8, 8),
+                                          st.integers(-8, 8))),
+    st.tuples(st.just("join"), st.tuples(st.integers(0, 10 ** 6), st.integers(0, 10 ** 6),
+                                         st.booleans())),
+    st.tuples(st.just("height"), st.tuples(st.integers(0, 10 ** 6), st.integers(-64, 64))),
     st.tuples(st.just("undo"), st.just(())),
     st.tuples(st.just("redo"), st.just(())),
 )
@@ -61,6 +70,24 @@ def apply(ed: Editor, kind: str, args) -> None:
                  "sectors": len(level.sectors)}[mode]
         if count:
             ed.delete(ed.select(mode, i % count))
+    elif kind == "turn":
+        mode, i, how = args
+        count = {"vertices": len(level.vertices), "lines": len(level.walls),
+                 "sectors": len(level.sectors)}[mode]
+        if count:
+            chosen = ed.select(mode, i % count)
+            ed.mirror(how, chosen) if how in ("x", "y") else ed.rotate(how, chosen)
+    elif kind == "paste" and level.sectors:
+        i, dx, dy = args
+        ed.copy(ed.select("sectors", i % len(level.sectors)))
+        ed.paste(dx * GRID, dy * GRID)
+    elif kind == "join" and len(level.sectors) > 1:
+        a, b, remove = args
+        chosen = [a % len(level.sectors), b % len(level.sectors)]
+        (ed.merge_sectors if remove else ed.join_sectors)(chosen)
+    elif kind == "height" and level.sectors:
+        i, floor = args
+        ed.set_sector([i % len(level.sectors)], floor=floor)
     elif kind == "undo":
         ed.undo()
     elif kind == "redo":

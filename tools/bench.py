@@ -32,6 +32,7 @@ BENCHMARKS = {
     "hud": ("hud", "the status bar, weapon, messages and flashes: CPU ms a frame and a tic"),
     "game": ("game", "the walkthrough as a game on E1M1 under X: frames/s, HUD and sound ms"),
     "editor": ("editor", "the editor's window on MAP12: redraw and preview fps, pick ms"),
+    "edit": ("editmodel", "the editor's model on MAP12: picks, commands, compile beside peers"),
 }
 
 

@@ -25,6 +25,8 @@ class WallArrays(NamedTuple):
     front: np.ndarray
     back: np.ndarray
     key: np.ndarray
+    ylo: np.ndarray
+    yhi: np.ndarray
 
     @property
     def x1(self):
@@ -76,5 +78,6 @@ def _make(level: Level) -> WallArrays:
         key = (seg[:, 0] * np.int64(0x9E3779B97F4A7C1) + seg[:, 1] * np.int64(0x7F4A7C15)
                + seg[:, 2] * np.int64(0x94D049BB133111E) + seg[:, 3] * np.int64(0xBF58476D1CE4E5)
                + (ends[:, 3] < 0))
-    return WallArrays(seg, seg.astype(np.float64), ends[:, 0], ends[:, 1], ends[:, 2],
-                      ends[:, 3], key)
+    fseg = seg.astype(np.float64)
+    return WallArrays(seg, fseg, ends[:, 0], ends[:, 1], ends[:, 2], ends[:, 3], key,
+                      np.minimum(fseg[:, 1], fseg[:, 3]), np.maximum(fseg[:, 1], fseg[:, 3]))

@@ -127,14 +127,29 @@ def _changes(before: Level, after: Level):
     """The walls of ``after`` that are new or moved or changed between one and two sides,
     and the box around them and the walls they replaced (None: no wall changed)."""
     old, new = wall_arrays(before), wall_arrays(after)
-    changed = np.flatnonzero(~np.isin(new.key, old.key))
-    gone = np.flatnonzero(~np.isin(old.key, new.key))
+    changed = np.flatnonzero(_more_of(new.key, old.key))
+    gone = np.flatnonzero(_more_of(old.key, new.key))
     if not len(changed) and not len(gone):
         return changed, None
     ends = np.vstack((new.seg[changed][:, :2], new.seg[changed][:, 2:],
                       old.seg[gone][:, :2], old.seg[gone][:, 2:]))
     lo, hi = ends.min(axis=0), ends.max(axis=0)
     return changed, (int(lo[0]), int(lo[1]), int(hi[0]), int(hi[1]))
+
+
+def _more_of(keys: np.ndarray, others: np.ndarray) -> np.ndarray:
+    """Which of ``keys`` have no match in ``others``, counting repeats (a wall pasted onto
+    its original has the same key, but there are now two)."""
+    values, counts = np.unique(keys, return_counts=True)
+    if not len(values):
+        return np.zeros(0, dtype=bool)
+    theirs = np.zeros(len(values), dtype=np.int64)
+    found, where = np.unique(others, return_counts=True)
+    at = np.searchsorted(values, found)
+    ok = (at < len(values)) & (values[np.minimum(at, len(values) - 1)] == found)
+    theirs[at[ok]] = where[ok]
+    extra = counts > theirs
+    return np.isin(keys, values[extra])
 
 
 def _spread(walls: np.ndarray, limit: int) -> list[int]:

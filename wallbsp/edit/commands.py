@@ -135,7 +135,7 @@ class Commands:
             back_gone = w.back is None or w.back in items
             if front_gone and back_gone:
                 continue
-            if front_gone or back_gone:
+            if w.back is not None and (front_gone or back_gone):
                 w = one_sided(w, keep_front=not front_gone, texture=self.style.wall_texture)
             walls.append(w)
         d.walls = walls

@@ -10,6 +10,8 @@ from __future__ import annotations
 
 from fractions import Fraction
 
+import math
+
 import numpy as np
 
 from wallbsp.edit.arrays import WallArrays, wall_arrays
@@ -34,42 +36,54 @@ def sector_at(level: Level, x, y, arrays: WallArrays | None = None, direction: i
     if not len(arrays.seg):
         return None
     fy, fx = float(y), float(x)
-    lo, hi = np.minimum(arrays.y1, arrays.y2), np.maximum(arrays.y1, arrays.y2)
-    near = np.flatnonzero((lo <= fy + 1e-6) & (hi >= fy - 1e-6) & (hi > lo))
+    near = np.flatnonzero((arrays.ylo <= fy + 1e-6) & (arrays.yhi >= fy - 1e-6)
+                          & (arrays.yhi > arrays.ylo))
     if not len(near):
         return None
-    t = (fy - arrays.y1[near]) / (arrays.y2[near] - arrays.y1[near])
-    cross = arrays.x1[near] + t * (arrays.x2[near] - arrays.x1[near])
-    cross = cross * direction
+    x1, y1, x2, y2 = (arrays.fseg[near, k] for k in range(4))
+    cross = direction * (x1 + (fy - y1) / (y2 - y1) * (x2 - x1))
     ahead = cross >= direction * fx - 1e-6 * max(1.0, abs(fx))
     near, cross = near[ahead], cross[ahead]
     order = np.argsort(cross, kind="stable")
-    return _nearest_exact(level, near[order].tolist(), cross[order].tolist(), x, y, direction)
+    return _nearest_exact(level, arrays, near[order].tolist(), cross[order].tolist(), x, y,
+                          direction)
 
 
 _NUDGE = Fraction(1, 1 << 40)
 
 
-def _nearest_exact(level: Level, walls: list, floats: list, x: Fraction, y: Fraction,
-                   direction: int):
+def _nearest_exact(level: Level, arrays, walls: list, floats: list, x: Fraction,
+                   y: Fraction, direction: int):
     """Among walls the ray may meet (by their crossing in floats, nearest first), the side
-    facing the point of the one it meets first, decided in rationals."""
-    best = None
+    facing the point of the one it meets first, decided exactly in integers: the point is
+    ``(xn / d, yn / d)``; a crossing is kept as a fraction ``num / den``, ``den > 0``."""
+    d = x.denominator * y.denominator // math.gcd(x.denominator, y.denominator)
+    xn, yn = x.numerator * (d // x.denominator), y.numerator * (d // y.denominator)
+    seg = arrays.seg
+    best = None                         # (num, den, wall): the crossing's x times direction
     for i, near in zip(walls, floats):
-        if best is not None and near > float(best[0]) + 1e-6 * max(1.0, abs(near)):
+        if best is not None and near > best[3] + 1e-6 * max(1.0, abs(near)):
             break
-        w = level.walls[i]
-        (x1, y1), (x2, y2) = level.vertices[w.v1], level.vertices[w.v2]
-        if not (min(y1, y2) < y < max(y1, y2)):
+        x1, y1, x2, y2 = seg[i].tolist()
+        if not (min(y1, y2) * d < yn < max(y1, y2) * d):
             continue
-        cx = direction * (x1 + (y - y1) * Fraction(x2 - x1, y2 - y1))
-        if cx >= direction * x and (best is None or cx < best[0]):
-            best = (cx, i)
+        # crossing x = x1 + (y - y1) (x2 - x1) / (y2 - y1), times direction, over d (y2 - y1)
+        dy = y2 - y1
+        num = direction * (x1 * dy * d + (yn - y1 * d) * (x2 - x1))
+        den = dy * d
+        if den < 0:
+            num, den = -num, -den
+        if num * d < direction * xn * den:
+            continue                     # behind the point
+        if best is None or num * best[1] < best[0] * den:
+            best = (num, den, i, num / den)
     if best is None:
         return None
-    w = level.walls[best[1]]
-    (x1, y1), (x2, y2) = level.vertices[w.v1], level.vertices[w.v2]
-    return w.front if orient((x1, y1), (x2, y2), (x, y)) <= 0 else w.back
+    i = best[2]
+    x1, y1, x2, y2 = seg[i].tolist()
+    w = level.walls[i]
+    side = (x2 - x1) * (yn - y1 * d) - (y2 - y1) * (xn - x1 * d)
+    return w.front if side <= 0 else w.back
 
 
 def beside(level: Level, wall: int, front: bool = True):
