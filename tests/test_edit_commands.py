@@ -10,6 +10,7 @@ import wallbsp
 from wallbsp.edit import Editor, EditError, Style
 from wallbsp.edit.checks import unclosed_sectors
 from wallbsp.edit.locate import sector_at
+from wallbsp.level.model import Side
 from wallbsp.level.io import dumps_level, level_from_dict, level_to_dict, load_level
 
 
@@ -233,3 +234,14 @@ def test_saved_levels_round_trip_through_the_loader():
     ed, west, east = two_rooms()
     again = level_from_dict(level_to_dict(ed.level))
     assert again == ed.level and again.warnings == []
+
+
+def test_deleting_a_sector_leaves_the_other_walls_as_they_were():
+    ed, west, east = two_rooms()
+    far = ed.draw_rectangle(2000, 0, 2256, 256)
+    outer = [i for i, w in enumerate(ed.level.walls) if w.front == far]
+    ed.set_line(outer, blocks=True, front_side={"middle": "BRICK1", "lower": "X"})
+    ed.delete(ed.select("sectors", east))
+    after = [w for w in ed.level.walls if ed.level.vertices[w.v1][0] >= 2000]
+    assert len(after) == 4
+    assert all(w.blocks and w.front_side == Side(middle="BRICK1", lower="X") for w in after)
