@@ -105,7 +105,7 @@ def assert_sound(level):
             assert sector_at(level, x, y, direction=-1) == sector
 
 
-@settings(max_examples=60, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@settings(max_examples=40, deadline=None, suppress_health_check=[HealthCheck.too_slow])
 @given(st.lists(step, min_size=1, max_size=12))
 def test_random_edits_keep_the_level_sound_and_undo_is_exact(steps):
     ed = Editor()

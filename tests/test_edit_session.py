@@ -32,7 +32,7 @@ def build(ed: Editor) -> dict:
     stairs = ed.draw_rectangle(128, 512, 256, 704)        # between the west and north rooms
     ed.make_door(door, texture="DOOR1", track="DOORTRAK")
     ed.make_lift(lift)
-    steps = ed.make_stairs(stairs, step=16, count=8)
+    steps = ed.make_stairs(stairs, step=16, count=8, texture="STEP1")
     ed.set_start(256, 256, 0)
     ed.add_thing(256, 256, 1, angle=0)                    # player 1 start
     ed.add_thing(960, 900, 3004, angle=270, ambush=True)  # zombiemen up north
@@ -87,6 +87,11 @@ def test_the_smart_tools_made_what_doom_needs(session):
     assert below and all(w.special == 62 and w.tag == lift.tag for w in below)
     floors = [level.sectors[s].floor for s in names["steps"]]
     assert floors == [16 * (k + 1) for k in range(8)]
+    risers = [w for w in level.walls if w.back is not None and w.front in names["steps"]
+              and w.back in names["steps"]]
+    assert len(risers) == 7
+    assert all((w.front_side if level.sectors[w.front].floor < level.sectors[w.back].floor
+                else w.back_side).lower == "STEP1" for w in risers)
     # the sill's wall parts show textures on both sides
     sill = [w for w in level.walls if names["window"] in (w.front, w.back) and w.back is not None]
     assert len(sill) == 2

@@ -129,12 +129,14 @@ class SmartTools:
         self.commit(self.filled(level, {s}), label="make lift")
         return tag
 
-    def make_stairs(self, sectors=None, step: float = 16, count: int | None = None) -> list:
+    def make_stairs(self, sectors=None, step: float = 16, count: int | None = None,
+                    texture: str | None = None) -> list:
         """Stairs: each sector's floor ``step`` above the one before, the first ``step``
         above the lowest floor next to it, ceilings raised where the player would not fit
         on a step or under the next one's edge.  Given one rectangular sector and
         ``count``, it is first cut into ``count`` strips across its longer side, the first
-        strip at the lower end.  The stairs' sectors, bottom to top."""
+        strip at the lower end.  ``texture``: the risers' (the lower textures the steps
+        show).  The stairs' sectors, bottom to top."""
         if isinstance(sectors, Selection):
             items = sorted(sectors.items)
         elif sectors is None or isinstance(sectors, int):
@@ -157,9 +159,10 @@ class SmartTools:
             # room to stand on this step and to go up to the next one
             new[s] = dataclasses.replace(new[s], floor=floor,
                                          ceiling=max(new[s].ceiling, floor + step + 56))
-        level = dataclasses.replace(self.level, sectors=new)
-        self.commit(self.filled(level, set(items)),
-                    Selection("sectors", frozenset(items)), "make stairs")
+        level = self.filled(dataclasses.replace(self.level, sectors=new), set(items))
+        if texture is not None:
+            level = _risers(level, set(items), texture)
+        self.commit(level, Selection("sectors", frozenset(items)), "make stairs")
         return items
 
     def _lowest_next_to(self, sector: int, besides) -> float:
@@ -219,6 +222,20 @@ class SmartTools:
         pts = [tuple(p) for p in where]
         segs = list(zip(pts, pts[1:] + pts[:1]))
         return player_fits(segs, floor, ceiling)
+
+
+def _risers(level: Level, steps: set, texture: str) -> Level:
+    """The lower textures facing down the stairs, set to ``texture``."""
+    walls = list(level.walls)
+    for i, w in enumerate(walls):
+        if w.back is None or not ({w.front, w.back} & steps):
+            continue
+        front, back = level.sectors[w.front], level.sectors[w.back]
+        name = "front_side" if front.floor < back.floor else "back_side"
+        side = getattr(w, name)
+        if front.floor != back.floor and side is not None and side.lower is not None:
+            walls[i] = dataclasses.replace(w, **{name: dataclasses.replace(side, lower=texture)})
+    return dataclasses.replace(level, walls=walls)
 
 
 def _chain(level: Level, items: list) -> list:
