@@ -74,3 +74,31 @@ def test_a_crossing_off_the_grid_is_refused_and_changes_nothing():
 def test_a_self_crossing_shape_is_refused():
     with pytest.raises(EditError, match="crosses itself"):
         Editor().draw_shape([(0, 0), (100, 100), (100, 0), (0, 100)])
+
+
+def test_a_line_across_a_room_splits_it_and_the_left_side_is_new():
+    ed = Editor()
+    room = ed.draw_rectangle(0, 0, 512, 512)
+    pillar = ed.draw_rectangle(400, 400, 450, 450)
+    ed.delete(ed.select("sectors", pillar))
+    old, new = ed.draw_line([(0, 256), (256, 256), (256, 512)])     # an L to the north wall
+    assert (old, new) == (room, 1)
+    tree = sound(ed.level)
+    assert tree.locate(100, 400) == new and tree.locate(100, 100) == old
+    assert tree.locate(420, 420) is None and tree.locate(300, 300) == old
+    path = [w for w in ed.level.walls if w.back is not None]
+    assert len(path) == 2 and all(w.front == old and w.back == new for w in path)
+
+
+@pytest.mark.parametrize("line, why", [
+    ([(10, 10), (100, 100)], "on no wall"),
+    ([(0, 100), (600, 100)], "meets walls"),
+    ([(0, 100), (0, 300)], "runs along"),
+])
+def test_a_line_that_does_not_cut_a_room_cleanly_is_refused(line, why):
+    ed = Editor()
+    ed.draw_rectangle(0, 0, 512, 512)
+    before = ed.level
+    with pytest.raises(EditError, match=why):
+        ed.draw_line(line)
+    assert ed.level is before

@@ -1,4 +1,4 @@
-"""Random sequences of edits (hypothesis): draw, split, merge, move, mirror, rotate,
+"""Random sequences of edits (hypothesis): draw shapes and lines, split, merge, move, mirror, rotate,
 copy and paste, join, heights, delete, undo, redo.
 Every accepted edit leaves a level that loads without warnings (no crossing or overlapping
 walls), has every sector closed and every wall's sides facing the sectors that are there,
@@ -24,6 +24,8 @@ def rectangle():
 step = st.one_of(
     st.tuples(st.just("rect"), rectangle()),
     st.tuples(st.just("triangle"), st.tuples(coord, coord, coord, coord, coord, coord)),
+    st.tuples(st.just("line"), st.tuples(st.integers(0, 10 ** 6), st.integers(0, 10 ** 6),
+                                         st.integers(1, 3), st.integers(1, 3))),
     st.tuples(st.just("split"), st.tuples(st.integers(0, 10 ** 6), st.integers(1, 3))),
     st.tuples(st.just("merge"), st.tuples(st.integers(0, 10 ** 6), st.integers(0, 10 ** 6))),
     st.tuples(st.just("move"), st.tuples(st.sampled_from(["vertices", "lines", "sectors"]),
@@ -50,6 +52,13 @@ def apply(ed: Editor, kind: str, args) -> None:
         ed.draw_rectangle(*args)
     elif kind == "triangle":
         ed.draw_shape([args[0:2], args[2:4], args[4:6]])
+    elif kind == "line" and len(level.walls) > 1:
+        ends = []
+        for i, k in ((args[0], args[2]), (args[1], args[3])):
+            w = level.walls[i % len(level.walls)]
+            (x1, y1), (x2, y2) = level.vertices[w.v1], level.vertices[w.v2]
+            ends.append((x1 + (x2 - x1) * k // 4, y1 + (y2 - y1) * k // 4))
+        ed.draw_line(ends)
     elif kind == "split" and level.walls:
         i, k = args[0] % len(level.walls), args[1]
         w = level.walls[i]

@@ -19,6 +19,7 @@ from wallbsp.edit.draft import EditError
 from wallbsp.edit.picking import Picker
 from wallbsp.edit.selection import MODES, Selection
 from wallbsp.edit.shapes import Style, draw_shape
+from wallbsp.edit.splitting import split_sector
 from wallbsp.edit import clipboard, commands, properties, smart, storage
 from wallbsp.edit.problems import problems
 from wallbsp.level.model import Level, Start
@@ -99,6 +100,13 @@ class Editor(commands.Commands, clipboard.Clipboard, properties.Properties, smar
         level, sector = draw_shape(self.level, points, self.style)
         self.commit(level, Selection("sectors", frozenset({sector})), "draw shape")
         return sector
+
+    def draw_line(self, points) -> tuple[int, int]:
+        """Split a sector along an open line of points whose ends lie on its walls: the
+        part on the line's left becomes a new sector (a copy); ``(old, new)``, selected."""
+        level, old, new = split_sector(self.level, points, self.style.wall_color)
+        self.commit(level, Selection("sectors", frozenset({old, new})), "split sector")
+        return old, new
 
     def draw_rectangle(self, x0, y0, x1, y1) -> int:
         if x0 == x1 or y0 == y1:

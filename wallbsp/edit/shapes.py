@@ -18,9 +18,7 @@ sector on both sides is two-sided, its middle texture moved to its upper and low
 """
 from __future__ import annotations
 
-import bisect
 import dataclasses
-import math
 from collections import Counter
 from fractions import Fraction
 
@@ -28,8 +26,9 @@ import numpy as np
 
 from wallbsp.edit.arrays import wall_arrays
 from wallbsp.edit.draft import Draft, EditError
-from wallbsp.edit.locate import inside_polygon, orient, sector_at
-from wallbsp.edit.polygon import clean_polygon, strictly_between
+from wallbsp.edit.locate import inside_polygon, sector_at
+from wallbsp.edit.faces import NEW, Edges, along, faces_with_holes, meetings
+from wallbsp.edit.polygon import clean_polygon
 from wallbsp.level.model import Level, Sector, Side, Wall
 
 __all__ = ["draw_shape", "Style"]
@@ -59,44 +58,16 @@ def _cut_points(level: Level, poly: list):
         c, d = (int(seg[w, 0]), int(seg[w, 1])), (int(seg[w, 2]), int(seg[w, 3]))
         for k in range(n):
             a, b = poly[k], poly[(k + 1) % n]
-            for where, point in _meetings(a, b, c, d, w):
+            for where, point in meetings(a, b, c, d, w):
                 (edge_cuts[k] if where == "edge" else wall_cuts.setdefault(w, set())).add(point)
     return edge_cuts, wall_cuts
-
-
-def _meetings(a, b, c, d, wall: int):
-    """(``"edge"`` or ``"wall"``, point) for each place the outline edge ab must be cut at
-    to meet wall cd, or the wall at to meet the edge."""
-    if max(a[0], b[0]) < min(c[0], d[0]) or max(c[0], d[0]) < min(a[0], b[0]) \
-            or max(a[1], b[1]) < min(c[1], d[1]) or max(c[1], d[1]) < min(a[1], b[1]):
-        return []
-    o1, o2, o3, o4 = orient(a, b, c), orient(a, b, d), orient(c, d, a), orient(c, d, b)
-    if o1 * o2 < 0 and o3 * o4 < 0:
-        t = Fraction(o3, o3 - o4)
-        x, y = a[0] + t * (b[0] - a[0]), a[1] + t * (b[1] - a[1])
-        if x.denominator != 1 or y.denominator != 1:
-            raise EditError(f"the shape crosses walls[{wall}] at ({float(x):.2f}, "
-                            f"{float(y):.2f}), off the integer grid: put a point there")
-        point = (int(x), int(y))
-        return [("edge", point), ("wall", point)]
-    found = []
-    for o, (p, q, r, where) in ((o1, (a, b, c, "edge")), (o2, (a, b, d, "edge")),
-                                (o3, (c, d, a, "wall")), (o4, (c, d, b, "wall"))):
-        if o == 0 and strictly_between(p, q, r):
-            found.append((where, r))
-    return found
-
-
-def _along(a, b, p) -> Fraction:
-    dx, dy = b[0] - a[0], b[1] - a[1]
-    return Fraction((p[0] - a[0]) * dx + (p[1] - a[1]) * dy, dx * dx + dy * dy)
 
 
 def _split_walls(d: Draft, wall_cuts: dict) -> None:
     for w, points in sorted(wall_cuts.items()):
         a, b = d.vertices[d.walls[w].v1], d.vertices[d.walls[w].v2]
         current = w
-        for p in sorted(points, key=lambda p: _along(a, b, p)):
+        for p in sorted(points, key=lambda p: along(a, b, p)):
             current = d.split_wall(current, d.vertex(*p))
 
 
@@ -104,7 +75,7 @@ def _outline_pieces(d: Draft, poly: list, edge_cuts: list) -> list[tuple[int, in
     pieces = []
     for k, a in enumerate(poly):
         b = poly[(k + 1) % len(poly)]
-        chain = [a] + sorted(edge_cuts[k], key=lambda p: _along(a, b, p)) + [b]
+        chain = [a] + sorted(edge_cuts[k], key=lambda p: along(a, b, p)) + [b]
         ids = [d.vertex(*p) for p in chain]
         pieces.extend(zip(ids, ids[1:]))
     return pieces
@@ -113,60 +84,6 @@ def _outline_pieces(d: Draft, poly: list, edge_cuts: list) -> list[tuple[int, in
 # ---------------------------------------------------------------------------------------
 # Faces inside the outline
 
-class _Edges:
-    """The edges inside the outline or on it, as half-edges with their face on the right."""
-
-    def __init__(self, d: Draft):
-        self.d = d
-        self.half = []          # (from, to, wall or None, on the outline?)
-        self.out: dict[int, list] = {}
-
-    def add(self, u: int, v: int, wall, outline: bool) -> None:
-        self.half.append((u, v, wall, outline))
-
-    def angle(self, u: int, v: int) -> float:
-        (x1, y1), (x2, y2) = self.d.vertices[u], self.d.vertices[v]
-        return math.atan2(y2 - y1, x2 - x1)
-
-    def faces(self) -> list[list[int]]:
-        """The cycles of half-edges (a face on the right of each), by tracing."""
-        for h, (u, v, _, _) in enumerate(self.half):
-            self.out.setdefault(u, []).append((self.angle(u, v), h))
-        for items in self.out.values():
-            items.sort()
-        seen, cycles = set(), []
-        for start in range(len(self.half)):
-            if start in seen:
-                continue
-            cycle, h = [], start
-            while h not in seen:
-                seen.add(h)
-                cycle.append(h)
-                h = self._next(h)
-            cycles.append(cycle)
-        return cycles
-
-    def _next(self, h: int) -> int:
-        u, v, _, _ = self.half[h]
-        items = self.out[v]
-        # turn as far right as there is: the first edge counter-clockwise from the way back
-        at = bisect.bisect_right(items, (self.angle(v, u), math.inf))
-        return items[at % len(items)][1]
-
-    def area2(self, cycle: list) -> int:
-        pts = [self.d.vertices[self.half[h][0]] for h in cycle]
-        return sum(a[0] * b[1] - b[0] * a[1] for a, b in zip(pts, pts[1:] + pts[:1]))
-
-    def old_sector_of(self, h: int):
-        """The sector the half-edge's right side faced before, if it lies on a wall."""
-        u, _, wall, _ = self.half[h]
-        if wall is None:
-            return _NEW
-        w = self.d.walls[wall]
-        return w.front if w.v1 == u else w.back
-
-
-_NEW = object()     # a half-edge of a new outline piece: it says nothing of the old sector
 
 
 # ---------------------------------------------------------------------------------------
@@ -185,7 +102,7 @@ def draw_shape(level: Level, points, style: Style = Style()) -> tuple[Level, int
         + list(range(n_old, len(d.walls)))
     edges = _gather_edges(d, poly, pieces, near)
     cycles = edges.faces()
-    faces = _faces_with_holes(edges, cycles)
+    faces = faces_with_holes(edges, cycles)
     old = {id(f): _old_sector(level, edges, f) for f in faces}
     carved = _carved(d, edges, faces, old, n_old)
     new = len(d.sectors)
@@ -202,9 +119,9 @@ def draw_shape(level: Level, points, style: Style = Style()) -> tuple[Level, int
     return d.level(), new
 
 
-def _gather_edges(d: Draft, poly: list, pieces: list, near: list) -> _Edges:
+def _gather_edges(d: Draft, poly: list, pieces: list, near: list) -> Edges:
     """The outline's pieces and the walls inside it (among ``near``)."""
-    edges = _Edges(d)
+    edges = Edges(d)
     by_ends = {}
     for i in near:
         w = d.walls[i]
@@ -231,27 +148,9 @@ def _gather_edges(d: Draft, poly: list, pieces: list, near: list) -> _Edges:
     return edges
 
 
-def _faces_with_holes(edges: _Edges, cycles: list) -> list[list]:
-    """Faces as lists of cycles: each clockwise cycle (a face's outer boundary) with the
-    counter-clockwise cycles (islands of walls) that lie directly inside it."""
-    outer = [c for c in cycles if edges.area2(c) < 0]
-    faces = {id(c): [c] for c in outer}
-    vertices = edges.d.vertices
-    polys = {id(c): [vertices[edges.half[h][0]] for h in c] for c in outer}
-    for c in cycles:
-        if edges.area2(c) < 0:
-            continue
-        p = vertices[edges.half[c[0]][0]]
-        around = [o for o in outer if inside_polygon(polys[id(o)], p) > 0]
-        if around:
-            home = min(around, key=lambda o: -edges.area2(o))
-            faces[id(home)].append(c)
-    return list(faces.values())
-
-
-def _old_sector(level: Level, edges: _Edges, face: list):
+def _old_sector(level: Level, edges: Edges, face: list):
     votes = Counter(s for cycle in face for h in cycle
-                    if (s := edges.old_sector_of(h)) is not _NEW)
+                    if (s := edges.old_sector_of(h)) is not NEW)
     if votes:
         return votes.most_common(1)[0][0]
     # only new outline pieces: the face lies within one old face; look from inside it
@@ -264,7 +163,7 @@ def _old_sector(level: Level, edges: _Edges, face: list):
     return sector_at(level, x, y)
 
 
-def _carved(d: Draft, edges: _Edges, faces: list, old: dict, n_old: int) -> set:
+def _carved(d: Draft, edges: Edges, faces: list, old: dict, n_old: int) -> set:
     """The old sectors that also lie outside the outline."""
     inside = {h[2] for h in edges.half if h[2] is not None}
     arrays = wall_arrays(d.base)
@@ -301,7 +200,7 @@ def _template(level, faces, old, final, new, edges, style: Style) -> Sector:
     return style.sector
 
 
-def _assign_sides(d: Draft, edges: _Edges, faces, old, final, style: Style) -> None:
+def _assign_sides(d: Draft, edges: Edges, faces, old, final, style: Style) -> None:
     new = len(d.sectors) - 1
     right = {}
     for f in faces:
