@@ -44,6 +44,15 @@ class WallArrays(NamedTuple):
     def y2(self):
         return self.fseg[:, 3]
 
+    def across(self, y: float) -> np.ndarray:
+        """The walls whose y range may hold ``y`` (a superset, from horizontal bands of
+        ``BAND`` units made once): what a horizontal ray can meet."""
+        starts, items = _bands(self)
+        k = int(np.floor(y / BAND)) - _BAND_BASE
+        if not 0 <= k < len(starts) - 1:
+            return np.empty(0, dtype=np.int64)
+        return items[starts[k]:starts[k + 1]]
+
     def within(self, x0, y0, x1, y1) -> np.ndarray:
         """The walls whose bounding boxes meet the box."""
         s = self.seg
@@ -51,6 +60,32 @@ class WallArrays(NamedTuple):
                               & (np.maximum(s[:, 0], s[:, 2]) >= x0)
                               & (np.minimum(s[:, 1], s[:, 3]) <= y1)
                               & (np.maximum(s[:, 1], s[:, 3]) >= y0))
+
+
+BAND = 64
+_BAND_BASE = -(1 << 15)       # bands from y = -2**21 (the map's limit) upwards
+_BANDS: dict[int, tuple] = {}
+
+
+def _bands(arrays: WallArrays):
+    """(starts, walls): band k holds ``walls[starts[k]:starts[k + 1]]``, every wall whose
+    y range meets [k * BAND, (k + 1) * BAND] (k counted from ``_BAND_BASE``)."""
+    hit = _BANDS.get(id(arrays))
+    if hit is not None and hit[0] is arrays:
+        return hit[1]
+    lo = np.floor(arrays.ylo / BAND).astype(np.int64) - _BAND_BASE
+    hi = np.floor(arrays.yhi / BAND).astype(np.int64) - _BAND_BASE
+    count = hi - lo + 1
+    wall = np.repeat(np.arange(len(lo)), count)
+    band = lo[wall] + np.arange(len(wall)) - np.repeat(np.cumsum(count) - count, count)
+    order = np.argsort(band, kind="stable")
+    n = int(hi.max()) + 2 if len(hi) else 1
+    starts = np.searchsorted(band[order], np.arange(n + 1))
+    result = (starts, wall[order])
+    _BANDS[id(arrays)] = (arrays, result)
+    while len(_BANDS) > _KEEP:
+        _BANDS.pop(next(iter(_BANDS)))
+    return result
 
 
 _CACHE: dict[int, tuple] = {}

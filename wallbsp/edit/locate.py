@@ -36,8 +36,9 @@ def sector_at(level: Level, x, y, arrays: WallArrays | None = None, direction: i
     if not len(arrays.seg):
         return None
     fy, fx = float(y), float(x)
-    near = np.flatnonzero((arrays.ylo <= fy + 1e-6) & (arrays.yhi >= fy - 1e-6)
-                          & (arrays.yhi > arrays.ylo))
+    near = arrays.across(fy)
+    near = near[(arrays.ylo[near] <= fy + 1e-6) & (arrays.yhi[near] >= fy - 1e-6)
+                & (arrays.yhi[near] > arrays.ylo[near])]
     if not len(near):
         return None
     x1, y1, x2, y2 = (arrays.fseg[near, k] for k in range(4))
