@@ -148,6 +148,7 @@ def test_properties_one_or_many_and_bad_values():
     assert ed.level.walls[0].blocks and ed.level.walls[1].special == 1
     refused(ed, ed.set_sector, [west], light=300, match="light")
     refused(ed, ed.set_sector, [west], ceiling=math.nan)
+    refused(ed, ed.set_sector, [west], floor=200, match="above its ceiling")
     refused(ed, ed.set_line, [0], secret=True, match="secret")
     refused(ed, ed.set_line, [0], two_sided=True, match="no sector behind")
     refused(ed, ed.set_line, [0], back_side={"middle": "X"}, match="one-sided")

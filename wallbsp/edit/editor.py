@@ -148,6 +148,10 @@ class Editor(commands.Commands, clipboard.Clipboard, properties.Properties, smar
         """The nearest item of ``mode`` within ``radius`` map units of (x, y), or None."""
         return self.picker.pick(x, y, mode or self.selection.mode, radius)
 
+    def select_all(self, mode: str | None = None) -> Selection:
+        mode = mode or self.selection.mode
+        return self.select(mode, range(self._count(mode)))
+
     def clear_selection(self) -> None:
         self.selection = Selection(self.selection.mode)
 

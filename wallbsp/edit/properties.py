@@ -156,6 +156,9 @@ class Properties:
         new = list(self.level.sectors)
         for i in items:
             new[i] = dataclasses.replace(new[i], **change)
+            if new[i].floor > new[i].ceiling:
+                raise EditError(f"sectors[{i}]: floor {new[i].floor:g} would be above its "
+                                f"ceiling {new[i].ceiling:g}")
         level = dataclasses.replace(self.level, sectors=new)
         if {"floor", "ceiling"} & change.keys():
             level = self.filled(level, sectors=set(items))
