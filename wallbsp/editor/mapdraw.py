@@ -10,8 +10,6 @@ green, things as squares coloured by kind (``thingkinds``).
 """
 from __future__ import annotations
 
-import math
-
 import numpy as np
 import pygame
 
@@ -44,6 +42,11 @@ class LevelArrays:
         self.special = np.fromiter((bool(w.special) for w in level.walls), bool, n)
         self.vertices = np.array(level.vertices, np.float64).reshape(-1, 2)
         self.things = np.array([(t.x, t.y) for t in level.things], np.float64).reshape(-1, 2)
+        kinds = [kind_of(t.type) for t in level.things]
+        self.thing_radius = np.array([k.radius for k in kinds], np.float64)
+        self.thing_color = [k.color for k in kinds]
+        self.thing_dim = [tuple(int(c * DIM) for c in k.color) for k in kinds]
+        self.thing_angle = np.radians([t.angle for t in level.things])
 
     def bounds(self):
         pts = np.concatenate([self.vertices, self.things])
@@ -99,7 +102,7 @@ def draw_static(surface, view: View, arrays: LevelArrays, mode: str, under=None,
         over(surface, view)
     if mode == "vertices" or view.scale >= 0.5:
         draw_vertices(surface, view, arrays.vertices, mode == "vertices")
-    draw_things(surface, view, arrays.level.things, arrays.things, bright=mode == "things")
+    draw_things(surface, view, arrays, bright=mode == "things")
 
 
 def draw_grid(surface, view: View):
@@ -155,18 +158,22 @@ def draw_vertices(surface, view: View, vertices, large: bool):
         rect(color, (x - half, y - half, 2 * half + 1, 2 * half + 1))
 
 
-def draw_things(surface, view: View, things, xy_map, bright: bool):
-    if not len(things):
+def draw_things(surface, view: View, arrays: LevelArrays, bright: bool):
+    """Each thing on screen as a square of its radius, with a tick for its angle."""
+    if not len(arrays.things):
         return
-    xy = view.screen_array(xy_map)
-    for thing, (px, py) in zip(things, xy.tolist()):
-        kind = kind_of(thing.type)
-        r = max(2.0, kind.radius * view.scale)
-        if px < -r or py < -r or px > view.width + r or py > view.height + r:
-            continue
-        color = kind.color if bright else tuple(int(c * DIM) for c in kind.color)
-        pygame.draw.rect(surface, color, (px - r, py - r, 2 * r + 1, 2 * r + 1), 1)
-        if r >= 4:
-            a = math.radians(thing.angle)
-            pygame.draw.line(surface, color, (px, py),
-                             (px + r * math.cos(a), py - r * math.sin(a)))
+    xy = view.screen_array(arrays.things)
+    r = np.maximum(2.0, arrays.thing_radius * view.scale)
+    on = np.flatnonzero((xy[:, 0] + r >= 0) & (xy[:, 1] + r >= 0) &
+                        (xy[:, 0] - r <= view.width) & (xy[:, 1] - r <= view.height))
+    colors = arrays.thing_color if bright else arrays.thing_dim
+    rect, line = pygame.draw.rect, pygame.draw.line
+    ticks = r[on] >= 4
+    ends = xy[on] + np.stack([np.cos(arrays.thing_angle[on]), -np.sin(arrays.thing_angle[on])],
+                             axis=1) * r[on, None]
+    for i, (px, py), radius, tick, end in zip(on.tolist(), xy[on].tolist(), r[on].tolist(),
+                                              ticks.tolist(), ends.tolist()):
+        color = colors[i]
+        rect(surface, color, (px - radius, py - radius, 2 * radius + 1, 2 * radius + 1), 1)
+        if tick:
+            line(surface, color, (px, py), end)

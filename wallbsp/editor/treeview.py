@@ -200,10 +200,12 @@ def _leaf_under_mouse(session, surface, overlay):
     if len(cell) < 3:
         return
     pts = [session.view.to_screen(*p) for p in cell]
-    shade = pygame.Surface(surface.get_size(), pygame.SRCALPHA)
-    pygame.draw.polygon(shade, (*LEAF, 60), pts)
-    surface.blit(shade, (0, 0))
-    pygame.draw.polygon(surface, LEAF, pts, 1)
+    box = pygame.Rect(pygame.draw.polygon(surface, LEAF, pts, 1)).clip(surface.get_rect())
+    if box.width and box.height:        # a see-through fill the size of the cell only
+        shade = pygame.Surface(box.size, pygame.SRCALPHA)
+        pygame.draw.polygon(shade, (*LEAF, 60), [(x - box.x, y - box.y) for x, y in pts])
+        surface.blit(shade, box.topleft)
+        pygame.draw.polygon(surface, LEAF, pts, 1)
     where = "outside" if sector < 0 else f"sector {sector}"
     text = session.small_font.render(f"leaf {leaf}: {where}", True, LEAF)
     surface.blit(text, (session.mouse[0] + 14, session.mouse[1] + 10))

@@ -20,7 +20,7 @@ from wallbsp.editor.selection import hover_pick
 from wallbsp.editor.session import Session
 from wallbsp.editor.view import View
 
-__all__ = ["run_editor", "open_session", "step", "close_session"]
+__all__ = ["run_editor", "open_session", "step", "run_frames", "close_session"]
 
 DEFAULT_SIZE = (1280, 800)
 
@@ -79,15 +79,37 @@ def fit_view(session):
         session.view.resize((w - panel, h - STATUS_HEIGHT))
 
 
-def step(session, flip=True):
+def step(session, flip=True, events=None):
     """One frame: events, hover, the background compile's news, drawing."""
     fit_view(session)
-    for event in pygame.event.get():
+    for event in pygame.event.get() if events is None else events:
         handle(session, event)
     if session.compiler is not None:
         session.compiler.poll()
     update_hover(session)
     draw_frame(session, flip)
+
+
+IDLE_REDRAW = 0.25       # seconds: an idle window is drawn this often (a compile arriving)
+AUTOSAVE_SECONDS = 60.0
+
+
+def run_frames(session, frames=None):
+    """The window's loop: a frame when something happened (an event, an animation), else
+    a short sleep, so an editor left open costs next to nothing."""
+    clock = pygame.time.Clock()
+    last = saved = time.perf_counter()
+    while session.running and (frames is None or session.frames < frames):
+        events = pygame.event.get()
+        now = time.perf_counter()
+        busy = events or session.show_order or session.drag is not None or frames is not None
+        if busy or now - last > IDLE_REDRAW:
+            step(session, events=events)
+            last = now
+        if now - saved > AUTOSAVE_SECONDS and frames is None:
+            session.editor.autosave()        # only when the level changed since the last
+            saved = now
+        clock.tick(120 if busy else 30)
 
 
 def handle(session, event):
@@ -131,13 +153,7 @@ def run_editor(source=None, size=DEFAULT_SIZE, frames=None) -> int:
         os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
     session = open_session(source, size)
     try:
-        clock = pygame.time.Clock()
-        while session.running and (frames is None or session.frames < frames):
-            step(session)
-            autosave = getattr(session.editor, "autosave", None)
-            if autosave is not None and session.frames % 600 == 0:
-                autosave()
-            clock.tick(120)
+        run_frames(session, frames)
     finally:
         close_session(session)
     return session.frames
