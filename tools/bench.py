@@ -34,6 +34,8 @@ BENCHMARKS = {
     "checks": ("input_checks", "env steps/s with issue 34's input checks against a baseline, one process"),
     "newcomer": ("newcomer", "a scripted newcomer on the bundled level 1: runs alive at skill 2"),
     "startup": ("startup", "wallbsp walk WAD from a cold kernel cache: seconds to window, to play"),
+    "editor": ("editor", "the editor's window on MAP12: redraw and preview fps, pick ms"),
+    "edit": ("editmodel", "the editor's model on MAP12: picks, commands, compile beside peers"),
 }
 
 

@@ -217,9 +217,24 @@ def cmd_import_wad(args):
     print(f"{args.output}: {len(level.walls)} walls, {len(level.sectors)} sectors")
 
 
+def cmd_edit(args):
+    """The editor's window lives in ``wallbsp.editor`` (a layer above the app), so it is
+    reached by name."""
+    import importlib
+    from wallbsp.app.walkthrough import NoDisplayError, check_display
+    try:
+        if args.frames is None:
+            check_display()
+    except NoDisplayError as err:
+        raise UsageError(str(err).replace("walk", "edit", 1)) from None
+    importlib.import_module("wallbsp.editor.window").run_editor(args.level, args.size,
+                                                                args.frames)
+
+
 # -- the commands by name (their parser: cliargs) -------------------------------------------
 COMMANDS = {"walk": cmd_walk, "play": cmd_play, "compile": cmd_compile, "render": cmd_render,
-            "stats": cmd_stats, "draw": cmd_draw, "import-wad": cmd_import_wad}
+            "stats": cmd_stats, "draw": cmd_draw, "import-wad": cmd_import_wad,
+            "edit": cmd_edit}
 
 
 def main(argv=None) -> int:
