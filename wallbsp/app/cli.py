@@ -13,6 +13,7 @@ import time
 from wallbsp.app.cliargs import UsageError, build_parser
 from wallbsp.level.model import LevelError
 from wallbsp.app.outputs import OutputError, check_outputs, write_outputs
+from wallbsp.app.nodescli import cmd_export, cmd_nodes
 
 
 # -- loading what the user named ------------------------------------------------------------
@@ -241,7 +242,8 @@ def cmd_import_wad(args):
 
 # -- the commands by name (their parser: cliargs) -------------------------------------------
 COMMANDS = {"walk": cmd_walk, "play": cmd_play, "compile": cmd_compile, "render": cmd_render,
-            "stats": cmd_stats, "draw": cmd_draw, "import-wad": cmd_import_wad}
+            "stats": cmd_stats, "draw": cmd_draw, "import-wad": cmd_import_wad,
+            "nodes": cmd_nodes, "export": cmd_export}
 
 
 def main(argv=None) -> int:

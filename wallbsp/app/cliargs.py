@@ -207,4 +207,7 @@ def build_parser(commands) -> argparse.ArgumentParser:
     p.add_argument("map", help="map name, e.g. E1M1 or MAP01")
     p.add_argument("-o", "--output", required=True, metavar="LEVEL", help="level JSON to write")
     _finish(p, commands["import-wad"], build=False)
+
+    from wallbsp.app.nodescli import add_parsers      # nodes, export
+    add_parsers(sub, commands)
     return parser
