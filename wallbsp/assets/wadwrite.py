@@ -112,8 +112,9 @@ def _layout(magic: bytes, lumps: list[Lump], tail_gap: bytes) -> bytes:
         origin = lump.origin
         size = len(lump.data)
         raw = origin.raw_name if origin is not None else lump.name.encode("latin-1")
-        if not size:
-            pos = origin.pos if origin is not None else HEADER.size + len(body)
+        if not size:         # an empty lump's offset means nothing: keep it if it can be
+            here = HEADER.size + len(body)
+            pos = origin.pos if origin is not None and 0 <= origin.pos <= here else here
         elif origin is not None and (origin.pos, size) in shared:
             pos = shared[(origin.pos, size)]
         else:

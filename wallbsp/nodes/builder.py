@@ -102,6 +102,7 @@ def build_nodes(m: MapData, options: BuildOptions = BuildOptions()) -> Nodes:
         got = build_kernel(seg, n, lines, np.zeros(room * 8 * n + 64, np.int64),
                            np.zeros(cap, np.int64), node, leaf, leaf_segs,
                            np.zeros((cap, 5), np.int64), params,
+                           np.full(int(lines[:, 4].max()) + 1, -1, np.int64),
                            np.full(int(lines[:, 4].max()) + 1, -1, np.int64))
         if got[0] != FULL:
             break

@@ -21,11 +21,13 @@ FULL = -1          # a capacity ran out: the caller retries with more room
 
 
 @kernel
-def build_kernel(seg, nseg, lines, work, sides, node, leaf, leaf_segs, stack, params, tried):
+def build_kernel(seg, nseg, lines, work, sides, node, leaf, leaf_segs, stack, params, tried,
+                 banned):
     """Build the tree; returns ``(segs, nodes, leaves)`` or ``(FULL, 0, 0)``."""
     for i in range(nseg):
         work[i] = i
     nnode = nleaf = nleafseg = 0
+    tries = cells = 0
     # stack rows: start, count, free-from, parent node, slot
     stack[0, 0], stack[0, 1], stack[0, 2], stack[0, 3], stack[0, 4] = 0, nseg, nseg, -1, 0
     top = 1
@@ -33,12 +35,14 @@ def build_kernel(seg, nseg, lines, work, sides, node, leaf, leaf_segs, stack, pa
         top -= 1
         start, n, free = stack[top, 0], stack[top, 1], stack[top, 2]
         parent, slot = stack[top, 3], stack[top, 4]
+        cells += 1
         cell = work[start:start + n]
-        c = -1
-        if n > 1 or not one_sector(cell, n, seg):
-            c = choose_partition(cell, n, seg, lines, params, tried, nnode + nleaf)
         made = -1
-        if c >= 0:
+        while n > 1 or not one_sector(cell, n, seg):
+            tries += 1
+            c = choose_partition(cell, n, seg, lines, params, tried, tries, banned, cells)
+            if c < 0:
+                break
             if free + 2 * n + 2 > len(work) or nseg + n > len(seg) or nnode >= len(node) \
                     or top + 2 > len(stack):
                 return FULL, 0, 0
@@ -58,12 +62,12 @@ def build_kernel(seg, nseg, lines, work, sides, node, leaf, leaf_segs, stack, pa
                 stack[top + 1, 0], stack[top + 1, 1], stack[top + 1, 2] = free, nf, end
                 stack[top + 1, 3], stack[top + 1, 4] = made, 0
                 top += 2
-            else:                      # rounding put every seg on one side: a leaf after all
-                for i in range(nf + nb):
-                    cell_i = work[free + i]
-                    work[start + i] = cell_i
-                n = nf + nb
-                cell = work[start:start + n]
+                break
+            # rounding put every seg on one side: the cell (now above) tries another line
+            banned[plane] = cells
+            start, n = free, nf + nb
+            free += n
+            cell = work[start:start + n]
         if made < 0:
             if nleaf >= len(leaf) or nleafseg + n > len(leaf_segs):
                 return FULL, 0, 0

@@ -121,17 +121,18 @@ def seg_dir(s, seg, lines):
 
 
 @kernel
-def choose_partition(cell, n, seg, lines, params, tried, stamp):
+def choose_partition(cell, n, seg, lines, params, tried, stamp, banned, cell_id):
     """The index in ``cell`` of the cheapest partition seg, or -1 (nothing separates).
-    ``tried[plane] == stamp`` marks a line already scored for this cell (both sides of a
-    two-sided linedef, collinear linedefs: one line, one score)."""
+    ``tried[plane] == stamp`` marks a line already scored in this call (both sides of a
+    two-sided linedef, collinear linedefs: one line, one score); ``banned[plane] ==
+    cell_id`` a line that failed this cell (its cuts all rounded onto seg ends)."""
     candidates, split_cost, balance, diagonal_cost = params[0], params[1], params[2], params[3]
     step = max(1, n // candidates) if candidates > 0 else 1
     best, best_cost = -1, -1
     for rounds in range(2):
         for c in range(0, n, step):
             plane = lines[seg[cell[c], 4], 4]
-            if tried[plane] == stamp:
+            if tried[plane] == stamp or banned[plane] == cell_id:
                 continue
             tried[plane] = stamp
             cost = partition_cost(c, cell, n, seg, lines, split_cost, balance, diagonal_cost,
