@@ -13,6 +13,7 @@ import time
 from wallbsp.app.cliargs import UsageError, build_parser
 from wallbsp.level.model import LevelError
 from wallbsp.app.outputs import OutputError, check_outputs, write_outputs
+from wallbsp.app.nodescli import cmd_export, cmd_nodes
 
 
 # -- loading what the user named ------------------------------------------------------------
@@ -234,7 +235,7 @@ def cmd_edit(args):
 # -- the commands by name (their parser: cliargs) -------------------------------------------
 COMMANDS = {"walk": cmd_walk, "play": cmd_play, "compile": cmd_compile, "render": cmd_render,
             "stats": cmd_stats, "draw": cmd_draw, "import-wad": cmd_import_wad,
-            "edit": cmd_edit}
+            "edit": cmd_edit, "nodes": cmd_nodes, "export": cmd_export}
 
 
 def main(argv=None) -> int:

@@ -228,4 +228,7 @@ def build_parser(commands) -> argparse.ArgumentParser:
     p.add_argument("--frames", type=_bounded(1, 10 ** 7, _integer, "a whole number"),
                    default=None, help="run N frames headless and stop")
     _finish(p, commands["edit"], build=False)
+
+    from wallbsp.app.nodescli import add_parsers      # nodes, export
+    add_parsers(sub, commands)
     return parser
