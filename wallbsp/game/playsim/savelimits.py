@@ -83,11 +83,12 @@ def check_map_counts(saved: dict, loaded: dict) -> None:
 
 def check_loaded(play, thinkers) -> None:
     """The loaded state's indices and fixed lengths (module docstring)."""
+    tables = play.tables                 # the play's own (a game's actors, skill 5's speeds)
     for i, th in enumerate(thinkers):
         if isinstance(th, Mobj):
-            _check_mobj(th, f"thinkers[{i}]")
+            _check_mobj(th, tables, f"thinkers[{i}]")
     for k, p in enumerate(play.players):
-        _check_player(p, f"players[{k}]")
+        _check_player(p, tables, f"players[{k}]")
     for name, seq in (("sectors", play.sectors), ("sides", play.sides),
                       ("lines", play.lines)):
         for i, obj in enumerate(seq):
@@ -112,17 +113,17 @@ _PLAYER_LISTS = (("powers", NUMPOWERS), ("cards", NUMCARDS), ("frags", MAXPLAYER
                  ("weaponowned", NUMWEAPONS), ("ammo", NUMAMMO), ("maxammo", NUMAMMO))
 
 
-def _check_mobj(mo, where) -> None:
+def _check_mobj(mo, tables, where) -> None:
     _check_words(mo, _MOBJ_WORDS, where)
-    _index(mo, "type", info.NUMMOBJTYPES, where)
-    _index(mo, "state", info.NUMSTATES, where)
-    _index(mo, "sprite", info.NUMSPRITES, where)
+    _index(mo, "type", len(tables.mobjinfo), where)
+    _index(mo, "state", len(tables.states), where)
+    _index(mo, "sprite", len(tables.sprnames), where)
     _ranged(mo, "angle", 0, INT_HIGH, where)
     _ranged(mo, "flags", 0, INT_HIGH, where)
     _ranged(mo, "frame", 0, 0xFFFF, where)
     _ranged(mo, "tics", -1, INT32[1], where)
     _ranged(mo, "movedir", 0, 8, where)
-    if getattr(mo, "info", None) is not info.MOBJINFO[mo.type]:
+    if getattr(mo, "info", None) is not tables.mobjinfo[mo.type]:
         raise SaveError(f"{where}.info: not the mobjinfo of type {mo.type}")
     for name in ("target", "tracer"):
         value = getattr(mo, name, None)
@@ -137,7 +138,7 @@ def _check_mobj(mo, where) -> None:
     _check_words(spot, ("x", "y", "angle", "type", "options"), f"{where}.spawnpoint")
 
 
-def _check_player(p, where) -> None:
+def _check_player(p, tables, where) -> None:
     _check_words(p, _PLAYER_WORDS, where)
     _ranged(p, "playerstate", 0, 2, where)
     _ranged(p, "armortype", 0, 2, where)
@@ -163,7 +164,7 @@ def _check_player(p, where) -> None:
         raise SaveError(f"{where}.psprites: not {NUMPSPRITES} weapon sprites")
     for k, psp in enumerate(sprites):
         if psp.state is not None:
-            _index(psp, "state", info.NUMSTATES, f"{where}.psprites[{k}]")
+            _index(psp, "state", len(tables.states), f"{where}.psprites[{k}]")
         _check_words(psp, ("tics", "sx", "sy"), f"{where}.psprites[{k}]")
 
 
