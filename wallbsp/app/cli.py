@@ -13,6 +13,7 @@ import time
 from wallbsp.app.cliargs import UsageError, build_parser
 from wallbsp.level.model import LevelError
 from wallbsp.app.outputs import OutputError, check_outputs, write_outputs
+from wallbsp.app.nodescli import cmd_export, cmd_nodes
 
 
 # -- loading what the user named ------------------------------------------------------------
@@ -142,7 +143,7 @@ def cmd_render(args):
         from wallbsp.app.hudframe import hud_frame, raise_weapon
         from wallbsp.game.world import World
         world = World(tree)
-        raise_weapon(world.play.players[world.play.consoleplayer])
+        raise_weapon(world.play, world.play.players[world.play.consoleplayer])
         rgb, frame = hud_frame(world, camera_for(tree, args), width, height, **options)
     else:
         frame = render(tree, camera_for(tree, args), width, height, **options)
@@ -217,9 +218,24 @@ def cmd_import_wad(args):
     print(f"{args.output}: {len(level.walls)} walls, {len(level.sectors)} sectors")
 
 
+def cmd_edit(args):
+    """The editor's window lives in ``wallbsp.editor`` (a layer above the app), so it is
+    reached by name."""
+    import importlib
+    from wallbsp.app.walkthrough import NoDisplayError, check_display
+    try:
+        if args.frames is None:
+            check_display()
+    except NoDisplayError as err:
+        raise UsageError(str(err).replace("walk", "edit", 1)) from None
+    importlib.import_module("wallbsp.editor.window").run_editor(args.level, args.size,
+                                                                args.frames)
+
+
 # -- the commands by name (their parser: cliargs) -------------------------------------------
 COMMANDS = {"walk": cmd_walk, "play": cmd_play, "compile": cmd_compile, "render": cmd_render,
-            "stats": cmd_stats, "draw": cmd_draw, "import-wad": cmd_import_wad}
+            "stats": cmd_stats, "draw": cmd_draw, "import-wad": cmd_import_wad,
+            "edit": cmd_edit, "nodes": cmd_nodes, "export": cmd_export}
 
 
 def main(argv=None) -> int:

@@ -220,4 +220,15 @@ def build_parser(commands) -> argparse.ArgumentParser:
     p.add_argument("map", help="map name, e.g. E1M1 or MAP01")
     p.add_argument("-o", "--output", required=True, metavar="LEVEL", help="level JSON to write")
     _finish(p, commands["import-wad"], build=False)
+
+    p = sub.add_parser("edit", help="the level editor (docs/editor.md)")
+    p.add_argument("level", nargs="?", help="level file or WAD:MAP (default: a new level)")
+    p.add_argument("--size", type=_size, default=(1280, 800), metavar="WxH",
+                   help="window size (default 1280x800)")
+    p.add_argument("--frames", type=_bounded(1, 10 ** 7, _integer, "a whole number"),
+                   default=None, help="run N frames headless and stop")
+    _finish(p, commands["edit"], build=False)
+
+    from wallbsp.app.nodescli import add_parsers      # nodes, export
+    add_parsers(sub, commands)
     return parser
