@@ -52,6 +52,7 @@ class TitleScreen:
 
     def progress(self, done, total, label) -> None:
         self.done, self.total, self.label = done, total, label
+        note_moment(label)
 
     def draw(self) -> None:
         import pygame
