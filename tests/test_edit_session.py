@@ -2,6 +2,7 @@
 by a door, a lift and stairs, a window, a pillar, the player start, monsters and pickups.
 It saves with no warnings and no problems, compiles, and the World plays it: a walk through
 the door reaches the far room."""
+import dataclasses
 from pathlib import Path
 
 import pytest
@@ -44,8 +45,7 @@ def build(ed: Editor) -> dict:
 
 
 def level_resources(ed: Editor) -> None:
-    import dataclasses
-    ed.level = dataclasses.replace(ed.level, resources=(str(TEXTURES),))
+    ed.set_level(name="three rooms", resources=[TEXTURES])
     ed.style = dataclasses.replace(
         ed.style, wall_texture="BRICK1",
         sector=dataclasses.replace(ed.style.sector, floor_texture="FLOOR1",
