@@ -4,7 +4,6 @@ Every accepted edit leaves a level that loads without warnings (no crossing or o
 walls), has every sector closed and every wall's sides facing the sectors that are there,
 and compiles to a valid tree; a refused edit changes nothing; undo gives back the exact
 level (identical JSON) and redo the exact edit."""
-import pytest
 from hypothesis import HealthCheck, given, settings, strategies as st
 
 import wallbsp

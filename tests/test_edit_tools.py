@@ -6,7 +6,7 @@ import os
 import pytest
 
 import wallbsp
-from wallbsp.edit import Editor, EditError, Style
+from wallbsp.edit import Editor, EditError
 from wallbsp.edit.compiler import Compiler, compile_now
 from wallbsp.edit.overlay import TreeOverlay, chord, clip_convex
 

@@ -14,7 +14,8 @@ new sector):
   sector round it).
 
 Every wall's sides then follow from the faces on its right and left: a wall that now has a
-sector on both sides is two-sided, its middle texture moved to its upper and lower parts.
+sector on both sides is two-sided, its middle texture moved to its upper and lower parts;
+a wall with the new sector on both sides (an old room's edge the shape spread over) goes.
 """
 from __future__ import annotations
 
