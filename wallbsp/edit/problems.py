@@ -14,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 
 from wallbsp.doom.info import DOOMEDNUM, MF_SHOOTABLE, MF_SOLID, MOBJINFO
-from wallbsp.edit.arrays import wall_arrays
+from wallbsp.edit.arrays import BAND, wall_arrays
 from wallbsp.edit.checks import open_ends
 from wallbsp.edit.fit import PLAYER_HEIGHT
 from wallbsp.edit.locate import sector_at
@@ -105,9 +105,7 @@ def _stuck(level: Level, tree=None) -> list:
     where = tree.locate if tree is not None else \
         (lambda x, y: sector_at(level, x, y, arrays))
     blocking = np.array([w.back is None or w.blocks for w in level.walls], dtype=bool)
-    seg = arrays.fseg[blocking]
-    lo_x, hi_x = np.minimum(seg[:, 0], seg[:, 2]), np.maximum(seg[:, 0], seg[:, 2])
-    lo_y, hi_y = np.minimum(seg[:, 1], seg[:, 3]), np.maximum(seg[:, 1], seg[:, 3])
+    seg = arrays.fseg
     out = []
     for i, t in enumerate(level.things):
         if where(t.x, t.y) is None:
@@ -116,8 +114,13 @@ def _stuck(level: Level, tree=None) -> list:
         if not _solid(level, t.type):
             continue
         r = thing_radius(level, t.type)
-        near = np.flatnonzero((lo_x < t.x + r) & (hi_x > t.x - r)
-                              & (lo_y < t.y + r) & (hi_y > t.y - r))
+        # the bands the box spans (a wall in two bands comes twice: harmless for any())
+        near = np.concatenate([arrays.across(y) for y in
+                               np.arange(t.y - r, t.y + r + BAND, BAND)])
+        near = near[blocking[near]]
+        s = seg[near]
+        near = near[(np.minimum(s[:, 0], s[:, 2]) < t.x + r) & (np.maximum(s[:, 0], s[:, 2]) > t.x - r)
+                    & (np.minimum(s[:, 1], s[:, 3]) < t.y + r) & (np.maximum(s[:, 1], s[:, 3]) > t.y - r)]
         if len(near) and _box_hits(t.x, t.y, r, *(seg[near].T)).any():
             out.append(("stuck", i, f"things[{i}] (type {t.type}, radius {r:g}) "
                                     f"overlaps a wall"))
