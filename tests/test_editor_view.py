@@ -88,3 +88,22 @@ def test_edit_without_a_display_is_a_usage_error(capsys, monkeypatch):
     assert main(["edit"]) == 2
     assert "no display" in capsys.readouterr().err
     assert os.environ["SDL_VIDEODRIVER"] == "dummy"
+
+
+def test_every_key_of_the_editor_is_in_its_docs():
+    from pathlib import Path
+    from wallbsp.editor.keys import KEYS
+    doc = (Path(__file__).resolve().parent.parent / "docs" / "editor.md").read_text().lower()
+    table = doc[doc.index("## keys"):]
+    arrows = {"up", "down", "left", "right"}
+    missing = []
+    for key, mods in KEYS:
+        if key in arrows:
+            key = "arrows"
+        elif key.startswith("[") and len(key) == 3:       # the keypad's + and -
+            key = key[1]
+        label = "+".join([*mods, key])
+        if f"`{label}`" not in table and not (key == "`" and "`` ` ``" in table) \
+                and not (key == "arrows" and "arrows" in table):
+            missing.append(label)
+    assert not missing, missing

@@ -275,3 +275,44 @@ def test_f9_outside_every_sector_is_refused(session):
     step(session)
     assert play_here(session) is None
     assert session.refused and "inside a sector" in session.status
+
+
+def _box(level):
+    xs = [x for x, _ in level.vertices]
+    ys = [y for _, y in level.vertices]
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+def test_rotate_mirror_copy_and_paste_keys(session):
+    rectangle(session, 0, 0, 256, 128)
+    key(pygame.K_s)
+    step(session)
+    session.editor.select("sectors", {0})
+    key(pygame.K_w, pygame.KMOD_SHIFT)            # Eureka's W: rotate 90 anticlockwise
+    step(session)
+    x0, y0, x1, y1 = _box(session.level)
+    assert (x1 - x0, y1 - y0) == (128, 256)
+    key(pygame.K_c, pygame.KMOD_CTRL)
+    move(at(session, -320, 0))
+    step(session)
+    key(pygame.K_v, pygame.KMOD_CTRL)
+    step(session)
+    assert not session.refused, session.status
+    assert len(session.level.sectors) == 2
+    x0, _, x1, _ = _box(session.level)
+    assert x0 < -128 and x1 - x0 > 256            # the copy landed left of the first
+    key(pygame.K_z, pygame.KMOD_CTRL)
+    step(session)
+    assert len(session.level.sectors) == 1
+
+
+def test_ctrl_s_saves_a_new_level_under_a_free_name(session, tmp_path, monkeypatch):
+    from wallbsp import load_level
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "untitled.json").write_text("{}")          # taken: the next name is used
+    rectangle(session, 0, 0, 256, 256)
+    key(pygame.K_s, pygame.KMOD_CTRL)
+    step(session)
+    assert session.status == "saved untitled-1.json", session.status
+    assert load_level(tmp_path / "untitled-1.json") == session.level
+    assert (tmp_path / "untitled.json").read_text() == "{}"

@@ -69,9 +69,21 @@ def _redo(s):
 
 
 def _save(s):
-    path = s.command("save", "")
+    """Save to the level's file; a level with none (new, or from a WAD) gets the first free
+    ``NAME.json`` in the current folder."""
+    target = None if getattr(s.editor, "path", None) is not None else _free_name(s.level.name)
+    path = s.command("save", "", target)
     if path:
         s.say(f"saved {path}")
+
+
+def _free_name(name):
+    from pathlib import Path
+    stem = "".join(c if c.isalnum() or c in "-_" else "_" for c in name or "untitled")
+    path, n = Path(f"{stem}.json"), 1
+    while path.exists():
+        path, n = Path(f"{stem}-{n}.json"), n + 1
+    return path
 
 
 def _delete(s):
