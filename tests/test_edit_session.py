@@ -32,7 +32,7 @@ def build(ed: Editor) -> dict:
     lift = ed.draw_rectangle(832, 512, 960, 704)          # between the east and north rooms
     stairs = ed.draw_rectangle(128, 512, 256, 704)        # between the west and north rooms
     ed.make_door(door, texture="DOOR1", track="DOORTRAK")
-    ed.make_lift(lift)
+    ed.make_lift(lift, texture="METAL1")
     steps = ed.make_stairs(stairs, step=16, count=8, texture="STEP1")
     ed.set_start(256, 256, 0)
     ed.add_thing(256, 256, 1, angle=0)                    # player 1 start
@@ -85,6 +85,7 @@ def test_the_smart_tools_made_what_doom_needs(session):
     assert lift.floor == 128 and lift.tag
     below = [w for w in level.walls if w.back == names["lift"] and w.front == names["east"]]
     assert below and all(w.special == 62 and w.tag == lift.tag for w in below)
+    assert all(w.front_side.lower == "METAL1" for w in below)
     floors = [level.sectors[s].floor for s in names["steps"]]
     assert floors == [16 * (k + 1) for k in range(8)]
     risers = [w for w in level.walls if w.back is not None and w.front in names["steps"]
