@@ -60,6 +60,8 @@ def test_dooms_special_names():
 
 def test_thing_kinds_come_from_dooms_mobjinfo():
     assert kind_of(3004).category == "monster" and kind_of(3004).radius == 20
+    assert (kind_of(3004).name, kind_of(2011).name) == ("zombieman", "stimpack")
+    assert kind_of(3004).sprite == "POSS" and kind_of(2035).sprite == "BAR1"
     assert kind_of(2001).category == "pickup"
     assert kind_of(2035).category == "obstacle"
     assert kind_of(1).category == "player" and kind_of(1).radius == 16
