@@ -137,3 +137,44 @@ def test_a_refused_command_leaves_the_session_as_it_was(session):
     with pytest.raises(EditError):
         ed.draw_shape([(100, 100), (700, 100), (700, 101)])   # across walls off the grid
     assert ed.level is before and ed.version == version
+
+
+def world_from(level, x, y, angle):
+    """The World with the player started at (x, y) facing ``angle`` (no start thing)."""
+    from wallbsp.level.model import Start
+    moved = dataclasses.replace(level, start=Start(x, y, angle),
+                                things=tuple(t for t in level.things if t.type != 1))
+    tree = wallbsp.compile_level(moved)
+    return tree, wallbsp.World(tree, skill=3)
+
+
+def test_the_stairs_lead_up_into_the_north_room(session):
+    ed, names, _ = session
+    tree, world = world_from(ed.level, 192, 400, 90)
+    for _ in range(300):
+        world.tic(forward=1.0)
+        if world.player.y > 760:
+            break
+    assert tree.locate(world.player.x, world.player.y) == names["north"]
+    assert world.player.z == 128
+
+
+def test_the_lift_comes_down_when_used_and_carries_the_player_up(session):
+    ed, names, _ = session
+    tree, world = world_from(ed.level, 928, 300, 90)
+    for _ in range(60):                        # north, against the lift's side
+        world.tic(forward=1.0)
+    assert world.player.y < 512
+    world.tic(use=True)
+    world.tic()
+    for _ in range(40):                        # down at 4 units a tic
+        world.tic()
+    for _ in range(40):                        # onto it
+        world.tic(forward=1.0)
+    assert tree.locate(world.player.x, world.player.y) == names["lift"]
+    for _ in range(150):                       # it waits 105 tics, then rises
+        world.tic()
+    assert world.player.z == 128
+    for _ in range(80):
+        world.tic(forward=1.0)
+    assert tree.locate(world.player.x, world.player.y) == names["north"]
