@@ -333,9 +333,10 @@ def _drawing_key(session, name, mods) -> bool:
 
 
 def help_lines():
-    """``key: what`` for each binding, in the table's order (the help overlay, the docs)."""
-    lines = []
+    """``keys: what`` for each thing the keys do, keys that do the same on one line, in
+    the table's order (the help overlay)."""
+    grouped = {}
     for (key, mods), (what, _) in KEYS.items():
         label = "+".join([m.capitalize() for m in mods] + [key.capitalize()])
-        lines.append(f"{label}: {what}")
-    return lines
+        grouped.setdefault(what, []).append(label)
+    return [f"{', '.join(labels)}: {what}" for what, labels in grouped.items()]
