@@ -58,12 +58,26 @@ class Edges:
         (x1, y1), (x2, y2) = self.d.vertices[u], self.d.vertices[v]
         return math.atan2(y2 - y1, x2 - x1)
 
-    def faces(self) -> list[list[int]]:
-        """The cycles of half-edges (a face on the right of each), by tracing."""
+    def _prepare(self) -> None:
+        if self.out:
+            return
         for h, (u, v, _, _) in enumerate(self.half):
             self.out.setdefault(u, []).append((self.angle(u, v), h))
         for items in self.out.values():
             items.sort()
+
+    def cycle(self, start: int) -> list[int]:
+        """The cycle of half-edges through ``start``."""
+        self._prepare()
+        cycle, h = [start], self._next(start)
+        while h != start and len(cycle) <= len(self.half):
+            cycle.append(h)
+            h = self._next(h)
+        return cycle
+
+    def faces(self) -> list[list[int]]:
+        """The cycles of half-edges (a face on the right of each), by tracing."""
+        self._prepare()
         seen, cycles = set(), []
         for start in range(len(self.half)):
             if start in seen:
