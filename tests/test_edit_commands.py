@@ -246,3 +246,11 @@ def test_deleting_a_sector_leaves_the_other_walls_as_they_were():
     after = [w for w in ed.level.walls if ed.level.vertices[w.v1][0] >= 2000]
     assert len(after) == 4
     assert all(w.blocks and w.front_side == Side(middle="BRICK1", lower="X") for w in after)
+
+
+def test_an_edit_that_changes_nothing_takes_no_undo_step():
+    ed, west, east = two_rooms()
+    version, steps = ed.version, len(ed.history)
+    ed.move(ed.select("sectors", west), 0, 0)
+    ed.set_sector([east], light=ed.level.sectors[east].light)
+    assert ed.version == version and len(ed.history) == steps
