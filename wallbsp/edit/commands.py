@@ -5,7 +5,7 @@ from __future__ import annotations
 import dataclasses
 import math
 
-from wallbsp.edit.draft import Draft, EditError
+from wallbsp.edit.draft import Draft, EditError, opened
 from wallbsp.edit.selection import Selection
 from wallbsp.level.model import Side, Wall
 
@@ -37,15 +37,9 @@ def _weld_duplicates(d: Draft) -> None:
         if (other is not None and w.back is None and keep[other].back is None
                 and keep[other].v1 == w.v2):
             first = keep[other]
-            side = first.front_side
-            if side is not None and side.middle:
-                side = dataclasses.replace(side, upper=side.middle, lower=side.middle, middle=None)
-            back_side = w.front_side
-            if back_side is not None and back_side.middle:
-                back_side = dataclasses.replace(back_side, upper=back_side.middle,
-                                                lower=back_side.middle, middle=None)
-            keep[other] = dataclasses.replace(first, back=w.front, front_side=side,
-                                              back_side=back_side)
+            keep[other] = dataclasses.replace(first, back=w.front,
+                                              front_side=opened(first.front_side),
+                                              back_side=opened(w.front_side))
             continue
         seen.setdefault(key, len(keep))
         keep.append(w)

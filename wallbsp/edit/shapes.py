@@ -27,7 +27,7 @@ from fractions import Fraction
 import numpy as np
 
 from wallbsp.edit.arrays import wall_arrays
-from wallbsp.edit.draft import Draft, EditError
+from wallbsp.edit.draft import Draft, EditError, opened
 from wallbsp.edit.locate import inside_polygon, sector_at
 from wallbsp.edit.faces import NEW, Edges, along, faces_with_holes, meetings
 from wallbsp.edit.polygon import clean_polygon
@@ -301,10 +301,7 @@ def _resided(w: Wall, front, back, style: Style) -> Wall:
     if (front, back) == (w.front, w.back):
         return w
     if back is not None and w.back is None:
-        side = w.front_side
-        if side is not None and side.middle is not None:
-            side = dataclasses.replace(side, upper=side.upper or side.middle,
-                                       lower=side.lower or side.middle, middle=None)
+        side = opened(w.front_side)
         back_side = Side(upper=style.wall_texture, lower=style.wall_texture) \
             if style.wall_texture else None
         return dataclasses.replace(w, front=front, back=back, front_side=side,
