@@ -268,7 +268,8 @@ def _assign_sides(d: Draft, edges: Edges, faces, old, final, style: Style) -> No
         if wall is None:
             _new_wall(d, u, v, right[h], right[("outer", h)], style)
             continue
-        sides.setdefault(wall, {})[u] = right[h]
+        if h in right:           # (a half-edge in no face keeps its wall's side as it was)
+            sides.setdefault(wall, {})[u] = right[h]
     for wall, by_start in sorted(sides.items()):
         w = d.walls[wall]
         front = by_start.get(w.v1, w.front)
