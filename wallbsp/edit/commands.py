@@ -12,7 +12,7 @@ from wallbsp.edit.faces import along
 from wallbsp.edit.selection import Selection
 from wallbsp.level.model import Side, Wall
 
-__all__ = ["Commands", "one_sided"]
+__all__ = ["Commands", "one_sided", "split_at_touches", "weld_duplicates"]
 
 
 def one_sided(w: Wall, keep_front: bool, texture: str | None) -> Wall:
@@ -28,7 +28,7 @@ def one_sided(w: Wall, keep_front: bool, texture: str | None) -> Wall:
     return dataclasses.replace(w, back=None, back_side=None, front_side=side, blocks=False)
 
 
-def _weld_duplicates(d: Draft) -> None:
+def weld_duplicates(d: Draft) -> None:
     """Walls with the same two ends: two one-sided walls facing away from each other become
     one two-sided wall; a wall with both ends at one vertex goes."""
     d.walls = [w for w in d.walls if w.v1 != w.v2]
@@ -49,7 +49,7 @@ def _weld_duplicates(d: Draft) -> None:
     d.walls = keep
 
 
-def _split_at_touches(d: Draft, moved: set) -> None:
+def split_at_touches(d: Draft, moved: set) -> None:
     """Split walls where a moved vertex now lies inside one, or a moved wall now runs
     through a vertex (Eureka's way: the line is split there), so every meeting is shared."""
     xy = np.array(d.vertices, dtype=np.int64).reshape(-1, 2)
@@ -65,8 +65,10 @@ def _split_at_touches(d: Draft, moved: set) -> None:
             if v not in ends[w] and _on_segment(seg[w], x, y):
                 cuts.setdefault(w, set()).add(v)
     touched = np.flatnonzero(np.isin(ends, list(moved)).any(axis=1))
+    used = np.zeros(len(xy), dtype=bool)
+    used[ends.ravel()] = True           # a vertex no wall uses any more is no meeting
     for w in touched.tolist():
-        inside = np.flatnonzero((xy[:, 0] >= lo_x[w]) & (xy[:, 0] <= hi_x[w])
+        inside = np.flatnonzero(used & (xy[:, 0] >= lo_x[w]) & (xy[:, 0] <= hi_x[w])
                                 & (xy[:, 1] >= lo_y[w]) & (xy[:, 1] <= hi_y[w]))
         for v in inside.tolist():
             if v not in ends[w] and _on_segment(seg[w], *xy[v]):
@@ -113,7 +115,8 @@ class Commands:
         d.walls = [dataclasses.replace(w, v1=target if w.v1 in others else w.v1,
                                        v2=target if w.v2 in others else w.v2)
                    for w in d.walls]
-        _weld_duplicates(d)
+        split_at_touches(d, {target})
+        weld_duplicates(d)
         vmap, _ = d.compact()
         self.commit(d.level(), Selection("vertices", frozenset({vmap[target]}) - {-1}),
                     "merge vertices")
@@ -286,8 +289,8 @@ class Commands:
         if weld:
             d.walls = [dataclasses.replace(w, v1=weld.get(w.v1, w.v1), v2=weld.get(w.v2, w.v2))
                        for w in d.walls]
-        _split_at_touches(d, {weld.get(v, v) for v in moved})
-        _weld_duplicates(d)
+        split_at_touches(d, {weld.get(v, v) for v in moved})
+        weld_duplicates(d)
         vmap, _ = d.compact()
         keep = self.selection
         if mode == "vertices":
