@@ -101,6 +101,7 @@ class Commands:
         if v in (w.v1, w.v2):
             raise EditError(f"({round(x)}, {round(y)}) is an end of walls[{line}]")
         d.split_wall(line, v)
+        split_at_touches(d, {v})        # off the line, the new corner may touch another
         self.commit(d.level(), Selection("vertices", frozenset({v})), "split line")
         return v
 
