@@ -10,6 +10,7 @@ import wallbsp
 from wallbsp.edit import Editor, EditError
 from wallbsp.edit.checks import unclosed_sectors
 from wallbsp.edit.locate import beside, sector_at
+from wallbsp.edit.problems import problems
 from wallbsp.level.io import dumps_level, level_from_dict, level_to_dict
 
 GRID = 32
@@ -141,4 +142,6 @@ def test_random_edits_keep_the_level_sound_and_undo_is_exact(steps):
         ed.redo()
     assert dumps_level(ed.level) == texts[-1]
     if ed.level.walls:
-        wallbsp.compile_level(ed.level).validate()
+        tree = wallbsp.compile_level(ed.level)
+        tree.validate()
+        assert not [p for p in problems(ed.level, tree) if p[0] in ("unclosed", "crossing")]
