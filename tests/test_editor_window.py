@@ -316,3 +316,24 @@ def test_ctrl_s_saves_a_new_level_under_a_free_name(session, tmp_path, monkeypat
     assert session.status == "saved untitled-1.json", session.status
     assert load_level(tmp_path / "untitled-1.json") == session.level
     assert (tmp_path / "untitled.json").read_text() == "{}"
+
+
+def test_a_panned_layer_is_the_layer_drawn_afresh(session):
+    """Panning scrolls the cached picture and draws only the strips it uncovers: the
+    result is the picture drawn whole at the new place."""
+    from wallbsp.editor.mapdraw import StaticLayer
+    for x0, y0 in ((0, 0), (256, 64), (-320, -192), (128, -384)):
+        rectangle(session, x0, y0, x0 + 192, y0 + 128)
+    session.editor.add_thing(64, 64, 3004)
+    key(pygame.K_v)                               # vertex mode: vertices drawn too
+    step(session)
+    draws = session.layer.draws
+    for dx, dy in ((7, 0), (0, -5), (-13, 9), (40, 31), (-3, -60)):
+        session.view.pan_pixels(dx, dy)
+        step(session)
+    assert session.layer.draws == draws and session.layer.scrolls >= 5
+    fresh = StaticLayer().surface(session.view, session.arrays(), session.mode,
+                                  session.display)
+    scrolled = pygame.surfarray.array3d(session.layer.picture)
+    whole = pygame.surfarray.array3d(fresh)
+    assert (scrolled == whole).all()

@@ -30,6 +30,15 @@ class View:
         self.grid = grid
         self.snap = True
         self.show_grid = True
+        self.region = None       # the part of the window being drawn (pixels), None: all
+
+    def drawn_box(self):
+        """``(x0, y0, x1, y1)`` in pixels of what is being drawn: ``region``, else the
+        window (the static layer draws only the strips a scroll uncovers)."""
+        if self.region is None:
+            return 0, 0, self.width, self.height
+        x, y, w, h = self.region
+        return x, y, x + w, y + h
 
     # -- conversions ---------------------------------------------------------------------
     def to_screen(self, x, y):
