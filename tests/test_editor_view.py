@@ -109,3 +109,27 @@ def test_every_key_of_the_editor_is_in_its_docs():
                 and not (key == "arrows" and "arrows" in table):
             missing.append(label)
     assert not missing, missing
+
+
+ends = st.integers(-300, 400)
+
+
+@settings(max_examples=150, deadline=None)
+@given(ends, ends, ends, ends)
+def test_numpy_lines_are_the_segment_clipped_to_the_window(x1, y1, x2, y2):
+    """Every pixel drawn lies on the segment (within half a pixel's diagonal) and inside the
+    surface; a segment with an end inside has that end's pixel drawn."""
+    import numpy as np
+    import pygame
+    from wallbsp.editor.raster import draw_lines
+    surface = pygame.Surface((100, 80))
+    surface.fill((0, 0, 0))
+    draw_lines(surface, np.array([[x1, y1, x2, y2]]), (255, 255, 255))
+    xs, ys = np.nonzero(pygame.surfarray.array2d(surface))
+    dx, dy = x2 - x1, y2 - y1
+    length = max(np.hypot(dx, dy), 1e-9)
+    distance = np.abs(dy * (xs - x1) - dx * (ys - y1)) / length
+    assert (distance <= 0.71 + 1e-9).all() if length > 1e-9 else True
+    for x, y in ((x1, y1), (x2, y2)):
+        if 0 <= x < 100 and 0 <= y < 80:
+            assert ((xs == x) & (ys == y)).any()

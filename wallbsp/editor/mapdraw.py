@@ -13,6 +13,7 @@ from __future__ import annotations
 import numpy as np
 import pygame
 
+from wallbsp.editor.raster import draw_lines
 from wallbsp.editor.thingkinds import kind_of
 from wallbsp.editor.view import View, grid_lines
 
@@ -139,7 +140,8 @@ def draw_static(surface, view: View, arrays: LevelArrays, mode: str, under=None,
     if under is not None:
         under(surface, view)
     idx, xy = visible_segments(view, arrays.segs)
-    draw_walls(surface, idx, xy, arrays, ticks=mode == "lines" and view.scale > 0.2)
+    draw_walls(surface, idx, xy, arrays, ticks=mode == "lines" and view.scale > 0.2,
+               box=view.drawn_box())
     if over is not None:
         over(surface, view)
     if mode == "vertices" or view.scale >= 0.5:
@@ -160,16 +162,14 @@ def draw_grid(surface, view: View):
         line(surface, COLORS[color], (0, py), (view.width, py))
 
 
-def draw_walls(surface, idx, xy, arrays: LevelArrays, ticks=False):
-    """Two-sided walls first, so one-sided and special walls stay on top where they meet."""
-    line = pygame.draw.line
+def draw_walls(surface, idx, xy, arrays: LevelArrays, ticks=False, box=None):
+    """Two-sided walls first, so one-sided and special walls stay on top where they meet;
+    all the walls of a colour in one numpy pass (``raster``)."""
     two = arrays.two_sided[idx]
     special = arrays.special[idx]
     for mask, color in ((two & ~special, "two_sided"), (~two & ~special, "one_sided"),
                         (special, "special")):
-        c = COLORS[color]
-        for x1, y1, x2, y2 in xy[mask].tolist():
-            line(surface, c, (x1, y1), (x2, y2))
+        draw_lines(surface, xy[mask], COLORS[color], box)
     if ticks:
         draw_ticks(surface, xy)
 
