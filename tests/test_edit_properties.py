@@ -1,10 +1,10 @@
 """Random sequences of edits (hypothesis): shapes and lines drawn, lines split, vertices
 merged, selections moved, mirrored, rotated, copied and pasted, sectors joined, heights
-changed, vertices, lines and sectors deleted, undo and redo.  Every accepted edit leaves a level that loads
-without warnings (no crossing or overlapping walls), has every sector closed and every
-wall's sides facing the sectors that are there, and compiles to a valid tree; a refused
-edit changes nothing; undo gives back the exact level (identical JSON) and redo the exact
-edit."""
+changed, vertices, lines and sectors deleted, undo and redo.  Every accepted edit leaves a
+level that loads without warnings (no crossing or overlapping walls), has every sector
+closed and every wall's sides facing the sectors that are there, and compiles to a valid
+tree; a refused edit changes nothing; undo gives back the exact level (identical JSON) and
+redo the exact edit."""
 import math
 
 from hypothesis import HealthCheck, given, settings, strategies as st
