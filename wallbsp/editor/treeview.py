@@ -133,7 +133,10 @@ class LiveTree:
     def _compile(self, version, level):
         """The model's compile and problems (``edit.compiler.compile_now``), then what the
         overlays draw, all on this thread."""
-        compiled = compile_now(level, version)
+        try:
+            compiled = compile_now(level, version)
+        except Exception as err:            # noqa: BLE001 - the worker must outlive any
+            return f"not compiled: {type(err).__name__}: {err}"    # level; the window says why
         if compiled.tree is None:
             return f"not compiled: {compiled.error}"
         problems = compiled.problems if self.with_problems else []

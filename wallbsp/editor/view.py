@@ -45,6 +45,8 @@ class View:
         return (self.width / 2 + (x - self.cx) * self.scale,
                 self.height / 2 - (y - self.cy) * self.scale)
 
+    __call__ = to_screen          # a view is also the map view's transform of app.mapview
+
     def to_map(self, px, py):
         return (self.cx + (px - self.width / 2) / self.scale,
                 self.cy - (py - self.height / 2) / self.scale)
