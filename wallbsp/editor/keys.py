@@ -79,7 +79,8 @@ def _save(s):
 
 def _free_name(name):
     from pathlib import Path
-    stem = "".join(c if c.isalnum() or c in "-_" else "_" for c in name or "untitled")
+    name = (name or "untitled").split(" (")[0]       # "E1M1 (freedoom1.wad)": E1M1
+    stem = "".join(c if c.isalnum() or c in "-_" else "_" for c in name) or "untitled"
     path, n = Path(f"{stem}.json"), 1
     while path.exists():
         path, n = Path(f"{stem}-{n}.json"), n + 1
