@@ -133,3 +133,14 @@ def test_numpy_lines_are_the_segment_clipped_to_the_window(x1, y1, x2, y2):
     for x, y in ((x1, y1), (x2, y2)):
         if 0 <= x < 100 and 0 <= y < 80:
             assert ((xs == x) & (ys == y)).any()
+
+
+def test_a_level_without_a_file_is_saved_under_its_map_name(tmp_path, monkeypatch):
+    from pathlib import Path
+    from wallbsp.editor.keys import free_name
+    monkeypatch.chdir(tmp_path)
+    assert free_name("E1M1 (freedoom1.wad)") == Path("E1M1.json")
+    Path("E1M1.json").write_text("{}")
+    assert free_name("E1M1 (freedoom1.wad)") == Path("E1M1-1.json")
+    assert free_name("") == Path("untitled.json")
+    assert free_name("a/b c") == Path("a_b_c.json")

@@ -12,7 +12,7 @@ from wallbsp.editor import draw
 from wallbsp.editor.selection import selected
 from wallbsp.editor.thingkinds import kind_of
 
-__all__ = ["KEYS", "press", "help_lines"]
+__all__ = ["KEYS", "press", "help_lines", "free_name"]
 
 SHIFT, CTRL = "shift", "ctrl"
 FLOOR_STEP = 8             # Eureka's , and . in sector mode
@@ -71,13 +71,13 @@ def _redo(s):
 def _save(s):
     """Save to the level's file; a level with none (new, or from a WAD) gets the first free
     ``NAME.json`` in the current folder."""
-    target = None if getattr(s.editor, "path", None) is not None else _free_name(s.level.name)
+    target = None if getattr(s.editor, "path", None) is not None else free_name(s.level.name)
     path = s.command("save", "", target)
     if path:
         s.say(f"saved {path}")
 
 
-def _free_name(name):
+def free_name(name):
     from pathlib import Path
     name = (name or "untitled").split(" (")[0]       # "E1M1 (freedoom1.wad)": E1M1
     stem = "".join(c if c.isalnum() or c in "-_" else "_" for c in name) or "untitled"
