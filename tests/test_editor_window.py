@@ -337,3 +337,23 @@ def test_a_panned_layer_is_the_layer_drawn_afresh(session):
     scrolled = pygame.surfarray.array3d(session.layer.picture)
     whole = pygame.surfarray.array3d(fresh)
     assert (scrolled == whole).all()
+
+
+def _area(poly):
+    return abs(sum(x1 * y2 - x2 * y1 for (x1, y1), (x2, y2) in zip(poly, poly[1:] + poly[:1]))) / 2
+
+
+def test_a_sectors_leaf_cells_fill_exactly_its_area(session):
+    """The cells the sector shading is drawn from cover each sector's own area: a room
+    with a room inside it."""
+    from wallbsp.editor.treeview import LiveTree
+    rectangle(session, 0, 0, 512, 512)
+    rectangle(session, 128, 128, 256, 256)
+    session.compiler = LiveTree(session.editor)
+    overlay = session.compiler.wait()
+    inner = session.editor.pick(192, 192, "sectors", 0)
+    outer = session.editor.pick(64, 64, "sectors", 0)
+    assert {inner, outer} == {0, 1}
+    assert sum(map(_area, overlay.cells[outer])) == pytest.approx(512 ** 2 - 128 ** 2)
+    assert sum(map(_area, overlay.cells[inner])) == pytest.approx(128 ** 2)
+    session.compiler.close()
