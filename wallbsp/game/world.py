@@ -51,7 +51,8 @@ from collections import deque
 
 import numpy as np
 
-from wallbsp.camera import Camera
+from wallbsp.camera import EYE_HEIGHT, Camera
+from wallbsp.game import probe
 from wallbsp.game.multiplayer import check_deathmatch, check_players, join_players
 from wallbsp.game.playerview import (AMMO_NAMES, KEY_NAMES, POWER_NAMES, WEAPON_NAMES,
                                      PlayerView)
@@ -62,6 +63,7 @@ from wallbsp.game.playsim.game import (GA_COMPLETED, GA_VICTORY, GA_WORLDDONE, G
 from wallbsp.game.playsim.levelbsp import LevelMapError
 from wallbsp.game.playsim.structs import TicCmd
 from wallbsp.game.playstate import PlayState, ThingsView
+from wallbsp.game.probe import PLAYER_RADIUS
 from wallbsp.game.ticcmds import MAX_TURN, as_ticcmd, checked_number, ticcmd
 from wallbsp.doom import info
 from wallbsp.doom.fixed import ANG90
@@ -105,13 +107,13 @@ class World:
             wad, map_name = self.wad_map
             play = play_cls(wad)
             play.level_things = level_thing_keys(self.level)
-            join_players(play, self.level, self.tree, self.player_count, self.deathmatch)
+            join_players(play, self.level, self.player_count, self.deathmatch)
             episode, gamemap = map_numbers(map_name)
             play.g_init_new(self.skill - 1, episode, gamemap)
         else:
             play = play_cls(None)
             play.level_things = level_thing_keys(self.level)
-            join_players(play, self.level, self.tree, self.player_count, self.deathmatch)
+            join_players(play, self.level, self.player_count, self.deathmatch)
             try:
                 play.g_init_new_level(self.level, self.tree, self.skill - 1)
             except LevelMapError as err:      # beyond DOOM's map: bad input, one line
@@ -147,7 +149,7 @@ class World:
             raise ValueError("World.next_map: a WAD's map cannot follow a level of our own")
         self.tree, self.level, self.wad_map = tree, tree.level, wad_map
         play.level_things = level_thing_keys(self.level)
-        join_players(play, self.level, tree, self.player_count, self.deathmatch)
+        join_players(play, self.level, self.player_count, self.deathmatch)
         if wad_map is None:
             play.levelsource = (self.level, tree)
         play.g_do_world_done()
@@ -212,6 +214,45 @@ class World:
                 "prndindex": int(self.play.rng.prndindex),
                 **({"players": [v.status() for v in self.players]}
                    if self.player_count > 1 else {})}
+
+    # -- questions of the map now (game.probe: DOOM's checks; nothing changes) ------------
+    def _asker(self, radius):
+        """The player's own body when asking at its size (so it does not block itself)."""
+        mo = self.play.players[0].mo
+        return mo if mo is not None and mo.radius == int(round(radius * 65536)) else None
+
+    def fits(self, x, y, radius=PLAYER_RADIUS) -> bool:
+        """Whether a player of ``radius`` could stand at (x, y) now (walls, closed doors,
+        solid things; ``P_CheckPosition``)."""
+        return probe.fits(self.play, x, y, radius, thing=self._asker(radius))[0]
+
+    def move(self, x, y, dx, dy, z=None, radius=PLAYER_RADIUS, slide=True) -> tuple:
+        """``(x, y, z)`` where a player of ``radius``, feet at ``z`` (the floor there by
+        default), ends walking (dx, dy) from (x, y) now, climbing steps of at most 24 and
+        sliding along what stops it (``game.probe.walk``)."""
+        if z is None:
+            z = self.floor_z(x, y, radius)
+        return probe.walk(self.play, x, y, dx, dy, z, radius, slide=slide,
+                          thing=self._asker(radius))
+
+    def heights(self, x, y, radius=PLAYER_RADIUS) -> tuple:
+        """``(floor, ceiling)`` a player of ``radius`` at (x, y) stands between now (DOOM's
+        ``floorz``/``ceilingz``: the highest floor and lowest ceiling its box overlaps)."""
+        _, floor, ceiling = probe.fits(self.play, x, y, radius, thing=self._asker(radius))
+        return floor, ceiling
+
+    def floor_z(self, x, y, radius=PLAYER_RADIUS) -> float:
+        """The floor a player of ``radius`` at (x, y) stands on now: DOOM's ``floorz``, the
+        highest floor its box overlaps."""
+        return probe.floor_z(self.play, x, y, radius)
+
+    def line_of_sight(self, a, b, za=None, zb=None) -> bool:
+        """Whether an eye at ``a`` (x, y) sees ``b`` now (``P_CheckSight``: closed doors,
+        walls and the openings' heights; the map's reject table); the heights default to
+        a player's eye over the floor there."""
+        za = self.floor_z(*a) + EYE_HEIGHT if za is None else za
+        zb = self.floor_z(*b) + EYE_HEIGHT if zb is None else zb
+        return probe.sees(self.play, a, b, za, zb)
 
     # -- changing it --------------------------------------------------------------------------
     def place_player(self, x, y, angle, player: int = 0) -> None:
