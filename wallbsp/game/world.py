@@ -13,8 +13,8 @@ One ``world.tic(...)`` is one ``G_Ticker`` tic (1/35 s) with one tic command:
 units (forward 25/50 walking/running, side 24/40, the turn in degrees as ``angleturn``,
 the buttons).  The play runs the player (``P_PlayerThink``), every thinker (monsters,
 missiles, doors, lifts, lights, in DOOM's order), the specials; the compiled tree never
-changes, and ``state`` (a ``PlayState``, what ``render`` draws) is read from the play after
-every tic.
+changes, and ``state`` (a ``PlayState``, what ``render`` draws) is read from the play when
+it is next asked for after tics (``world.state``, ``world.things``, ``render(world)``).
 
 What callers read (floats in map units and degrees, derived from the integers):
 ``player`` (``x``, ``y``, ``z`` feet, ``angle``, ``eye`` = DOOM's ``viewz``, ``health``,
@@ -124,11 +124,12 @@ class World:
     def _adopt(self) -> None:
         """The renderer's state read from the play's level as it was just loaded."""
         play = self.play
-        self.state = PlayState(self.tree, play, self.skill, play.thing_slots)
+        self._state = PlayState(self.tree, play, self.skill, play.thing_slots)
+        self._stale = False
         if self.player_count == 1:       # the eye is in the body: no view draws it
-            self.state.things.hide(play.players[play.consoleplayer].mo)
+            self._state.things.hide(play.players[play.consoleplayer].mo)
         self._loads = play.loads
-        self._things = ThingsView(self.state.things)
+        self._things = ThingsView(self._state.things)
 
     def next_map(self, tree) -> None:
         """G_DoWorldDone: the play, done with the intermission (or Doom II's text screen),
@@ -158,7 +159,20 @@ class World:
 
     # -- what the world is now ----------------------------------------------------------------
     @property
+    def state(self) -> PlayState:
+        """What the renderer draws, read from the play when first asked after tics (so
+        tics whose frame nobody draws, with frame skip or pose-only observations, read
+        nothing: the play's touched list keeps what they changed)."""
+        if self._stale:
+            self._stale = False
+            self._state.sync()
+        return self._state
+
+    @property
     def things(self) -> ThingsView:
+        if self._stale:
+            self._stale = False
+            self._state.sync()
         return self._things
 
     @property
@@ -282,7 +296,7 @@ class World:
         p.viewheight = info_viewheight()
         p.deltaviewheight = 0
         p.viewz = mo.z + p.viewheight
-        self.state.sync()
+        self._stale = True
 
     def tic(self, *args, **keywords) -> None:
         """Advance the world one tic: ``tic(cmd)`` with a ``TicCmd``, or the keyword form
@@ -306,7 +320,7 @@ class World:
         if play.loads != self._loads:        # the level started again (after a death)
             self._adopt()
         else:
-            self.state.sync()
+            self._stale = True               # read when a frame or the things are asked for
         for view, messages in zip(self.players, self.player_messages):
             p = play.players[view.number]
             if p.message:
