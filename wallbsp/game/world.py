@@ -28,6 +28,9 @@ things is the object its ``i``-th thing spawned), ``exited`` (None, ``"normal"``
 The single player's own body is drawn by no view (a view blended between two tics trails
 it by a few units; ``PlayThings.hide``); other players' bodies are drawn.
 
+``World(tree, skill, tables=tables)`` plays with a game's own actors, weapons and items
+(``wallbsp.content.game_tables``: DOOM's tables with the game's added).
+
 ``World(tree, skill, play=play)`` goes on with a play of the tree's level already under way
 (a loaded save: ``playsim.savegame.load_game(..., cls=world_play_class())``).
 
@@ -78,11 +81,12 @@ class World:
     """A level in play (module docstring)."""
 
     def __init__(self, tree, skill: int = 3, players: int = 1, deathmatch: int = 0,
-                 play=None):
+                 play=None, tables=None):
         if isinstance(skill, bool) or not isinstance(skill, (int, np.integer)) \
                 or skill not in SKILLS:
             raise ValueError(f"World: skill must be an integer 1 to 5, not {skill!r}")
         self.tree, self.level, self.skill = tree, tree.level, int(skill)
+        self.tables = tables            # a game's own (wallbsp.content), else DOOM's
         self.player_count = check_players(players)
         self.deathmatch = check_deathmatch(deathmatch)
         self.player_messages = tuple(deque(maxlen=MESSAGE_LOG)
@@ -104,12 +108,16 @@ class World:
         if self.wad_map is not None:
             wad, map_name = self.wad_map
             play = play_cls(wad)
+            if self.tables is not None:
+                play.set_tables(self.tables)
             play.level_things = level_thing_keys(self.level)
             join_players(play, self.level, self.tree, self.player_count, self.deathmatch)
             episode, gamemap = map_numbers(map_name)
             play.g_init_new(self.skill - 1, episode, gamemap)
         else:
             play = play_cls(None)
+            if self.tables is not None:
+                play.set_tables(self.tables)
             play.level_things = level_thing_keys(self.level)
             join_players(play, self.level, self.tree, self.player_count, self.deathmatch)
             try:
