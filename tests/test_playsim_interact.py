@@ -37,6 +37,7 @@ class Stub(Interact, Damage):
         self.rng = ScriptedRng(*rng)
         self.log = []
         self.touched = []               # the ticker's (what a tic may have changed)
+        self.events = []                # the event log (events.py)
 
     def s_start_sound(self, origin, sfx):
         self.log.append(("sound", origin, sfx))

@@ -18,6 +18,7 @@ class StubPlay(Mobjs):
         self.rng = Random()
         self.gameversion = gameversion
         self.touched = []               # the ticker's (what a tic may have changed)
+        self.events = []                # the event log (events.py)
         self.gameskill = 2
         self.leveltime = 0
         self.netgame = False

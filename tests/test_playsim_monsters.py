@@ -30,6 +30,7 @@ class Fake(Monsters, Hearing, MonsterAttacks, ArchVile, MonsterDeaths, BossBrain
     def __init__(self):
         bind_tables(self, DOOM)
         self.rng = Random()
+        self.events = []                # the event log (events.py)
         self.init_monsters()
         self.validcount = 0
         self.gameversion = EXE_DOOM_1_9

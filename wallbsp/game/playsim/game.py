@@ -19,6 +19,7 @@ from wallbsp.doom import tables as doom_tables
 from wallbsp.doom.rng import Random
 
 from .demos import DemoError, wad_entries
+from .events import SoundStarted
 from .mobjs import state_rows
 from .structs import (BT_SPECIAL, COMMERCIAL, EXE_DOOM_1_9, EXE_FINAL, EXE_ULTIMATE, MAXPLAYERS,
                       PST_DEAD, PST_REBORN, REGISTERED, RETAIL, SHAREWARE, SK_BABY, SK_NIGHTMARE,
@@ -107,6 +108,7 @@ class Game:
         self.playerstartsingame = [False] * MAXPLAYERS
         self.wminfo = None
         self.sounds_started = self.sounds_stopped = 0
+        self.events = []                    # the event log (events.py): not per level
         self._texture_heights = None
         self.flatnames = self._flat_names()
         self.init_intermission()
@@ -130,6 +132,7 @@ class Game:
 
     def s_start_sound(self, origin, sfx_id):
         self.sounds_started += 1
+        self.events.append(SoundStarted(origin, sfx_id))
         if self.sound is not None:
             self.sound.start_sound(origin, sfx_id)
 

@@ -7,8 +7,8 @@ import base64
 import types
 
 
-from .savestate import (CACHES, STATIC, UNSET_MARK, References, SaveError, Unset, derived_names,
-                        dynamic_fields, map_tables, resolve_class, saved_fields, saved_value,
+from .savestate import (CACHES, STATIC, TRANSIENT, UNSET_MARK, References, SaveError, Unset,
+                        derived_names, dynamic_fields, map_tables, resolve_class, saved_fields, saved_value,
                         slots_of)
 from .structs import Player, Thinker
 
@@ -227,7 +227,7 @@ def first_difference(a, b):
     and dict, with the same sharing (two references to one object in ``a`` are two to one
     object in ``b``) — else the path of the first difference found and what differs."""
     seen, back = {id(a): b}, {id(b): a}
-    skip = CACHES | ((derived_names(a) | derived_names(b)) - STATIC)
+    skip = CACHES | TRANSIENT | ((derived_names(a) | derived_names(b)) - STATIC)
     stack = [(f"play.{n}", getattr(a, n, Unset), getattr(b, n, Unset))
              for n in sorted(set(vars(a)) | set(vars(b)), reverse=True) if n not in skip]
     while stack:

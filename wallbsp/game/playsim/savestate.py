@@ -40,6 +40,8 @@ from .structs import (DegenMobj, Line, Node, Player, Sector, Seg, Side, Subsecto
 
 # tables built from the map or the WAD on first use
 CACHES = frozenset(("_texture_heights", "sightarrays", "nodearray"))
+# what happened since a caller last looked, not the game's state: never saved or compared
+TRANSIENT = frozenset(("events",))      # the event log (events.py)
 # rebuilt by loading the map (or checked against the header): never saved
 STATIC = frozenset((
     "wad_path", "wad_files", "wad_entries", "wad_entry_files", "wad_dir", "flatnames",
@@ -49,7 +51,7 @@ STATIC = frozenset((
     "sound",            # the sound system the caller attached (wallbsp.sound): not the game's
     # the object tables (doom.tables) and their bindings: the save's header says which
     "tables", "states", "mobjinfo", "weaponinfo", "state_rows",
-)) | CACHES
+)) | CACHES | TRANSIENT
 # the structure of the map: the rest of these classes' slots is saved
 SECTOR_FIXED = frozenset(("id", "blockbox", "soundorg", "linecount", "lines"))
 LINE_FIXED = frozenset(("id", "v1", "v2", "dx", "dy", "sidenum", "bbox", "slopetype",
