@@ -31,6 +31,9 @@ it by a few units; ``PlayThings.hide``); other players' bodies are drawn.
 ``World(tree, skill, tables=tables)`` plays with a game's own actors, weapons and items
 (``wallbsp.content.game_tables``: DOOM's tables with the game's added).
 
+``World(tree, skill, script=path)`` runs a level script (``game.levelscript``; by default
+the one the level names, ``"script"``) after each of the play's tics.
+
 ``World(tree, skill, play=play)`` goes on with a play of the tree's level already under way
 (a loaded save: ``playsim.savegame.load_game(..., cls=world_play_class())``).
 
@@ -55,6 +58,7 @@ from collections import deque
 import numpy as np
 
 from wallbsp.camera import Camera
+from wallbsp.game.levelscript import LevelScript
 from wallbsp.game.multiplayer import check_deathmatch, check_players, join_players
 from wallbsp.game.playerview import (AMMO_NAMES, KEY_NAMES, POWER_NAMES, WEAPON_NAMES,
                                      PlayerView)
@@ -81,12 +85,14 @@ class World:
     """A level in play (module docstring)."""
 
     def __init__(self, tree, skill: int = 3, players: int = 1, deathmatch: int = 0,
-                 play=None, tables=None):
+                 play=None, tables=None, script=None):
         if isinstance(skill, bool) or not isinstance(skill, (int, np.integer)) \
                 or skill not in SKILLS:
             raise ValueError(f"World: skill must be an integer 1 to 5, not {skill!r}")
         self.tree, self.level, self.skill = tree, tree.level, int(skill)
         self.tables = tables            # a game's own (wallbsp.content), else DOOM's
+        script = script if script is not None else self.level.script_path()
+        self.script = LevelScript(self, script) if script is not None else None
         self.player_count = check_players(players)
         self.deathmatch = check_deathmatch(deathmatch)
         self.player_messages = tuple(deque(maxlen=MESSAGE_LOG)
@@ -135,6 +141,8 @@ class World:
             self.state.things.hide(play.players[play.consoleplayer].mo)
         self._loads = play.loads
         self._things = ThingsView(self.state.things)
+        if self.script is not None:
+            self.script.start()
 
     def next_map(self, tree) -> None:
         """G_DoWorldDone: the play, done with the intermission (or Doom II's text screen),
@@ -270,6 +278,8 @@ class World:
         play = self.play
         play.g_ticker(cmds)
         self._tics += 1
+        if self.script is not None and play.gamestate == GS_LEVEL:
+            self.script.after_tic()
         if play.loads != self._loads:        # the level started again (after a death)
             self._adopt()
         else:
@@ -281,6 +291,8 @@ class World:
                 p.message = None
         if play.gameaction in (GA_COMPLETED, GA_VICTORY) or play.gamestate != GS_LEVEL:
             self.exited = "secret" if play.secret_exit_taken else "normal"
+            if self.script is not None:
+                self.script.exit()
 
     @staticmethod
     def _commands(given) -> list:
