@@ -169,13 +169,16 @@ def cmd_walk(args):
         keys = read_bindings(args.keys)
         if args.frames is None:
             check_display()      # before the level is compiled: that may take a while
-        tree = load_any(args.level, args, strict=args.strict)
+        from wallbsp.game.gamefolder import is_game_folder, load_game_folder
+        game = load_game_folder(args.level) if is_game_folder(args.level) else None
+        tree = game.tree(0) if game else load_any(args.level, args, strict=args.strict)
         demo = demo_for(tree.level, args.skill) if args.record else None
         summary = run_walkthrough(tree, size=args.size, frames=args.frames, turn=args.turn,
                                   screenshot=args.screenshot, max_fps=args.max_fps, demo=demo,
-                                  next_level=_next_level(args.level, args), skill=args.skill,
+                                  next_level=game.next_level if game else
+                                  _next_level(args.level, args), skill=args.skill,
                                   sound=not args.nosound, music=not args.nomusic, keys=keys,
-                                  saves=args.saves)
+                                  saves=args.saves, tables=game.tables if game else None)
     except (NoDisplayError, KeyConfigError) as err:
         raise UsageError(str(err)) from None
     if demo is not None:

@@ -129,8 +129,9 @@ class Walkthrough:
             self.hud = Hud(statusbar=self.statusbar)
 
     @classmethod
-    def at_start(cls, tree, size=(320, 200), window=(960, 600), skill=3, **options):
-        return cls(World(tree, skill), tuple(size), tuple(window), **options)
+    def at_start(cls, tree, size=(320, 200), window=(960, 600), skill=3, tables=None,
+                 **options):
+        return cls(World(tree, skill, tables=tables), tuple(size), tuple(window), **options)
 
     @property
     def tree(self):
@@ -146,7 +147,8 @@ class Walkthrough:
 def run_walkthrough(tree, *, size=(320, 200), window=(960, 600), frames=None, turn=0.0,
                     screenshot=None, max_fps=None, order="front_to_back", fov=90.0,
                     demo=None, next_level=None, skill=3, sound=True, music=True,
-                    keys=None, statusbar=True, saves=None, menus=None) -> Summary:
+                    keys=None, statusbar=True, saves=None, menus=None,
+                    tables=None) -> Summary:
     """Walk ``tree`` in a window; with ``frames=N`` render N frames headless and return the
     summary.  ``screenshot``: save the last picture (internal resolution, as shown) as a
     PNG.  ``demo``: record the tics into it; ``next_level(exit)``: the tree to go on to;
@@ -154,12 +156,14 @@ def run_walkthrough(tree, *, size=(320, 200), window=(960, 600), frames=None, tu
     ``music``: DOOM's sound effects and music; ``keys``: action -> key names
     (``config.read_bindings``); ``statusbar``: the view above DOOM's status bar;
     ``menus``: DOOM's menus, intermission and saves (``gameflow``; default: interactive
-    walks only), saves in the folder ``saves`` (default ``app.saves.saves_folder``)."""
+    walks only), saves in the folder ``saves`` (default ``app.saves.saves_folder``);
+    ``tables``: a game's own actors (``wallbsp.content``; ``game.gamefolder``)."""
     if frames is None:
         check_display()
     elif no_window_system():
         os.environ["SDL_VIDEODRIVER"] = "dummy"
-    walk = Walkthrough.at_start(tree, size, window, skill, order=order, fov=fov, demo=demo,
+    walk = Walkthrough.at_start(tree, size, window, skill, tables, order=order, fov=fov,
+                                demo=demo,
                                 next_level=next_level, key_names=keys, statusbar=statusbar)
     if menus or (menus is None and frames is None):
         walk.overlay = GameFlow(walk, start_level, saves)
@@ -318,7 +322,7 @@ def start_level(walk, tree, text, world=None):
     """A fresh World of ``tree`` at the same skill (the recording stops: a demo is one
     level from its start), heard by the sound, and ``text`` said (``world``: one already
     made of ``tree``, a loaded save)."""
-    world = World(tree, walk.world.skill) if world is None else world
+    world = World(tree, walk.world.skill, tables=walk.world.tables) if world is None else world
     walk.world, walk.previous, walk.demo, walk.seen_message = world, None, None, 0
     walk.was_dead = False
     walk.map_cache, walk.partitions = (None, None), None

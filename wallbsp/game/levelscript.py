@@ -34,7 +34,7 @@ from wallbsp.files import LevelError
 
 from .levelactions import ScriptLevel
 
-__all__ = ["LevelScript", "ScriptError", "HANDLERS", "load_script"]
+__all__ = ["LevelScript", "ScriptError", "HANDLERS", "load_script", "guarded"]
 
 HANDLERS = ("on_start", "on_exit", "on_tic", "on_line_used", "on_line_crossed",
             "on_line_shot", "on_sector_entered", "on_killed", "on_picked_up", "on_damaged")
@@ -61,14 +61,14 @@ def load_script(path) -> dict:
     except SyntaxError as e:
         raise ScriptError(f"{path}: line {e.lineno}: {e.msg}") from None
     namespace = {"__name__": f"levelscript:{path.stem}", "__file__": str(path)}
-    _guarded(path, lambda: exec(code, namespace))
+    guarded(path, lambda: exec(code, namespace))
     unknown = sorted(n for n in namespace if n.startswith("on_") and n not in HANDLERS)
     if unknown:
         raise ScriptError(f"{path}: {unknown[0]}: not a handler ({', '.join(HANDLERS)})")
     return namespace
 
 
-def _guarded(path, run):
+def guarded(path, run):
     """``run()``; an exception becomes one ``ScriptError`` line at the script's line."""
     try:
         return run()
@@ -111,7 +111,7 @@ class LevelScript:
         level = self.level
         level.tic += 1
         for timer in level.due():
-            _guarded(self.path, lambda: timer(level))
+            guarded(self.path, lambda: timer(level))
         self._call("on_tic")
 
     def exit(self) -> None:
@@ -133,4 +133,4 @@ class LevelScript:
     def _call(self, name, *args):
         handler = self.handlers.get(name)
         if handler is not None:
-            _guarded(self.path, lambda: handler(self.level, *args))
+            guarded(self.path, lambda: handler(self.level, *args))
