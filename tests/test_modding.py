@@ -102,3 +102,20 @@ def test_the_examples_pictures_and_sounds_are_the_tools(monkeypatch, tmp_path):
     assert made == shipped
     assert all((tmp_path / p).read_bytes() == (GAME / p).read_bytes() for p in made)
     sys.modules.pop("make_example_game", None)
+
+
+@pytest.mark.skipif(not Path("/usr/share/games/doom/freedoom2.wad").exists(),
+                    reason="Freedoom not installed")
+def test_a_wad_map_in_a_game_folder_runs_its_script(tmp_path):
+    (tmp_path / "game.json").write_text(
+        '{"maps": [{"wad": "/usr/share/games/doom/freedoom2.wad", "map": "map01",'
+        ' "script": "m1.py"}]}')
+    (tmp_path / "m1.py").write_text(
+        "def on_start(level):\n    level.print('Welcome')\n"
+        "def on_tic(level):\n    if level.tic == 2:\n        level.give('armor', 7)\n")
+    game = load_game_folder(tmp_path)
+    world = World(game.tree(0), skill=3, tables=game.tables)
+    for _ in range(3):
+        world.tic(ticcmd())
+    assert world.wad_map[1] == "MAP01" and world.play.players[0].armorpoints == 7
+    assert [text for _, text in world.messages] == ["Welcome"]

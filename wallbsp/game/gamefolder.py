@@ -18,6 +18,7 @@ script of the game's.  ``load_game_folder(path)`` → ``GameFolder`` (``tables``
 """
 from __future__ import annotations
 
+import dataclasses
 import json
 import tomllib
 from dataclasses import dataclass, field
@@ -59,8 +60,8 @@ class GameFolder:
             if isinstance(entry, tuple):
                 from wallbsp.level.wadmap import load_wad_level
                 level = load_wad_level(str(entry[0]), entry[1])
-                if entry[2] is not None:
-                    level.script, level.source_dir = str(entry[2]), self.folder
+                if entry[2] is not None:        # the game's script, by its absolute path
+                    level = dataclasses.replace(level, script=str(self.folder / entry[2]))
             else:
                 from wallbsp.level.io import load_level
                 level = load_level(entry)
