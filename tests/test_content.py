@@ -194,3 +194,22 @@ def test_a_games_wav_sounds_play_as_dmx_lumps(tmp_path):
     assert np.array_equal(sound.samples.astype(int) - 128, wave16.astype(int) >> 8)
     assert dmx.lump_name(TABLES.mobjinfo[TABLES.types[mod.Spitter]].seesound,
                          TABLES.sfx) == "DSSPITSI"
+
+
+def test_a_game_with_its_own_actors_saves_and_loads_exactly():
+    from wallbsp.game.playload import world_play_class
+    from wallbsp.game.playsim.savegame import load_game, save_game
+    from wallbsp.game.playsim.trace import trace_line
+    tree = room([(200, 0, 30001), (-448 + 100, 0, 30002)])
+    world = World(tree, skill=3, tables=TABLES)
+    for _ in range(60):
+        world.tic(ticcmd(forward=0.3, fire=True))
+    data = save_game(world.play)
+    play = load_game(data, None, cls=world_play_class(), level=(tree.level, tree), tables=TABLES)
+    loaded = World(tree, skill=3, play=play, tables=TABLES)
+    for n in range(120):
+        cmd = ticcmd(turn=2.0, fire=n % 3 == 0)
+        world.tic(cmd)
+        loaded.tic(cmd)
+        assert trace_line(loaded.play) == trace_line(world.play), f"tic {n + 1}"
+    assert world.play.players[0].weaponowned[TABLES.types[mod.Blaster]]
