@@ -213,3 +213,12 @@ def test_a_game_with_its_own_actors_saves_and_loads_exactly():
         loaded.tic(cmd)
         assert trace_line(loaded.play) == trace_line(world.play), f"tic {n + 1}"
     assert world.play.players[0].weaponowned[TABLES.types[mod.Blaster]]
+
+
+def test_a_second_weapon_skips_dooms_no_change_number():
+    class Second(mod.Blaster):
+        slot = 3
+    tables = game_tables([mod.BlasterPickup, Second])
+    numbers = sorted((tables.types[mod.Blaster], tables.types[Second]))
+    assert numbers == [info.NUMWEAPONS, info.wp_nochange + 1]
+    assert tables.weapon_slots == {1: (numbers[0],), 2: (numbers[1],)}

@@ -245,6 +245,8 @@ class _Builder:
         slot = _whole(cls.slot, where, "slot")
         if not 1 <= slot <= 8:
             raise ContentError(f"{where}: slot {slot}: a weapon key, 1-8")
+        if len(self.weaponinfo) == info.wp_nochange:   # DOOM's "no change": never a weapon
+            self.weaponinfo.append(info.WeaponInfo(info.am_noammo, 0, 0, 0, 0, 0))
         number = len(self.weaponinfo)
         self.types[cls] = number
         self.weaponinfo.append(info.WeaponInfo(

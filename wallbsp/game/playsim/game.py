@@ -39,6 +39,8 @@ def bind_tables(play, tables):
     play.states, play.mobjinfo, play.weaponinfo = (
         tables.states, tables.mobjinfo, tables.weaponinfo)
     play.state_rows = state_rows(tables)
+    for p in getattr(play, "players", ()):        # room for a game's own weapons
+        p.weaponowned += [0] * (len(tables.weaponinfo) - len(p.weaponowned))
 
 
 def game_mode(names, iwad_name="") -> tuple:
@@ -153,7 +155,15 @@ class Game:
         self.playeringame = list(demo.playeringame)
         if self.playeringame[1]:
             self.netgame = self.netdemo = True
-        self.g_init_new(demo.skill, demo.episode, demo.map)
+        try:
+            self.g_init_new(demo.skill, demo.episode, demo.map)
+        except DemoError:
+            if getattr(self, "levelsource", None) is None and self.mapname not in self.wad_dir:
+                where = "byte 3" if self.gamemode == COMMERCIAL else "bytes 2-3"
+                raise DemoError(f"{demo.source}: {where}: the demo's header names the map "
+                                f"{self.mapname}, which {os.path.basename(str(self.wad_path))}"
+                                f" does not have") from None
+            raise
         self.demoplayback = True
 
     def g_init_new(self, skill, episode, gamemap):

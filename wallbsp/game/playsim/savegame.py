@@ -45,6 +45,7 @@ from array import array
 from wallbsp.files import InputError, read_input, write_atomically
 
 from . import game as _game
+from .savelimits import MAX_BODY_BYTES, MAX_HEADER_BYTES, MAX_PARSED_BYTES, parsed_size_bound
 from .saverestore import Decoder
 from .savestate import Encoder, SaveError
 from .structs import COMMERCIAL, EXE_DOOM_1_9
@@ -57,7 +58,6 @@ FORMAT_VERSION = 1
 _PREFIX = struct.Struct("<8sIII")
 DIGEST_SIZE = 32
 MAX_SAVE_BYTES = 256 << 20
-MAX_BODY_BYTES = 1 << 30
 
 
 # -- identities ----------------------------------------------------------------------------
@@ -166,6 +166,9 @@ def read_header(data, source="<save>"):
                                         f"bytes, the file has {len(data)}")
     if hashlib.sha256(data[:end]).digest() != data[end:]:
         raise fail(end, "damaged: the sha256 of the save does not match")
+    if head_len > MAX_HEADER_BYTES:
+        raise fail(12, f"a header of {head_len} bytes; a save's is at most "
+                       f"{MAX_HEADER_BYTES}")
     try:
         header = json.loads(data[_PREFIX.size:_PREFIX.size + head_len])
     except (ValueError, RecursionError) as e:
@@ -193,14 +196,7 @@ def load_game(data, wad_path, files=(), *, source="<save>", cls=None, level=None
         raise SaveError(f"{source}: header.level: the save is of "
                         + (f"our level {header['level']!r}: pass it as level=(level, tree)"
                            if level is None else f"the WAD map {header['map']}, not a level"))
-    try:
-        inflater = zlib.decompressobj()
-        raw = inflater.decompress(packed, MAX_BODY_BYTES)
-        if inflater.unconsumed_tail or not inflater.eof:
-            raise ValueError("larger than a save can be, or cut short")
-        body = json.loads(raw)
-    except (zlib.error, ValueError, RecursionError) as e:
-        raise SaveError(f"{source}: body: not a compressed JSON state: {e}") from None
+    body = _body(packed, source)
     if cls is None:
         from .play import play_class
         cls = play_class()
@@ -223,6 +219,32 @@ def load_game(data, wad_path, files=(), *, source="<save>", cls=None, level=None
     except Exception as e:      # a body this version never writes: still one line
         raise SaveError(f"{source}: body: {type(e).__name__}: {e}") from None
     return play
+
+
+def _body(packed, source):
+    """The body's JSON, its memory bounded before it is made (``savelimits``): inflated
+    to at most ``MAX_BODY_BYTES`` (zlib makes no more), parsed only when what parsing
+    makes is bounded by ``MAX_PARSED_BYTES``; NaN and infinities are no JSON of a save."""
+    try:
+        inflater = zlib.decompressobj()
+        raw = inflater.decompress(packed, MAX_BODY_BYTES + 1)
+        if len(raw) > MAX_BODY_BYTES:
+            raise ValueError(f"it inflates to more than {MAX_BODY_BYTES} bytes, more than "
+                             f"a save holds")
+        if inflater.unconsumed_tail or not inflater.eof:
+            raise ValueError("cut short, or followed by other bytes")
+        del inflater
+        bound = parsed_size_bound(raw)
+        if bound > MAX_PARSED_BYTES:
+            raise ValueError(f"its {len(raw)} bytes of JSON would take up to {bound} bytes "
+                             f"parsed, more than a save's state ({MAX_PARSED_BYTES})")
+        return json.loads(raw, parse_constant=_no_constant)
+    except (zlib.error, ValueError, RecursionError) as e:
+        raise SaveError(f"{source}: body: not a compressed JSON state: {e}") from None
+
+
+def _no_constant(name):
+    raise ValueError(f"{name} is not a number a save holds")
 
 
 def load_game_file(path, wad_path, files=(), **kwargs):

@@ -52,6 +52,11 @@ STATIC = frozenset((
     # the object tables (doom.tables) and their bindings: the save's header says which
     "tables", "states", "mobjinfo", "weaponinfo", "state_rows",
 )) | CACHES | TRANSIENT
+# a watcher's bookkeeping (Ticker.take_touched: which PlayThings took the list last, by a
+# process-wide number): not the game's, and it made two equal games save different bytes;
+# a loaded play starts with none (its first watcher reads every thing)
+WATCHERS = frozenset(("touched", "touched_reader"))
+STATIC = STATIC | WATCHERS
 # the structure of the map: the rest of these classes' slots is saved
 SECTOR_FIXED = frozenset(("id", "blockbox", "soundorg", "linecount", "lines"))
 LINE_FIXED = frozenset(("id", "v1", "v2", "dx", "dy", "sidenum", "bbox", "slopetype",
