@@ -119,3 +119,14 @@ def test_a_wad_map_in_a_game_folder_runs_its_script(tmp_path):
         world.tic(ticcmd())
     assert world.wad_map[1] == "MAP01" and world.play.players[0].armorpoints == 7
     assert [text for _, text in world.messages] == ["Welcome"]
+
+
+def test_wallbsp_walk_plays_a_game_folder(capsys, tmp_path):
+    from wallbsp.app.cli import main
+    shot = tmp_path / "shot.png"
+    assert main(["walk", str(GAME), "--frames", "3", "--nosound", "--screenshot",
+                 str(shot)]) == 0
+    assert "frames=3" in capsys.readouterr().out and shot.stat().st_size > 1000
+    (tmp_path / "game.json").write_text('{"maps": ["x.json"]}')
+    assert main(["walk", str(tmp_path), "--frames", "1", "--nosound"]) == 2
+    assert "maps[0]: no level file 'x.json'" in capsys.readouterr().err
