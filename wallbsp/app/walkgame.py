@@ -1,6 +1,7 @@
 """``wallbsp walk``: what the command line asks of the walkthrough, put together.
 
 - ``walk`` (the bundled game), ``walk LEVEL`` or ``walk WAD:MAP`` (a warp): that level;
+  ``walk FOLDER``: a game folder (``game.gamefolder``, docs/modding.md), its first map;
   ``walk WAD`` the WAD's game as DOOM starts it (``startup``: title, demos, menu).
 - ``--record X.lmp`` with a WAD: DOOM's v1.9 demo of the game from the map it starts
   on (``game.lmprecord``; headless with ``--frames N`` too); any other ``--record``: the
@@ -14,6 +15,7 @@ from __future__ import annotations
 import os
 
 from wallbsp.app.cliargs import UsageError
+from wallbsp.game.gamefolder import is_game_folder, load_game_folder
 from wallbsp.app.outputs import check_outputs, write_outputs
 
 __all__ = ["walk_command", "is_lmp", "demo_world", "first_map_name", "Episode", "EPISODE"]
@@ -45,7 +47,7 @@ def walk_command(args, load_any, next_level_of) -> None:
         keys = read_bindings(args.keys)
         if args.frames is None:
             check_display()
-        setup, world, tree, demo = None, None, None, None
+        setup, world, tree, demo, game = None, None, None, None, None
         summary_holder = {}
         if args.playdemo:
             from wallbsp.app.walkthrough import run_walkthrough
@@ -55,6 +57,12 @@ def walk_command(args, load_any, next_level_of) -> None:
         elif (wad_game or bundled) and args.frames is None and not (vanilla or args.record):
             from wallbsp.app.startup import run_game
             return run_game(args, keys, load_any)
+        elif is_game_folder(args.level):                 # a game of one's own
+            from wallbsp.app.walkthrough import run_walkthrough
+            from wallbsp.game.world import World
+            game = load_game_folder(args.level)
+            tree = game.tree(0)
+            world = World(tree, args.skill, tables=game.tables)
         else:
             spec = _first_map_spec(args.level) if wad_game else args.level
             from wallbsp.app.walkthrough import run_walkthrough
@@ -81,7 +89,8 @@ def walk_command(args, load_any, next_level_of) -> None:
         summary = run_walkthrough(
             tree, size=args.size, frames=args.frames, turn=args.turn,
             screenshot=args.screenshot, max_fps=args.max_fps, demo=demo,
-            next_level=episode or next_level_of(args.level, args), skill=args.skill,
+            next_level=game.next_level if game else (episode or next_level_of(args.level, args)),
+            skill=args.skill,
             sound=effects, music=not (args.nosound or args.nomusic), keys=keys,
             saves=args.saves, aspect=None if args.square_pixels else 4 / 3, world=world,
             setup=keep, menus=True if (vanilla or args.playdemo) else None)
