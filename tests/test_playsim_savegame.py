@@ -15,6 +15,7 @@ from pathlib import Path
 
 import pytest
 
+from wallbsp.doom import info, tables as doom_tables
 from wallbsp.game.playsim import game as gamemod
 from wallbsp.game.playsim import savegame
 from wallbsp.game.playsim.savegame import (SaveError, load_game, load_game_file, read_header,
@@ -202,13 +203,14 @@ def test_bad_saves_are_one_line_naming_the_place(kind, tmp_path):
     path = tmp_path / "bad.wsg"
     path.write_bytes(make(data))
     before = path.read_bytes()
-    fast = gamemod._fast_monsters
+    tables = info.STATES, info.MOBJINFO, doom_tables.DOOM.fast_monsters(True)
     with pytest.raises(SaveError, match=message) as err:
         load_game_file(path, wad_path("freedoom1"))
     text = str(err.value)
     assert text.startswith(f"{path}: ") and "\n" not in text
     assert isinstance(err.value, ValueError)
-    assert path.read_bytes() == before and gamemod._fast_monsters == fast
+    assert path.read_bytes() == before
+    assert (info.STATES, info.MOBJINFO, doom_tables.DOOM.fast_monsters(True)) == tables
 
 
 def test_a_save_of_another_wad_is_refused():

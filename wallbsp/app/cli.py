@@ -142,7 +142,7 @@ def cmd_render(args):
         from wallbsp.app.hudframe import hud_frame, raise_weapon
         from wallbsp.game.world import World
         world = World(tree)
-        raise_weapon(world.play.players[world.play.consoleplayer])
+        raise_weapon(world.play, world.play.players[world.play.consoleplayer])
         rgb, frame = hud_frame(world, camera_for(tree, args), width, height, **options)
     else:
         frame = render(tree, camera_for(tree, args), width, height, **options)

@@ -289,6 +289,8 @@ class Variables:
         self._getters = tuple(_getter(name) for name in self.names)
 
     def read(self, world, events=None) -> list:
+        if events is not None:
+            events.read()                   # the play's log up to now into the counters
         k = self.player
         p = world.play.players[k]
         mo = p.mo

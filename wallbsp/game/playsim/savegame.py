@@ -27,8 +27,8 @@ save of another WAD or map, a save from another version of the structures, is on
 or ``save.wsg: body: thinkers[12].target: no thinker 9000`` — and nothing is changed.
 Loading makes a new ``Play`` (``cls``: the class to make, e.g. the World's), loads the
 map's geometry from the WAD as ``P_SetupLevel`` does (or from ``level=(level, tree)`` for
-one of our levels), then writes the saved state over it; the one process-wide effect is
-the one ``G_InitNew`` has, the fast-monster tables of the saved game.
+one of our levels), then writes the saved state over it, with the fast-monster tables of
+the saved game (the new play's own: nothing process-wide changes).
 
 Saving needs a level (``SaveError`` before the first one loads); it works in any game
 state after that (level, intermission, finale), as the level's state is kept until the
@@ -125,7 +125,7 @@ def save_game(play, description=""):
               "map": play.mapname, "level": level, "episode": play.gameepisode,
               "gamemap": play.gamemap, "skill": play.gameskill,
               "gamestate": play.gamestate, "gametic": play.gametic,
-              "leveltime": play.leveltime, "fast": bool(_game._fast_monsters),
+              "leveltime": play.leveltime, "fast": bool(play.tables.fast),
               "geometry": map_fingerprint(play), "description": str(description)}
     body = Encoder(play).state()
     head = json.dumps(header, separators=(",", ":")).encode()
@@ -183,10 +183,12 @@ def read_header(data, source="<save>"):
     return header, data[_PREFIX.size + head_len:end]
 
 
-def load_game(data, wad_path, files=(), *, source="<save>", cls=None, level=None):
+def load_game(data, wad_path, files=(), *, source="<save>", cls=None, level=None,
+              tables=None):
     """A new ``Play`` in the state ``data`` (``save_game``'s bytes) holds, on the WAD
     ``wad_path`` and PWADs ``files`` the save was made with (``level=(level, tree)``: a
-    save of one of our levels).  ``SaveError`` for anything else, nothing changed."""
+    save of one of our levels; ``tables``: the game's object tables, ``doom.tables.DOOM``
+    by default).  ``SaveError`` for anything else, nothing changed."""
     header, packed = read_header(data, source)
     files = tuple(files)
     _check_wads(header, wad_path, files, source)
@@ -209,15 +211,12 @@ def load_game(data, wad_path, files=(), *, source="<save>", cls=None, level=None
                         f"{header['gamemode']}/{header['gameversion']}, the WAD's is "
                         f"{play.gamemode}/{play.gameversion}")
     _load_map(play, header, level, source)
-    old_fast = _game._fast_monsters
-    _game.set_fast_monsters(header["fast"])
+    play.set_tables((tables or play.tables).fast_monsters(header["fast"]))
     try:
         Decoder(play, body).apply()
     except SaveError as e:
-        _game.set_fast_monsters(old_fast)
         raise SaveError(f"{source}: body: {e}") from None
     except Exception as e:      # a body this version never writes: still one line
-        _game.set_fast_monsters(old_fast)
         raise SaveError(f"{source}: body: {type(e).__name__}: {e}") from None
     return play
 
