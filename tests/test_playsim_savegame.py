@@ -220,3 +220,20 @@ def test_a_save_of_another_wad_is_refused():
         load_game(data, wad_path("freedoom2"), source="slot.wsg")
     with pytest.raises(SaveError, match="made with 1 WAD"):
         load_game(data, wad_path("freedoom1"), [wad_path("freedoom2")])
+
+
+def test_a_nightmare_game_saves_and_loads():
+    """Skill 5's fast monsters live in the play's own tables (doom.tables): a save of such a
+    game loads and goes on as the uninterrupted one, however those tables were derived."""
+    import sys
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    from playsim_scenarios import scenario_demo
+    from wallbsp.game.playsim.demos import parse_demo
+    wad = wad_path("freedoom1")
+    demo = parse_demo(scenario_demo("nightmare-f1demo1", wad), "nightmare-f1demo1")
+    play, demo = start_demo(wad, demo)
+    assert play.tables.fast
+    run(play, demo.tics[:300])
+    loaded = load_game(save_game(play), wad)
+    assert loaded.tables.fast and first_difference(play, loaded) is None
+    assert run(loaded, demo.tics[300:400]) == run(play, demo.tics[300:400])

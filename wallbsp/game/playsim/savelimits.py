@@ -82,14 +82,13 @@ def check_map_counts(saved: dict, loaded: dict) -> None:
 
 
 def check_loaded(play, thinkers) -> None:
-    """The loaded state's indices and fixed lengths (module docstring), against the play's
-    own tables (DOOM's, their fast-monster copy, or a game's own)."""
-    sizes = _TableSizes(play)
+    """The loaded state's indices and fixed lengths (module docstring)."""
+    tables = play.tables                 # the play's own (a game's actors, skill 5's speeds)
     for i, th in enumerate(thinkers):
         if isinstance(th, Mobj):
-            _check_mobj(th, f"thinkers[{i}]", play, sizes)
+            _check_mobj(th, tables, f"thinkers[{i}]")
     for k, p in enumerate(play.players):
-        _check_player(p, f"players[{k}]", sizes)
+        _check_player(p, tables, f"players[{k}]")
     for name, seq in (("sectors", play.sectors), ("sides", play.sides),
                       ("lines", play.lines)):
         for i, obj in enumerate(seq):
@@ -114,29 +113,17 @@ _PLAYER_LISTS = (("powers", NUMPOWERS), ("cards", NUMCARDS), ("frags", MAXPLAYER
                  ("weaponowned", NUMWEAPONS), ("ammo", NUMAMMO), ("maxammo", NUMAMMO))
 
 
-class _TableSizes:
-    """How many states, types, sprites and weapons the play's tables hold."""
-
-    def __init__(self, play):
-        tables = getattr(play, "tables", None)
-        self.states = len(getattr(play, "states", None) or info.STATES)
-        self.types = len(getattr(play, "mobjinfo", None) or info.MOBJINFO)
-        self.sprites = len(getattr(tables, "sprnames", None) or ()) or info.NUMSPRITES
-        self.weapons = max(NUMWEAPONS, len(getattr(play, "weaponinfo", None) or ()))
-
-
-def _check_mobj(mo, where, play, sizes) -> None:
+def _check_mobj(mo, tables, where) -> None:
     _check_words(mo, _MOBJ_WORDS, where)
-    _index(mo, "type", sizes.types, where)
-    _index(mo, "state", sizes.states, where)
-    _index(mo, "sprite", sizes.sprites, where)
+    _index(mo, "type", len(tables.mobjinfo), where)
+    _index(mo, "state", len(tables.states), where)
+    _index(mo, "sprite", len(tables.sprnames), where)
     _ranged(mo, "angle", 0, INT_HIGH, where)
     _ranged(mo, "flags", 0, INT_HIGH, where)
     _ranged(mo, "frame", 0, 0xFFFF, where)
     _ranged(mo, "tics", -1, INT32[1], where)
     _ranged(mo, "movedir", 0, 8, where)
-    if getattr(mo, "info", None) is not (getattr(play, "mobjinfo", None)
-                                         or info.MOBJINFO)[mo.type]:
+    if getattr(mo, "info", None) is not tables.mobjinfo[mo.type]:
         raise SaveError(f"{where}.info: not the mobjinfo of type {mo.type}")
     for name in ("target", "tracer"):
         value = getattr(mo, name, None)
@@ -151,20 +138,17 @@ def _check_mobj(mo, where, play, sizes) -> None:
     _check_words(spot, ("x", "y", "angle", "type", "options"), f"{where}.spawnpoint")
 
 
-def _check_player(p, where, sizes) -> None:
+def _check_player(p, tables, where) -> None:
     _check_words(p, _PLAYER_WORDS, where)
     _ranged(p, "playerstate", 0, 2, where)
     _ranged(p, "armortype", 0, 2, where)
-    _index(p, "readyweapon", sizes.weapons, where)
-    _ranged(p, "pendingweapon", 0, max(info.wp_nochange, sizes.weapons), where)
+    _index(p, "readyweapon", NUMWEAPONS, where)
+    _ranged(p, "pendingweapon", 0, info.wp_nochange, where)
     _ranged(p, "fixedcolormap", 0, 255, where)
     if p.mo is not None and not isinstance(p.mo, Mobj):
         raise SaveError(f"{where}.mo: not a map object")
     for name, length in _PLAYER_LISTS:
         value = getattr(p, name, None)
-        if name == "weaponowned":               # a game's own weapons may be more
-            length = len(value) if type(value) is list and \
-                len(value) in (length, sizes.weapons) else length
         if type(value) is not list or len(value) != length or \
                 any(type(v) not in (int, bool) for v in value):
             raise SaveError(f"{where}.{name}: not a list of {length} numbers")
@@ -180,7 +164,7 @@ def _check_player(p, where, sizes) -> None:
         raise SaveError(f"{where}.psprites: not {NUMPSPRITES} weapon sprites")
     for k, psp in enumerate(sprites):
         if psp.state is not None:
-            _index(psp, "state", sizes.states, f"{where}.psprites[{k}]")
+            _index(psp, "state", len(tables.states), f"{where}.psprites[{k}]")
         _check_words(psp, ("tics", "sx", "sy"), f"{where}.psprites[{k}]")
 
 

@@ -7,11 +7,11 @@ import base64
 import math
 import types
 
+from .savestate import (CACHES, STATIC, TRANSIENT, UNSET_MARK, WATCHERS, References, SaveError,
+                        Unset, derived_names, dynamic_fields, map_tables, resolve_class,
+                        saved_fields, saved_value, slots_of)
 from .savelimits import (INT_HIGH, INT_LOW, check_loaded, check_map_counts,
                          check_thinker_count)
-from .savestate import (CACHES, STATIC, TRANSIENT, UNSET_MARK, References, SaveError, Unset,
-                        derived_names, dynamic_fields, map_tables, resolve_class, saved_fields, saved_value,
-                        slots_of)
 from .structs import Player, Thinker
 
 
@@ -58,8 +58,8 @@ class Decoder:
         static = derived_names(play)
         check_map_counts(saved, vars(play))
         for name, value in saved.items():
-            if name in TRANSIENT:
-                continue                    # touched*: written by saves before they were not
+            if name in WATCHERS:
+                continue                    # written by saves before they were left out
             if name in static or not name.isidentifier() or name.startswith("__") \
                     or callable(getattr(self.cls, name, None)):
                 raise SaveError(f"globals.{name}: not a saved attribute")
@@ -246,7 +246,7 @@ def first_difference(a, b):
     and dict, with the same sharing (two references to one object in ``a`` are two to one
     object in ``b``) — else the path of the first difference found and what differs."""
     seen, back = {id(a): b}, {id(b): a}
-    skip = CACHES | TRANSIENT | ((derived_names(a) | derived_names(b)) - STATIC)
+    skip = CACHES | TRANSIENT | WATCHERS | ((derived_names(a) | derived_names(b)) - STATIC)
     stack = [(f"play.{n}", getattr(a, n, Unset), getattr(b, n, Unset))
              for n in sorted(set(vars(a)) | set(vars(b)), reverse=True) if n not in skip]
     while stack:

@@ -40,12 +40,8 @@ from .structs import (DegenMobj, Line, Node, Player, Sector, Seg, Side, Subsecto
 
 # tables built from the map or the WAD on first use
 CACHES = frozenset(("_texture_heights", "sightarrays", "nodearray"))
-# what happened since a caller last looked, not the game's state: never saved or compared;
-# the event log (events.py), and what the things' watcher has not taken yet (Ticker's
-# touched list and touched_reader, a process-wide PlayThings number: saved, it made two
-# equal games save different bytes; a loaded play starts with none, so its first watcher
-# reads every thing)
-TRANSIENT = frozenset(("events", "touched", "touched_reader"))
+# what happened since a caller last looked, not the game's state: never saved or compared
+TRANSIENT = frozenset(("events",))      # the event log (events.py)
 # rebuilt by loading the map (or checked against the header): never saved
 STATIC = frozenset((
     "wad_path", "wad_files", "wad_entries", "wad_entry_files", "wad_dir", "flatnames",
@@ -56,6 +52,11 @@ STATIC = frozenset((
     # the object tables (doom.tables) and their bindings: the save's header says which
     "tables", "states", "mobjinfo", "weaponinfo", "state_rows",
 )) | CACHES | TRANSIENT
+# a watcher's bookkeeping (Ticker.take_touched: which PlayThings took the list last, by a
+# process-wide number): not the game's, and it made two equal games save different bytes;
+# a loaded play starts with none (its first watcher reads every thing)
+WATCHERS = frozenset(("touched", "touched_reader"))
+STATIC = STATIC | WATCHERS
 # the structure of the map: the rest of these classes' slots is saved
 SECTOR_FIXED = frozenset(("id", "blockbox", "soundorg", "linecount", "lines"))
 LINE_FIXED = frozenset(("id", "v1", "v2", "dx", "dy", "sidenum", "bbox", "slopetype",
