@@ -54,6 +54,8 @@ def add_parsers(sub, commands) -> None:
     p.add_argument("--map", default="MAP01", help="the map's name in the WAD (default MAP01)")
     p.add_argument("--format", choices=("doom", "udmf"), default="doom",
                    help="DOOM-format map with nodes (default) or UDMF (TEXTMAP)")
+    p.add_argument("--iwad", metavar="WAD", help="the IWAD the map will be played with: "
+                   "texture and flat names it lacks are replaced by its defaults")
     p.add_argument("--strict", action="store_true", help="treat level warnings as errors")
     p.set_defaults(func=commands["export"])
 
@@ -102,5 +104,5 @@ def cmd_export(args) -> None:
     from wallbsp.nodes.export import export_level
     check_outputs("export", [args.output], [args.level])
     level = load_source(args.level, strict=args.strict)
-    for note in export_level(level, args.output, args.map, args.format):
+    for note in export_level(level, args.output, args.map, args.format, args.iwad):
         print(f"note: {note}", file=sys.stderr)
