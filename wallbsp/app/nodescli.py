@@ -69,7 +69,7 @@ def _options(args):
     return NodeOptions(build, maps, "zero" if args.no_reject else "sight")
 
 
-def cmd_nodes(args) -> None:
+def cmd_nodes(args) -> int:
     from wallbsp.app.cliargs import UsageError
     from wallbsp.assets.wadwrite import read_wad_image
     if args.check:
@@ -77,9 +77,7 @@ def cmd_nodes(args) -> None:
             raise UsageError("nodes: --check reads a WAD and writes nothing; drop -o")
         from wallbsp.nodes.check import check_wad_file
         ok = check_wad_file(args.wad, _options(args).maps, print, args.json)
-        if not ok:
-            raise SystemExit(2)
-        return
+        return 0 if ok else 2
     if not args.output:
         raise UsageError("nodes: the output WAD is missing (-o OUT.wad)")
     check_outputs("nodes", [args.output], [args.wad])
