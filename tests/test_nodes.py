@@ -271,28 +271,34 @@ def _exported(tmp_path):
 def _corrupt(path, lump, change):
     image = read_wad_image(path)
     i = image.names().index(lump)
-    image.lumps[i] = Lump(lump, change(bytearray(image.lumps[i].data)))
+    lumps = {x.name: x.data for x in image.lumps}
+    image.lumps[i] = Lump(lump, change(bytearray(image.lumps[i].data), lumps))
     image.write(path)
 
 
-def _seg_v1_out_of_range(b):
+def _seg_v1_out_of_range(b, lumps):
     b[0:2] = struct.pack("<H", 9999)
     return bytes(b)
 
 
-def _seg_off_its_line(b):
+def _seg_off_its_line(b, lumps):
+    """Seg 0's v2 moved to the vertex farthest from its linedef's line."""
     segs = np.frombuffer(bytes(b), SEG).copy()
-    segs["v2"][0] = segs["v1"][len(segs) // 2]
+    v = np.frombuffer(lumps["VERTEXES"], "<i2").reshape(-1, 2).astype(np.int64)
+    ld = np.frombuffer(lumps["LINEDEFS"], "<u2").reshape(-1, 7)[segs["linedef"][0]]
+    (x1, y1), (x2, y2) = v[ld[0]], v[ld[1]]
+    off = np.abs((x2 - x1) * (v[:, 1] - y1) - (y2 - y1) * (v[:, 0] - x1))
+    segs["v2"][0] = int(np.argmax(off))
     return segs.tobytes()
 
 
-def _node_cycle(b):
+def _node_cycle(b, lumps):
     nodes = np.frombuffer(bytes(b), NODE).copy()
     nodes["child"][-1][0] = len(nodes) - 1
     return nodes.tobytes()
 
 
-def _subsector_loses_a_seg(b):
+def _subsector_loses_a_seg(b, lumps):
     subs = np.frombuffer(bytes(b), SUBSECTOR).copy()
     k = int(np.argmax(subs["count"]))
     subs["count"][k] -= 1

@@ -38,10 +38,11 @@ def add_parsers(sub, commands) -> None:
                    metavar="N", help=f"segs whose lines are tried at each node, 0: all "
                                      f"(zdbsp's --partition; default {d.candidates})")
     p.add_argument("-s", "--split-cost", type=_positive, default=d.split_cost, metavar="N",
-                   help=f"cost of cutting a seg, against one seg of imbalance (zdbsp's "
-                        f"--split-cost; default {d.split_cost})")
+                   help=f"cost of cutting a seg (zdbsp's --split-cost; default "
+                        f"{d.split_cost})")
     p.add_argument("--balance", type=_positive, default=d.balance, metavar="N",
-                   help=f"weight of a partition's imbalance (default {d.balance})")
+                   help=f"how much a balanced partition counts against its cuts: higher, "
+                        f"fewer segs and a deeper tree (default {d.balance})")
     p.add_argument("-d", "--diagonal-cost", type=_positive, default=d.diagonal_cost,
                    metavar="N", help=f"cost of a diagonal partition (zdbsp's "
                                      f"--diagonal-cost; default {d.diagonal_cost})")
@@ -63,8 +64,7 @@ def add_parsers(sub, commands) -> None:
 def _options(args):
     from wallbsp.nodes.builder import BuildOptions
     from wallbsp.nodes.wadnodes import NodeOptions
-    build = BuildOptions(args.candidates, args.split_cost, args.balance, args.diagonal_cost,
-                         BuildOptions().slack)
+    build = BuildOptions(args.candidates, args.split_cost, args.balance, args.diagonal_cost)
     maps = tuple(m.strip() for m in args.maps.split(",") if m.strip()) if args.maps else None
     return NodeOptions(build, maps, "zero" if args.no_reject else "sight")
 
