@@ -28,6 +28,7 @@ import numpy as np
 from wallbsp.jit import kernel
 
 FRONT, BACK, SPLIT, ON_FRONT, ON_BACK = 0, 1, 2, 3, 4
+ABANDONED = 2e15          # a cost no partition has: scored only until it could not win
 NO_CHILD = -1
 
 
@@ -77,11 +78,15 @@ def split_point(x1, y1, x2, y2, s1, s2, lx, ly, ldx, ldy):
 
 
 @kernel
-def partition_cost(c, cell, n, seg, lines, split_cost, balance, diagonal_cost):
+def partition_cost(c, cell, n, seg, lines, split_cost, balance, diagonal_cost, beat):
     """The cost of the partition along seg ``cell[c]`` for the ``n`` segs of ``cell``, or -1
     when it separates nothing (every seg in front): ``-(front * back) / penalty``, where
     front and back count the cut segs on both sides and ``penalty = (1 + split_cost *
-    cuts / 16) ** balance``, times ``1 + diagonal_cost / 16`` for a diagonal line."""
+    cuts / 16) ** balance``, times ``1 + diagonal_cost / 16`` for a diagonal line.  The scan
+    stops (returning ``ABANDONED``) once the cuts so far mean it cannot cost less than
+    ``beat``: the score is at most ``((n + cuts) / 2) ** 2 / penalty``, which falls as cuts
+    grow when ``balance >= 2`` and ``split_cost >= 16``, so what wins is unchanged."""
+    prune = balance >= 2 and split_cost >= 16
     s0 = cell[c]
     px, py, pdx, pdy = seg_line(s0, seg, lines)
     thr = 0.25 * float(pdx * pdx + pdy * pdy)
@@ -96,6 +101,10 @@ def partition_cost(c, cell, n, seg, lines, split_cost, balance, diagonal_cost):
             front += 1
         elif side == SPLIT:
             splits += 1
+            if prune:
+                half = 0.5 * float(n + splits)
+                if 1e15 - half * half / (1.0 + split_cost * splits / 16.0) ** balance > beat:
+                    return ABANDONED
         else:
             back += 1
     if back == 0 and splits == 0:
@@ -140,7 +149,8 @@ def choose_partition(cell, n, seg, lines, params, tried, stamp, banned, cell_id)
             if tried[plane] == stamp or banned[plane] == cell_id:
                 continue
             tried[plane] = stamp
-            cost = partition_cost(c, cell, n, seg, lines, split_cost, balance, diagonal_cost)
+            cost = partition_cost(c, cell, n, seg, lines, split_cost, balance, diagonal_cost,
+                                  best_cost if best >= 0 else ABANDONED)
             if cost >= 0 and (best < 0 or cost < best_cost):
                 best, best_cost = c, cost
         if best >= 0 or step == 1:
