@@ -359,8 +359,9 @@ def test_extended_nodes_hold_the_same_tree():
 
 
 def test_a_freedoom_demo_stays_in_sync_on_its_rebuilt_map(tmp_path):
-    """freedoom2's DEMO3 on its map with our nodes, blockmap and reject: the new tree gives
-    every sight check the same answer here, so the play matches Chocolate Doom's trace."""
+    """freedoom2's DEMO3 on its map (MAP02) with our nodes, blockmap and reject: the new
+    tree gives every sight check the same answer here, so the play matches Chocolate Doom's
+    trace of the shipped map."""
     path = DOOM / "freedoom2.wad"
     if not path.is_file():
         pytest.skip("Freedoom is not installed")
