@@ -336,6 +336,12 @@ def test_nodes_command_rebuilds_and_keeps_everything_else(tmp_path, capsys):
         if a.name in ("THINGS", "LINEDEFS", "SIDEDEFS", "SECTORS", "EXTRA"):
             assert a.data == b.data
     assert set(new.lumps[new.names().index("REJECT")].data) == {0}
+    image = read_wad_image(path)
+    at = image.names().index("REJECT")
+    image.lumps[at] = Lump("REJECT", bytes([0x5A]) * len(image.lumps[at].data))
+    image.write(path)
+    assert main(["nodes", str(path), "-o", str(out), "--keep-reject"]) == 0
+    assert read_wad_image(out).lumps[at].data == image.lumps[at].data
     assert main(["nodes", str(path), "-o", str(out), "--maps", "MAP07"]) == 2
 
 

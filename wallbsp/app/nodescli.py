@@ -34,6 +34,8 @@ def add_parsers(sub, commands) -> None:
     p.add_argument("--check", action="store_true",
                    help="check the WAD's nodes instead (any node builder's); exit 2 if bad")
     p.add_argument("--no-reject", action="store_true", help="write a zeroed REJECT")
+    p.add_argument("--keep-reject", action="store_true",
+                   help="keep each map's own REJECT (zdbsp's -E), e.g. a hand-tuned one")
     p.add_argument("-p", "--candidates", "--partition", type=_positive, default=d.candidates,
                    metavar="N", help=f"segs whose lines are tried at each node, 0: all "
                                      f"(zdbsp's --partition; default {d.candidates})")
@@ -66,7 +68,8 @@ def _options(args):
     from wallbsp.nodes.wadnodes import NodeOptions
     build = BuildOptions(args.candidates, args.split_cost, args.balance, args.diagonal_cost)
     maps = tuple(m.strip() for m in args.maps.split(",") if m.strip()) if args.maps else None
-    return NodeOptions(build, maps, "zero" if args.no_reject else "sight")
+    reject = "zero" if args.no_reject else "keep" if args.keep_reject else "sight"
+    return NodeOptions(build, maps, reject)
 
 
 def cmd_nodes(args) -> int:
