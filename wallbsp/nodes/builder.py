@@ -32,7 +32,7 @@ LEAF_FLAG = 1 << 31       # a child that is a subsector (wide; a lump has its ow
 
 @dataclass(frozen=True)
 class BuildOptions:
-    candidates: int = 128
+    candidates: int = 512
     split_cost: int = 16
     balance: int = 3
     diagonal_cost: int = 0

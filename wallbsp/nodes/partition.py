@@ -12,8 +12,8 @@ the line that separates something with the highest ``front * back / (1 + split_c
 / 16) ** balance`` wins (ties: the earlier candidate), so the build is the same every time.
 A product of the sides' sizes, as ZenNode scores, rather than zdbsp's sum ``split_cost *
 cuts + |front - back|``: on the 68 Freedoom maps the sum gave 1.096 SEGS a side at median
-depth 38 (``-p 64 -s 64``), the product 1.094 at 38 (``-p 128 -s 16 --balance 3``) and
-1.098 at 31.5 (``-p 64 --balance 2``).
+depth 38 (``-p 64 -s 64``), the product 1.093 at 39.5 (``-p 512 -s 16 --balance 3``, fewer
+segs than the shipped nodes on 54 maps) and 1.098 at 31.5 (``-p 64 --balance 2``).
 
 Split points (``split_point``): the exact crossing ``p1 + (p2 - p1) s1 / (s1 - s2)``
 rounded to the integer point, of the four around it, nearest the seg's own linedef (then
