@@ -83,6 +83,30 @@ def test_vector_env_sees_the_screen_and_scaled_rewards_of_the_plain_env():
         plain.close()
 
 
+def test_each_agent_sees_its_own_frame_through_the_screen():
+    pytest.importorskip("pettingzoo")
+    from wallbsp.envs import parallel_env
+    from wallbsp.envs.rllib import Screen, ScreenedAgents
+    screen = Screen(60, 80, size=10)
+    env = ScreenedAgents(parallel_env(players=2, size=(80, 60), observations=("rgb",)), screen)
+    plain = parallel_env(players=2, size=(80, 60), observations=("rgb",))
+    try:
+        seen, _ = env.reset(seed=5)
+        raw, _ = plain.reset(seed=5)
+        assert sorted(seen) == env.possible_agents == ["player_0", "player_1"]
+        for _ in range(3):
+            actions = {agent: 1 for agent in env.agents}
+            seen, rewards, *_ = env.step(actions)
+            raw, raw_rewards, *_ = plain.step(actions)
+            assert rewards == raw_rewards
+        for agent in env.possible_agents:
+            assert env.observation_space(agent).contains(seen[agent])
+            np.testing.assert_allclose(seen[agent], screen(raw[agent]["rgb"]), atol=1e-6)
+    finally:
+        env.close()
+        plain.close()
+
+
 def test_bad_config_is_one_clear_error():
     with pytest.raises(ValueError, match="unknown scenario 'nope'"):
         make_env({"scenario": "nope"})

@@ -24,6 +24,7 @@ import sys
 import time
 from pathlib import Path
 
+DEATHMATCH = "deathmatch"           # the scenario name for two agents (PettingZoo, shared policy)
 RUNNER_SLOT = "wallbsp_runner"      # the custom resource that places env runners on nodes
 # BLAS and torch threads per process: several processes share the cores, and OpenBLAS's
 # spinning threads made the screen's small matrix products 70x slower on this busy machine
@@ -32,7 +33,10 @@ THREAD_VARIABLES = ("OMP_NUM_THREADS", "OPENBLAS_NUM_THREADS", "MKL_NUM_THREADS"
 
 def parse(argv=None):
     p = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
-    p.add_argument("scenario", help="basic, defend_the_center, ... (wallbsp.envs.rllib)")
+    p.add_argument("scenario", help="basic, defend_the_center, ... (wallbsp.envs.rllib), or "
+                                    "deathmatch: two agents, one shared policy")
+    p.add_argument("--max-tics", type=int, default=1050,
+                   help="deathmatch: episode length in tics (1050: 30 s)")
     p.add_argument("--vizdoom", action="store_true", help="ViZDoom's own environments")
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--steps", type=int, default=300_000, help="env steps to train for")
@@ -94,34 +98,63 @@ def start_ray(args):
         ray.init(address=cluster.address, log_to_driver=False,
                  runtime_env={"env_vars": threads})
         return cluster
-    ray.init(num_cpus=args.cpus or max(args.runners, 1), **quiet)
+    # "local": a Ray of its own, never another run's cluster found on this machine
+    ray.init(address="local", num_cpus=args.cpus or max(args.runners, 1), **quiet)
     return None
 
 
 def build(args):
     from ray.rllib.algorithms.ppo import PPOConfig
     from ray.rllib.core.rl_module.default_model_config import DefaultModelConfig
-    from wallbsp.envs.rllib import count_node_steps, register
-    name = register("wallbsp-rllib")
-    fragment = max(args.batch // max(args.runners, 1) // args.envs, 1)
-    runners = dict(num_env_runners=args.runners, num_envs_per_env_runner=args.envs,
-                   gym_env_vectorize_mode="vector_entry_point",
+    from wallbsp.envs.rllib import count_node_steps
+    several = args.scenario == DEATHMATCH
+    envs = 1 if several else args.envs        # RLlib's multi-agent runners step one env
+    fragment = max(args.batch // max(args.runners, 1) // envs, 1)
+    runners = dict(num_env_runners=args.runners, num_envs_per_env_runner=envs,
                    rollout_fragment_length=fragment, num_cpus_per_env_runner=1)
+    if not several:
+        runners["gym_env_vectorize_mode"] = "vector_entry_point"    # make_vec per runner
     if args.nodes:
         runners["custom_resources_per_env_runner"] = {RUNNER_SLOT: 1}
+    # one CNN for policy and value (RLlib's PPO defaults to two): half the learner's cost
+    model = DefaultModelConfig(vf_share_layers=True)
     config = (PPOConfig()
-              .environment(name, env_config=env_config(args))
               .env_runners(**runners)
               .learners(num_learners=0)
               .training(lr=args.lr, train_batch_size_per_learner=args.batch,
                         minibatch_size=args.minibatch, num_epochs=args.epochs, gamma=0.99,
                         lambda_=0.95, clip_param=0.2, entropy_coeff=args.entropy,
                         vf_loss_coeff=0.5, grad_clip=0.5)
-              # one CNN for policy and value (RLlib's PPO defaults to two): half the cost
-              .rl_module(model_config=DefaultModelConfig(vf_share_layers=True))
               .callbacks(on_sample_end=count_node_steps)
               .debugging(seed=args.seed))
+    config = deathmatch(config, args, model) if several else (
+        config.environment(register_single(), env_config=env_config(args))
+              .rl_module(model_config=model))
     return config.build_algo()
+
+
+def register_single() -> str:
+    from wallbsp.envs.rllib import register
+    return register("wallbsp-rllib")
+
+
+def deathmatch(config, args, model):
+    """Two players in the arena (PettingZoo's ``parallel_env``), one policy for both."""
+    from ray.rllib.core.rl_module.multi_rl_module import MultiRLModuleSpec
+    from ray.rllib.core.rl_module.rl_module import RLModuleSpec
+    from ray.tune.registry import register_env
+    from wallbsp.envs.rllib import multiagent_env
+    register_env("wallbsp-deathmatch", multiagent_env)
+    options = {"players": 2, "mode": "deathmatch", "max_tics": args.max_tics,
+               "size": args.size, "gray": not args.rgb}
+    return (config.environment("wallbsp-deathmatch", env_config=options)
+            .multi_agent(policies={"shared"}, policy_mapping_fn=shared_policy)
+            .rl_module(rl_module_spec=MultiRLModuleSpec(
+                rl_module_specs={"shared": RLModuleSpec()}), model_config=model))
+
+
+def shared_policy(agent_id, episode, **_):
+    return "shared"
 
 
 def node_names() -> dict:
@@ -149,16 +182,28 @@ def summary(result, args, iteration, started, names) -> dict:
             "return_min": _unscaled(runners.get("episode_return_min"), args.reward_scale),
             "return_max": _unscaled(runners.get("episode_return_max"), args.reward_scale),
             "episode_len_mean": _rounded(runners.get("episode_len_mean")),
-            "episodes": runners.get("num_episodes"),
+            "episodes": _whole(runners.get("num_episodes")),
+            **({"agent_return_mean": {a: round(float(v), 2) for a, v in
+                                      runners["agent_episode_return_mean"].items()}}
+               if args.scenario == DEATHMATCH and runners.get("agent_episode_return_mean")
+               else {}),
             "wall_s": round(time.perf_counter() - started, 1),
             "iter_s": round(seconds, 2),
             "sample_s": _rounded(result.get("timers", {}).get("env_runner_sampling_timer"), 2),
             "learn_s": _rounded(result.get("timers", {}).get("learner_update_timer"), 2),
             "steps_per_s": round(steps / seconds, 1) if seconds else None,
+            **learner_stats(result),
             "env_steps_node": per_node}
     if seconds:
         line["steps_per_s_node"] = {k: round(v / seconds, 1) for k, v in per_node.items()}
     return line
+
+
+def learner_stats(result) -> dict:
+    """The policy's entropy and the value function's explained variance (how learning goes)."""
+    learners = result.get("learners", {})
+    stats = next((v for k, v in learners.items() if not k.startswith("__")), {})
+    return {key: _rounded(stats.get(key), 3) for key in ("entropy", "vf_explained_var")}
 
 
 def timed_sample(runner):
@@ -194,6 +239,10 @@ def sampling_rate(algo, rounds: int, names) -> dict:
 
 def _unscaled(value, scale):
     return None if value is None or value != value else round(value / scale, 2)
+
+
+def _whole(value):
+    return None if value is None else int(value)
 
 
 def _rounded(value, digits=1):
@@ -244,6 +293,8 @@ def train(args) -> list:
 
 def main(argv=None) -> int:
     args = parse(argv)
+    if args.scenario == DEATHMATCH:
+        args.reward_scale = 1.0            # frags and deaths count one each
     for name in THREAD_VARIABLES:        # before numpy and torch start their thread pools
         os.environ.setdefault(name, str(args.threads))
     try:

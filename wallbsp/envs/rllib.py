@@ -15,6 +15,9 @@ ViZDoom's own environments).  The env config says what to build:
   takes), ``gray`` (True), ``reward_scale`` (0.01: ViZDoom's rewards are in the hundreds);
 - ``env_workers``: ``make_vec``'s ``workers`` for each runner (0: in the runner's process).
 
+``multiagent_env`` is the PettingZoo deathmatch (``parallel_env``) as RLlib's
+``MultiAgentEnv``, each agent seeing its own ``Screen``.
+
 Both sources go through the same ``Screen`` (an area-weighted resize, optionally to gray,
 to floats in [-1, 1]) and the same reward scaling, so one trainer sees one configuration.
 Ray is imported inside the functions only: ``wallbsp.envs`` never needs it.
@@ -23,8 +26,8 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["SCENARIOS", "Screen", "make_env", "register", "count_node_steps",
-           "DEFAULTS"]
+__all__ = ["SCENARIOS", "DEFAULTS", "Screen", "ScreenedAgents", "make_env", "register",
+           "count_node_steps", "multiagent_env"]
 
 # scenario -> (wallbsp's id, ViZDoom's id)
 SCENARIOS = {"basic": ("wallbsp/Basic-v0", "VizdoomBasic-v1"),
@@ -151,3 +154,61 @@ def count_node_steps(*, env_runner, metrics_logger, samples, **_):
     steps = sum(len(episode) for episode in samples)
     metrics_logger.log_value(("node_env_steps", node), steps, reduce="sum")
 
+
+
+class ScreenedAgents:
+    """A PettingZoo ``ParallelEnv`` whose agents each see ``Screen``'s view of their own
+    frame (``rgb``); the rest passes through.  Duck-typed, so that RLlib's
+    ``ParallelPettingZooEnv`` takes it and nothing here imports ray."""
+
+    def __init__(self, env, screen: Screen):
+        self.env, self.screen = env, screen
+        self.possible_agents = list(env.possible_agents)
+        self.metadata = getattr(env, "metadata", {})
+        self.render_mode = getattr(env, "render_mode", None)
+
+    @property
+    def agents(self):
+        return self.env.agents
+
+    @property
+    def unwrapped(self):
+        return self.env
+
+    def observation_space(self, agent):
+        return self.screen.space
+
+    def action_space(self, agent):
+        return self.env.action_space(agent)
+
+    def _seen(self, observations):
+        return {agent: self.screen(frames_of(obs)) for agent, obs in observations.items()}
+
+    def reset(self, seed=None, options=None):
+        observations, infos = self.env.reset(seed=seed, options=options)
+        return self._seen(observations), infos
+
+    def step(self, actions):
+        observations, *rest = self.env.step(actions)
+        return (self._seen(observations), *rest)
+
+    def render(self, *args):
+        return self.env.render()
+
+    def close(self):
+        self.env.close()
+
+
+def multiagent_env(config):
+    """RLlib's ``MultiAgentEnv`` over ``parallel_env`` (several players in one DOOM net
+    game): ``config`` holds ``parallel_env``'s options (``players``, ``mode``,
+    ``max_tics``, ...) and ``size``, ``gray`` (the policy's view, as ``Screen``) and
+    ``screen`` (the rendered ``(W, H)``, default 160x120); frame skip 4 unless given."""
+    from ray.rllib.env.wrappers.pettingzoo_env import ParallelPettingZooEnv
+    from wallbsp.envs import parallel_env
+    options = dict(config)
+    size, gray = options.pop("size", 64), options.pop("gray", True)
+    width, height = options.pop("screen", (160, 120))
+    options.setdefault("frame_skip", 4)
+    env = parallel_env(size=(width, height), observations=("rgb",), **options)
+    return ParallelPettingZooEnv(ScreenedAgents(env, Screen(height, width, size, gray)))
