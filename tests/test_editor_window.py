@@ -384,3 +384,21 @@ def test_ctrl_e_exports_a_wad_beside_the_level(session, tmp_path, monkeypatch):
     step(session)
     assert session.status.startswith("exported untitled.wad"), session.status
     assert len(load_wad_level(tmp_path / "untitled.wad", "MAP01").walls) == 4
+
+
+def test_the_live_tree_after_an_edit_is_a_quick_tree_that_agrees_with_the_default(session):
+    import random
+    from wallbsp import compile_level
+    from wallbsp.editor.treeview import LIVE_CANDIDATES, LiveTree
+    rectangle(session, 0, 0, 512, 512)
+    rectangle(session, 128, 128, 256, 256)
+    rectangle(session, 512, 64, 768, 320)
+    session.compiler = LiveTree(session.editor)
+    overlay = session.compiler.wait()
+    session.compiler.close()
+    assert overlay.stats["candidates"] == LIVE_CANDIDATES
+    full = compile_level(session.level)
+    rng = random.Random(3)
+    for _ in range(300):
+        x, y = rng.uniform(-50, 800), rng.uniform(-50, 560)
+        assert overlay.tree.locate(x, y) == full.locate(x, y), (x, y)
