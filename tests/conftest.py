@@ -51,11 +51,13 @@ def freedoom_cache():
 @pytest.fixture
 def opened():
     """``opened(tree, size=(160, 100), window=(320, 200), **options)``: a walkthrough at the
-    level's start with its display open; every one opened is closed after the test."""
+    level's start with its display open (square pixels unless ``aspect`` is given); every
+    one opened is closed after the test."""
     from wallbsp.app import walkthrough
     walks = []
 
     def open_walk(tree, size=(160, 100), window=(320, 200), **options):
+        options.setdefault("aspect", None)          # square pixels: the window is filled
         walk = walkthrough.Walkthrough.at_start(tree, size, window, **options)
         walkthrough.open_display(walk)
         walks.append(walk)

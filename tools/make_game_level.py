@@ -6,7 +6,8 @@ generator's ``grid_walls`` (walls only where two letters meet, merged along runs
 DOOM's editor numbers for the things and DOOM's line specials, so the play simulation runs
 them by DOOM's rules:
 
-    start room --door--> hall (zombiemen, the shotgun on a step) --> corridor
+    start room (shotgun, shells, armour; a secret behind a brick door) --door--> hall (a
+    zombieman or two, far from the door) --> corridor
     --> courtyard under the sky (imps, a shotgun guy, barrels) with a ledge reached by a
     lift (use its face, special 62) holding the red key card and armour
     --red door (special 28)--> the demons' hall (the chaingun) --> exit switch (special 11)
@@ -49,14 +50,16 @@ MAP = """
 #aaaaaaaaaaaa######yyyyyyyyyyyyyyyyyyyyyy#####
 #aaaaaaaaaaaa######yyyyyyyyyyyyyyyyyyyyyyuuuu#
 #aaaaaaaaaaaa######yyyyyy##yyyyyyyyyyyyyyuuuu#
-#aaaaaaaaaaaa######yyyyyy##yyyyyyyyyyyyyyuuuu#
-#aaaaaaaaaaaa######yyyyyyyyyyyyyyyyyyyylluuuu#
-#aaaaaaaaaaaa######yyyyyyyyyyyyy##yyyyylluuuu#
+#aaaaaaaaaaaa#sss##yyyyyy##yyyyyyyyyyyyyyuuuu#
+#aaaaaaaaaaaahsss##yyyyyyyyyyyyyyyyyyyylluuuu#
+#aaaaaaaaaaaahsss##yyyyyyyyyyyyy##yyyyylluuuu#
 #aaaaaaaaaaaa######yyyyyyyyyyyyy##yyyyyyyuuuu#
 #aaaaaaaaaaaa######yyyyyyyyyyyyyyyyyyyyyyuuuu#
 #aaaaaaaaaaaa######yyyyyyyyyyyyyyyyyyyyyy#####
 ##############################################
 """
+
+SECRET = 9                # DOOM's sector special: a secret found when the player enters
 
 # letter: floor, ceiling, light, floor flat, ceiling flat, wall, lower, upper, kind, special
 SECTORS = {
@@ -71,6 +74,8 @@ SECTORS = {
     "r": (0, 0, 160, "FLOOR2", "CEIL2", "DOORTRAK", "DOORTRAK", "DOORRED", "door", 0),
     "z": (0, 144, 160, "FLOOR3", "CEIL1", "WOOD1", "STEP1", "WOOD1", "room", 1),
     "n": (0, 96, 192, "FLOOR1", "CEIL2", "METAL1", "STEP1", "METAL1", "niche", 0),
+    "h": (0, 0, 160, "FLOOR1", "CEIL1", "BRICK1", "STEP1", "BRICK1", "door", 0),
+    "s": (0, 96, 112, "FLOOR2", "CEIL1", "BRICK2", "STEP1", "BRICK2", "room", SECRET),
 }
 DOOR, RED_DOOR, LIFT, EXIT_SWITCH, LIFT_TAG = 1, 28, 62, 11, 1
 
@@ -80,28 +85,33 @@ ZOMBIE, SHOTGUN_GUY, IMP, DEMON = 3004, 9, 3001, 3002
 SHOTGUN, CHAINGUN, CLIP, SHELLS, BULLETS, SHELL_BOX = 2001, 2002, 2007, 2008, 2048, 2049
 STIMPACK, MEDIKIT, ARMOUR, RED_CARD, BARREL, LAMP = 2011, 2012, 2018, 13, 2035, 2028
 THINGS = [
-    # the start room
+    # the start room: the shotgun, shells and armour before the first fight (E1M1 teaches so)
     (3, 16, 90, CLIP, ALL), (10, 16, 90, STIMPACK, ALL), (2, 12, 0, LAMP, ALL),
-    (11, 12, 0, LAMP, ALL),
-    # the hall behind the first door: the shotgun on the step
-    (5.5, 4, 270, SHOTGUN, ALL), (9, 6, 0, SHELLS, ALL), (1, 1, 0, LAMP, ALL),
-    (3, 2, 270, ZOMBIE, ALL), (12, 3, 270, ZOMBIE, ALL), (11, 7, 180, ZOMBIE, HARD),
-    (13, 1, 270, SHOTGUN_GUY, NORMAL | HARD),
+    (11, 12, 0, LAMP, ALL), (6, 13, 90, SHOTGUN, ALL), (8, 13, 90, SHELLS, ALL),
+    (4, 13, 90, ARMOUR, ALL),
+    # the secret behind the brick wall east of the start (a door that looks like the wall)
+    (15, 14, 0, MEDIKIT, ALL), (15, 15, 0, SHELL_BOX, ALL), (15, 16, 0, BULLETS, ALL),
+    # the hall behind the first door: a zombieman or two, far from the door
+    (12, 2, 270, ZOMBIE, ALL), (3, 1, 270, ZOMBIE, NORMAL | HARD), (11, 7, 180, ZOMBIE, HARD),
+    (13, 1, 270, SHOTGUN_GUY, HARD), (9, 6, 0, SHELLS, ALL), (1, 1, 0, LAMP, ALL),
+    (5.5, 4, 0, STIMPACK, EASY | NORMAL),
     # the corridor
     (21.5, 8, 90, ZOMBIE, ALL), (18, 4.5, 0, CLIP, ALL), (21.5, 6, 0, STIMPACK, EASY | NORMAL),
-    # the courtyard
-    (28, 16, 90, IMP, ALL), (35, 13, 180, IMP, ALL), (25, 12, 270, IMP, NORMAL | HARD),
-    (37, 18, 180, SHOTGUN_GUY, ALL), (24, 17, 0, BARREL, ALL), (31, 13, 0, BARREL, ALL),
-    (20, 19, 0, MEDIKIT, ALL), (38, 12, 0, SHELL_BOX, ALL), (20, 12, 0, SHELLS, ALL),
+    # the courtyard: imps one at a time, the shotgun guy from medium on
+    (28, 16, 90, IMP, ALL), (35, 13, 180, IMP, NORMAL | HARD), (25, 12, 270, IMP, HARD),
+    (37, 18, 180, SHOTGUN_GUY, NORMAL | HARD), (24, 17, 0, BARREL, ALL),
+    (31, 13, 0, BARREL, ALL), (20, 19, 0, MEDIKIT, ALL), (38, 12, 0, SHELL_BOX, ALL),
+    (20, 12, 0, SHELLS, ALL), (22, 18, 0, MEDIKIT, EASY | NORMAL),
     # the ledge, up the lift
     (43, 15, 180, RED_CARD, ALL), (42, 13, 0, ARMOUR, ALL), (43, 17, 0, BULLETS, ALL),
     (44, 12, 180, IMP, HARD),
     # the demons' hall behind the red door
-    (33.5, 6, 90, CHAINGUN, ALL), (33, 3, 270, DEMON, ALL), (38, 2, 270, DEMON, ALL),
-    (30, 2, 270, DEMON, NORMAL | HARD), (40, 6, 180, IMP, ALL), (30, 7, 0, MEDIKIT, ALL),
+    (33.5, 6, 90, CHAINGUN, ALL), (33, 3, 270, DEMON, ALL), (38, 2, 270, DEMON, NORMAL | HARD),
+    (30, 2, 270, DEMON, HARD), (40, 6, 180, IMP, NORMAL | HARD), (30, 7, 0, MEDIKIT, ALL),
     (39, 1, 0, CLIP, ALL),
 ]
 START = (7, 18, 90)        # column, row, facing north
+LEVEL_FILES = [(TARGET, MAP)]      # the episode's levels: where each goes, its map
 
 
 def tile_grid() -> tuple[np.ndarray, list[str]]:
@@ -135,9 +145,9 @@ def level_dict() -> dict:
                        for c, r, a, t, f in THINGS]}
 
 
-def at(column: float, row: float) -> tuple[int, int]:
+def at(column: float, row: float, map_text: str = None) -> tuple[int, int]:
     """The map point at the centre of MAP's tile (column, row); row 0 is the top line."""
-    rows = len(MAP.strip().splitlines())
+    rows = len((map_text or MAP).strip().splitlines())
     return int(column * TILE + TILE // 2), int((rows - 1 - row) * TILE + TILE // 2)
 
 

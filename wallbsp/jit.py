@@ -21,7 +21,7 @@ import os
 import threading
 from pathlib import Path
 
-__all__ = ["kernel", "step_kernel", "LazyKernel"]
+__all__ = ["kernel", "step_kernel", "LazyKernel", "compiled_signatures"]
 
 _STATE = {"numba": None}
 _LAZY: list = []
@@ -31,10 +31,24 @@ _LOADING = threading.Lock()             # two threads' first calls load numba on
 _INLINE = "_wallbsp_inline"         # a step function's mark: compiled into its callers
 
 
+_MADE: list = []         # every dispatcher made: what ``compiled_signatures`` counts
+
+
 def _jit(function):
     numba = _STATE["numba"]
     inline = "always" if getattr(function, _INLINE, False) else "never"
-    return numba.njit(cache=True, nogil=True, error_model="numpy", inline=inline)(function)
+    dispatcher = numba.njit(cache=True, nogil=True, error_model="numpy",
+                            inline=inline)(function)
+    _MADE.append(dispatcher)
+    return dispatcher
+
+
+def compiled_signatures() -> dict:
+    """``kernel name -> signatures compiled (or loaded from the cache) so far`` in this
+    process: a kernel called with new argument types since shows as a new signature (the
+    game's warm-up is checked so: no new one during play)."""
+    return {f"{d.py_func.__module__}.{d.py_func.__qualname__}": len(d.signatures)
+            for d in _MADE}
 
 
 class LazyKernel:

@@ -108,9 +108,10 @@ def _world_of(data, wad, level, tree, skill, path) -> World:
         return World(tree, skill, play=play)
     except SaveError:
         raise
-    except (TypeError, ValueError, IndexError, KeyError, AttributeError) as e:
-        # load_game checks the structure, not every saved field's type; a save edited with
-        # its digest made anew can still hold a value no World can be made from
+    except Exception as e:
+        # load_game checks the structure and the ranges of DOOM's own fields, not every
+        # value of every object; a save edited with its digest made anew can still hold one
+        # no World can be made from (an OverflowError, say): the game in play goes on
         raise SaveError(f"{path}: body: the saved state makes no world "
                         f"({type(e).__name__}: {e})") from None
 

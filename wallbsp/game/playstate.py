@@ -71,7 +71,7 @@ class PlayState(WorldState):
         super().__init__(tree, skill)
         self.play = play
         self._things = PlayThings(tree, capacity=len(tree.level.things))
-        self._things.place_static(tree.level, skill)
+        self._things.place_static(tree.level, skill, play.tables)
         self.walls = wall_lines(play)
         self._watched = []               # (wall, side number, Side, textures at load)
         self._scrolling = []             # (wall, Side, offset at load)

@@ -366,7 +366,7 @@ class Scenario:
         play, p = world.play, world.play.players[0]
         play.p_setup_psprites(p)
         p.psprites[PS_WEAPON].sy = WEAPONTOP
-        play.p_set_psprite(p, PS_WEAPON, info.WEAPONINFO[p.readyweapon].readystate)
+        play.p_set_psprite(p, PS_WEAPON, play.weaponinfo[p.readyweapon].readystate)
 
     @staticmethod
     def damage(world, amount, target=None) -> None:

@@ -49,8 +49,6 @@ from __future__ import annotations
 
 from collections import deque
 
-import numpy as np
-
 from wallbsp.camera import EYE_HEIGHT, Camera
 from wallbsp.game import probe
 from wallbsp.game.multiplayer import check_deathmatch, check_players, join_players
@@ -63,8 +61,9 @@ from wallbsp.game.playsim.game import (GA_COMPLETED, GA_VICTORY, GA_WORLDDONE, G
 from wallbsp.game.playsim.levelbsp import LevelMapError
 from wallbsp.game.playsim.structs import TicCmd
 from wallbsp.game.playstate import PlayState, ThingsView
+from wallbsp.game.arguments import describe, integer, number
 from wallbsp.game.probe import PLAYER_RADIUS
-from wallbsp.game.ticcmds import MAX_TURN, as_ticcmd, checked_number, ticcmd
+from wallbsp.game.ticcmds import COMMAND_KEYWORDS, MAX_TURN, as_ticcmd, checked_number, ticcmd
 from wallbsp.doom import info
 from wallbsp.doom.fixed import ANG90
 
@@ -81,10 +80,9 @@ class World:
 
     def __init__(self, tree, skill: int = 3, players: int = 1, deathmatch: int = 0,
                  play=None):
-        if isinstance(skill, bool) or not isinstance(skill, (int, np.integer)) \
-                or skill not in SKILLS:
-            raise ValueError(f"World: skill must be an integer 1 to 5, not {skill!r}")
-        self.tree, self.level, self.skill = tree, tree.level, int(skill)
+        skill = integer("World", "skill", skill, SKILLS.start, SKILLS.stop - 1)
+        _check_tree("World", tree)
+        self.tree, self.level, self.skill = tree, tree.level, skill
         self.player_count = check_players(players)
         self.deathmatch = check_deathmatch(deathmatch)
         self.player_messages = tuple(deque(maxlen=MESSAGE_LOG)
@@ -137,6 +135,7 @@ class World:
         with them) and the world follows it.  ``tree`` is the map the play goes on to (a
         WAD's: the one DOOM's ``wminfo.next`` names); ValueError, nothing changed, if the
         play is not done with its level or ``tree`` is another map."""
+        _check_tree("World.next_map", tree)
         play = self.play
         if play.gameaction != GA_WORLDDONE:
             raise ValueError("World.next_map: the play has not finished its level")
@@ -209,11 +208,18 @@ class World:
 
     def sector(self, i: int):
         """``(floor, ceiling, light)`` of sector ``i`` now."""
+        i = integer("World.sector", "i", i, 0, len(self.play.sectors) - 1)
         return self.state.sector(i)
 
     def camera(self, fov=90.0, player: int = 0) -> Camera:
         """Player ``player``'s view: the eye at DOOM's ``viewz``, facing its ``angle``."""
-        return self.players[player].camera(fov)
+        fov = number("World.camera", "fov", fov, 0.0, 180.0)
+        if not 0.0 < fov < 180.0:
+            raise ValueError(f"World.camera: fov must be between 0 and 180 degrees, not {fov}")
+        return self._view_of("World.camera", player).camera(fov)
+
+    def _view_of(self, where: str, player) -> PlayerView:
+        return self.players[integer(where, "player", player, 0, self.player_count - 1)]
 
     def status(self) -> dict:
         """Plain JSON values (``wallbsp play --json``)."""
@@ -275,9 +281,10 @@ class World:
         the way."""
         x, y = checked_number("x", x, MAX_COORDINATE), checked_number("y", y, MAX_COORDINATE)
         angle = checked_number("angle", angle, MAX_ANGLE)
+        view = self._view_of("World.place_player", player)
         if self.tree.locate(x, y) is None:
             raise ValueError(f"place_player: ({x}, {y}) is outside the map")
-        play, p = self.play, self.play.players[self.players[player].number]
+        play, p = self.play, self.play.players[view.number]
         mo = p.mo
         play.p_unset_thing_position(mo)
         mo.x, mo.y = int(round(x * 65536)), int(round(y * 65536))
@@ -303,12 +310,12 @@ class World:
         ``tic(forward, strafe, turn, use, run, fire, weapon)`` (``game.ticcmds``); with
         several players, ``tic([cmd, ...])``: one a player, each a ``TicCmd``, a dict of
         the keyword form or None (nothing pressed)."""
-        if len(args) == 1 and not keywords and isinstance(args[0], (list, tuple)):
-            cmds = self._commands(args[0])
-        elif len(args) == 1 and not keywords and isinstance(args[0], TicCmd):
+        if len(args) == 1 and not keywords and isinstance(args[0], TicCmd):
             cmds = [as_ticcmd(args[0])]
+        elif len(args) == 1 and not keywords and isinstance(args[0], (list, tuple)):
+            cmds = self._commands(args[0])
         else:
-            cmds = [ticcmd(*args, **keywords)]
+            cmds = [_keyword_command("World.tic", args, keywords)]
         if len(cmds) != self.player_count:
             raise ValueError(f"World.tic: {self.player_count} players need "
                              f"{self.player_count} commands a tic, not {len(cmds)}")
@@ -329,13 +336,40 @@ class World:
         if play.gameaction in (GA_COMPLETED, GA_VICTORY) or play.gamestate != GS_LEVEL:
             self.exited = "secret" if play.secret_exit_taken else "normal"
 
-    @staticmethod
-    def _commands(given) -> list:
-        return [as_ticcmd(c) if isinstance(c, TicCmd) else ticcmd(**(c or {}))
-                for c in given]
+    def _commands(self, given) -> list:
+        if len(given) != self.player_count:
+            raise ValueError(f"World.tic: {self.player_count} players need "
+                             f"{self.player_count} commands a tic, not {len(given)}")
+        cmds = []
+        for k, c in enumerate(given):
+            if isinstance(c, TicCmd):
+                cmds.append(as_ticcmd(c))
+            elif c is None or isinstance(c, dict):
+                cmds.append(_keyword_command(f"World.tic: command {k}", (), c or {}))
+            else:
+                raise ValueError(f"World.tic: command {k} must be a TicCmd, a dict of "
+                                 f"ticcmd's keywords or None, not {describe(c)}")
+        return cmds
 
     def _say(self, text: str) -> None:
         self.messages.append((self._tics, text))
+
+
+def _keyword_command(where: str, args, keywords) -> TicCmd:
+    """``ticcmd(*args, **keywords)``; a wrong name or too many values as a ValueError."""
+    if len(args) > len(COMMAND_KEYWORDS):
+        raise ValueError(f"{where}: at most {len(COMMAND_KEYWORDS)} values "
+                         f"{COMMAND_KEYWORDS}, not {len(args)}")
+    for name in keywords:
+        if name not in COMMAND_KEYWORDS or COMMAND_KEYWORDS.index(name) < len(args):
+            raise ValueError(f"{where}: {describe(name)} is not one of ticcmd's keywords "
+                             f"{COMMAND_KEYWORDS} (or is given twice)")
+    return ticcmd(*args, **keywords)
+
+
+def _check_tree(where: str, tree) -> None:
+    if not (hasattr(tree, "level") and hasattr(tree, "locate")):
+        raise ValueError(f"{where}: tree must be a compiled BSPTree, not {describe(tree)}")
 
 
 def info_viewheight() -> int:

@@ -41,11 +41,12 @@ def decode(lump):
     return DmxSound(rate, data.copy())
 
 
-def lump_name(sfx_id):
-    """``"DS" + name`` of the sound ``sfx_id`` plays (its link's, if it has one)."""
-    sfx = info.SFX[sfx_id]
+def lump_name(sfx_id, sfx_table=info.SFX):
+    """``"DS" + name`` of the sound ``sfx_id`` of ``sfx_table`` (a play's ``tables.sfx``;
+    DOOM's by default) plays (its link's, if it has one)."""
+    sfx = sfx_table[sfx_id]
     if sfx.link:
-        sfx = info.SFX[sfx.link]
+        sfx = sfx_table[sfx.link]
     return "DS" + sfx.name.upper()
 
 

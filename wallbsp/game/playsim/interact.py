@@ -128,7 +128,7 @@ class Interact:
         return True
 
     def p_give_weapon(self, player, weapon, dropped):
-        ammo = info.WEAPONINFO[weapon].ammo
+        ammo = self.weaponinfo[weapon].ammo
         if self.netgame and self.deathmatch != 2 and not dropped:
             # leave placed weapons forever in net games
             if player.weaponowned[weapon]:
@@ -221,7 +221,11 @@ class Interact:
             return
         sprite = special.sprite
         key = KEYS.get(sprite)
-        if key is not None:
+        if special.type >= info.NUMMOBJTYPES:       # a game's own item (wallbsp.content)
+            sound = self.tables.pickups[special.type](self, player, special)
+            if sound is None:
+                return
+        elif key is not None:
             card, message = key
             if not player.cards[card]:
                 player.message = message

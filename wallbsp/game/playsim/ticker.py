@@ -101,7 +101,7 @@ class Ticker:
                 if current.tics != -1:
                     current.tics -= 1
                     if not current.tics:
-                        self.p_set_mobj_state(current, info.STATES[current.state].nextstate)
+                        self.p_set_mobj_state(current, self.states[current.state].nextstate)
                 elif current.flags & MF_COUNTKILL and self.respawnmonsters:
                     func(self, current)         # the nightmare respawn's count
             elif func:
