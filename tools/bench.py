@@ -19,6 +19,7 @@ BENCHMARKS = {
     "world": ("world_targets", "the world's tic and its frame against the static tree"),
     "compile": ("compile_targets", "compile time and splits on generated and Freedoom maps"),
     "builders": ("builders", "our compiler beside other node builders on the Freedoom maps"),
+    "nodes": ("nodes", "wallbsp nodes beside zdbsp, glbsp and the shipped nodes, whole IWADs"),
     "table1": ("table1", "the lecture's Table 1: splits by candidate count"),
     "gordon_chen": ("gordon_chen", "front to back against the painter's, as Gordon & Chen"),
     "memory": ("memory", "peak memory of the largest level's first frame"),

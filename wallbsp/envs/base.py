@@ -32,7 +32,7 @@ import gymnasium as gym
 import numpy as np
 
 from wallbsp.game.world import TICRATE, World
-from wallbsp.scene.queries import PLAYER_RADIUS
+from wallbsp.game.probe import PLAYER_RADIUS
 from wallbsp.render import render
 from wallbsp.envs import actions, checks
 from wallbsp.envs.observations import (VIEW_KEYS, Automap, check_observations,

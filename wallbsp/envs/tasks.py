@@ -26,7 +26,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from wallbsp.scene.queries import PLAYER_RADIUS
+from wallbsp.game.probe import PLAYER_RADIUS
 from wallbsp.envs.base import TICRATE, WallbspEnv
 from wallbsp.envs.checks import check_count, check_level, check_number
 from wallbsp.game.arguments import describe, is_integer

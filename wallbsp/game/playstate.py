@@ -1,4 +1,4 @@
-"""What the renderer and the queries read of DOOM's play simulation: a ``WorldState`` fed
+"""What the renderer reads of DOOM's play simulation: a ``WorldState`` fed
 from a ``Play`` once a tic (``PlayState.sync``), so the renderer draws the play without
 knowing it.
 

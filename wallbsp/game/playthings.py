@@ -256,12 +256,8 @@ class PlayThings(Things):
                 t = self.mobjs[i].type
                 self.mobjtype[i] = t
                 self.doomednum[i] = self.tables.mobjinfo[t].doomednum
-        if n_placed:
-            placed = self._found[n:n + n_placed]       # read at once, not kept
-            if shown:
-                self._changed(placed)
-            else:                            # none drawn, before or now: no frame changes
-                self._unlisted(placed)
+        if n_placed and shown:               # none drawn, before or now: no frame changes
+            self._changed(self._found[n:n + n_placed])
         # a new frame, angle or height only: the renderer reads those arrays each frame
 
 

@@ -13,8 +13,8 @@ One ``world.tic(...)`` is one ``G_Ticker`` tic (1/35 s) with one tic command:
 units (forward 25/50 walking/running, side 24/40, the turn in degrees as ``angleturn``,
 the buttons).  The play runs the player (``P_PlayerThink``), every thinker (monsters,
 missiles, doors, lifts, lights, in DOOM's order), the specials; the compiled tree never
-changes, and ``state`` (a ``PlayState``, what ``render`` draws) is read from the play after
-every tic.
+changes, and ``state`` (a ``PlayState``, what ``render`` draws) is read from the play when
+it is next asked for after tics (``world.state``, ``world.things``, ``render(world)``).
 
 What callers read (floats in map units and degrees, derived from the integers):
 ``player`` (``x``, ``y``, ``z`` feet, ``angle``, ``eye`` = DOOM's ``viewz``, ``health``,
@@ -55,7 +55,10 @@ from __future__ import annotations
 
 from collections import deque
 
-from wallbsp.camera import Camera
+import numpy as np
+
+from wallbsp.camera import EYE_HEIGHT, Camera
+from wallbsp.game import probe
 from wallbsp.game.levelscript import LevelScript
 from wallbsp.game.multiplayer import check_deathmatch, check_players, join_players
 from wallbsp.game.playerview import (AMMO_NAMES, KEY_NAMES, POWER_NAMES, WEAPON_NAMES,
@@ -68,6 +71,7 @@ from wallbsp.game.playsim.levelbsp import LevelMapError
 from wallbsp.game.playsim.structs import TicCmd
 from wallbsp.game.playstate import PlayState, ThingsView
 from wallbsp.game.arguments import describe, integer, number
+from wallbsp.game.probe import PLAYER_RADIUS
 from wallbsp.game.ticcmds import COMMAND_KEYWORDS, MAX_TURN, as_ticcmd, checked_number, ticcmd
 from wallbsp.doom import info
 from wallbsp.doom.fixed import ANG90
@@ -115,7 +119,7 @@ class World:
             if self.tables is not None:
                 play.set_tables(self.tables)
             play.level_things = level_thing_keys(self.level)
-            join_players(play, self.level, self.tree, self.player_count, self.deathmatch)
+            join_players(play, self.level, self.player_count, self.deathmatch)
             episode, gamemap = map_numbers(map_name)
             play.g_init_new(self.skill - 1, episode, gamemap)
         else:
@@ -123,7 +127,7 @@ class World:
             if self.tables is not None:
                 play.set_tables(self.tables)
             play.level_things = level_thing_keys(self.level)
-            join_players(play, self.level, self.tree, self.player_count, self.deathmatch)
+            join_players(play, self.level, self.player_count, self.deathmatch)
             try:
                 play.g_init_new_level(self.level, self.tree, self.skill - 1)
             except LevelMapError as err:      # beyond DOOM's map: bad input, one line
@@ -134,11 +138,12 @@ class World:
     def _adopt(self) -> None:
         """The renderer's state read from the play's level as it was just loaded."""
         play = self.play
-        self.state = PlayState(self.tree, play, self.skill, play.thing_slots)
+        self._state = PlayState(self.tree, play, self.skill, play.thing_slots)
+        self._stale = False
         if self.player_count == 1:       # the eye is in the body: no view draws it
-            self.state.things.hide(play.players[play.consoleplayer].mo)
+            self._state.things.hide(play.players[play.consoleplayer].mo)
         self._loads = play.loads
-        self._things = ThingsView(self.state.things)
+        self._things = ThingsView(self._state.things)
         if self.script is not None:
             self.script.start()
 
@@ -162,7 +167,7 @@ class World:
             raise ValueError("World.next_map: a WAD's map cannot follow a level of our own")
         self.tree, self.level, self.wad_map = tree, tree.level, wad_map
         play.level_things = level_thing_keys(self.level)
-        join_players(play, self.level, tree, self.player_count, self.deathmatch)
+        join_players(play, self.level, self.player_count, self.deathmatch)
         if wad_map is None:
             play.levelsource = (self.level, tree)
         play.g_do_world_done()
@@ -171,7 +176,20 @@ class World:
 
     # -- what the world is now ----------------------------------------------------------------
     @property
+    def state(self) -> PlayState:
+        """What the renderer draws, read from the play when first asked after tics (so
+        tics whose frame nobody draws, with frame skip or pose-only observations, read
+        nothing: the play's touched list keeps what they changed)."""
+        if self._stale:
+            self._stale = False
+            self._state.sync()
+        return self._state
+
+    @property
     def things(self) -> ThingsView:
+        if self._stale:
+            self._stale = False
+            self._state.sync()
         return self._things
 
     @property
@@ -235,6 +253,45 @@ class World:
                 **({"players": [v.status() for v in self.players]}
                    if self.player_count > 1 else {})}
 
+    # -- questions of the map now (game.probe: DOOM's checks; nothing changes) ------------
+    def _asker(self, radius):
+        """The player's own body when asking at its size (so it does not block itself)."""
+        mo = self.play.players[0].mo
+        return mo if mo is not None and mo.radius == int(round(radius * 65536)) else None
+
+    def fits(self, x, y, radius=PLAYER_RADIUS) -> bool:
+        """Whether a player of ``radius`` could stand at (x, y) now (walls, closed doors,
+        solid things; ``P_CheckPosition``)."""
+        return probe.fits(self.play, x, y, radius, thing=self._asker(radius))[0]
+
+    def move(self, x, y, dx, dy, z=None, radius=PLAYER_RADIUS, slide=True) -> tuple:
+        """``(x, y, z)`` where a player of ``radius``, feet at ``z`` (the floor there by
+        default), ends walking (dx, dy) from (x, y) now, climbing steps of at most 24 and
+        sliding along what stops it (``game.probe.walk``)."""
+        if z is None:
+            z = self.floor_z(x, y, radius)
+        return probe.walk(self.play, x, y, dx, dy, z, radius, slide=slide,
+                          thing=self._asker(radius))
+
+    def heights(self, x, y, radius=PLAYER_RADIUS) -> tuple:
+        """``(floor, ceiling)`` a player of ``radius`` at (x, y) stands between now (DOOM's
+        ``floorz``/``ceilingz``: the highest floor and lowest ceiling its box overlaps)."""
+        _, floor, ceiling = probe.fits(self.play, x, y, radius, thing=self._asker(radius))
+        return floor, ceiling
+
+    def floor_z(self, x, y, radius=PLAYER_RADIUS) -> float:
+        """The floor a player of ``radius`` at (x, y) stands on now: DOOM's ``floorz``, the
+        highest floor its box overlaps."""
+        return probe.floor_z(self.play, x, y, radius)
+
+    def line_of_sight(self, a, b, za=None, zb=None) -> bool:
+        """Whether an eye at ``a`` (x, y) sees ``b`` now (``P_CheckSight``: closed doors,
+        walls and the openings' heights; the map's reject table); the heights default to
+        a player's eye over the floor there."""
+        za = self.floor_z(*a) + EYE_HEIGHT if za is None else za
+        zb = self.floor_z(*b) + EYE_HEIGHT if zb is None else zb
+        return probe.sees(self.play, a, b, za, zb)
+
     # -- changing it --------------------------------------------------------------------------
     def place_player(self, x, y, angle, player: int = 0) -> None:
         """Put player ``player`` at (x, y) facing ``angle``, feet on the floor there, at
@@ -264,7 +321,7 @@ class World:
         p.viewheight = info_viewheight()
         p.deltaviewheight = 0
         p.viewz = mo.z + p.viewheight
-        self.state.sync()
+        self._stale = True
 
     def tic(self, *args, **keywords) -> None:
         """Advance the world one tic: ``tic(cmd)`` with a ``TicCmd``, or the keyword form
@@ -290,7 +347,7 @@ class World:
         if play.loads != self._loads:        # the level started again (after a death)
             self._adopt()
         else:
-            self.state.sync()
+            self._stale = True               # read when a frame or the things are asked for
         for view, messages in zip(self.players, self.player_messages):
             p = play.players[view.number]
             if p.message:
