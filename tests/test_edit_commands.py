@@ -246,3 +246,24 @@ def test_deleting_a_sector_leaves_the_other_walls_as_they_were():
     after = [w for w in ed.level.walls if ed.level.vertices[w.v1][0] >= 2000]
     assert len(after) == 4
     assert all(w.blocks and w.front_side == Side(middle="BRICK1", lower="X") for w in after)
+
+
+def test_an_edit_that_changes_nothing_takes_no_undo_step():
+    ed, west, east = two_rooms()
+    version, steps = ed.version, len(ed.history)
+    ed.move(ed.select("sectors", west), 0, 0)
+    ed.set_sector([east], light=ed.level.sectors[east].light)
+    assert ed.version == version and len(ed.history) == steps
+
+
+def test_a_room_moved_against_another_joins_it_along_the_shared_stretch():
+    ed = Editor()
+    ed.draw_rectangle(0, 0, 256, 256)
+    moved = ed.draw_rectangle(512, 64, 768, 192)
+    ed.move(ed.select("sectors", moved), -256, 0)
+    shared = [w for w in ed.level.walls if w.back is not None]
+    assert len(shared) == 1
+    assert {ed.level.vertices[shared[0].v1], ed.level.vertices[shared[0].v2]} == \
+        {(256, 64), (256, 192)}
+    tree = wallbsp.compile_level(ed.level)
+    assert tree.locate(300, 100) == moved and tree.locate(100, 100) == 0

@@ -102,3 +102,27 @@ def test_a_line_that_does_not_cut_a_room_cleanly_is_refused(line, why):
     with pytest.raises(EditError, match=why):
         ed.draw_line(line)
     assert ed.level is before
+
+
+def test_a_pillar_the_shape_covers_in_part_stays_solid_and_one_it_covers_is_filled():
+    ed = Editor()
+    ed.draw_rectangle(100, 100, 300, 300)
+    pillar = ed.draw_rectangle(150, 150, 200, 200)
+    ed.delete(ed.select("sectors", pillar))
+    new = ed.draw_rectangle(180, 50, 400, 250)           # across the room and the pillar
+    tree = sound(ed.level)
+    assert tree.locate(190, 190) is None and tree.locate(170, 170) is None
+    assert tree.locate(250, 120) == new and tree.locate(350, 100) == new
+    ed.undo()
+    filled = ed.draw_rectangle(150, 150, 200, 200)       # exactly over it
+    assert sound(ed.level).locate(175, 175) == filled
+
+
+def test_a_courtyard_between_rooms_is_filled():
+    ed = Editor()
+    for box in ((0, 0, 300, 100), (0, 200, 300, 300), (0, 100, 100, 200), (200, 100, 300, 200)):
+        ed.draw_rectangle(*box)
+    yard = ed.draw_rectangle(100, 100, 200, 200)
+    tree = sound(ed.level)
+    assert tree.locate(150, 150) == yard
+    assert sum(w.back is not None for w in ed.level.walls) >= 4 + 4

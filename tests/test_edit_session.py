@@ -2,6 +2,7 @@
 by a door, a lift and stairs, a window, a pillar, the player start, monsters and pickups.
 It saves with no warnings and no problems, compiles, and the World plays it: a walk through
 the door reaches the far room."""
+import dataclasses
 from pathlib import Path
 
 import pytest
@@ -31,7 +32,7 @@ def build(ed: Editor) -> dict:
     lift = ed.draw_rectangle(832, 512, 960, 704)          # between the east and north rooms
     stairs = ed.draw_rectangle(128, 512, 256, 704)        # between the west and north rooms
     ed.make_door(door, texture="DOOR1", track="DOORTRAK")
-    ed.make_lift(lift)
+    ed.make_lift(lift, texture="METAL1")
     steps = ed.make_stairs(stairs, step=16, count=8, texture="STEP1")
     ed.set_start(256, 256, 0)
     ed.add_thing(256, 256, 1, angle=0)                    # player 1 start
@@ -44,8 +45,7 @@ def build(ed: Editor) -> dict:
 
 
 def level_resources(ed: Editor) -> None:
-    import dataclasses
-    ed.level = dataclasses.replace(ed.level, resources=(str(TEXTURES),))
+    ed.set_level(name="three rooms", resources=[TEXTURES])
     ed.style = dataclasses.replace(
         ed.style, wall_texture="BRICK1",
         sector=dataclasses.replace(ed.style.sector, floor_texture="FLOOR1",
@@ -85,6 +85,7 @@ def test_the_smart_tools_made_what_doom_needs(session):
     assert lift.floor == 128 and lift.tag
     below = [w for w in level.walls if w.back == names["lift"] and w.front == names["east"]]
     assert below and all(w.special == 62 and w.tag == lift.tag for w in below)
+    assert all(w.front_side.lower == "METAL1" for w in below)
     floors = [level.sectors[s].floor for s in names["steps"]]
     assert floors == [16 * (k + 1) for k in range(8)]
     risers = [w for w in level.walls if w.back is not None and w.front in names["steps"]
@@ -136,3 +137,44 @@ def test_a_refused_command_leaves_the_session_as_it_was(session):
     with pytest.raises(EditError):
         ed.draw_shape([(100, 100), (700, 100), (700, 101)])   # across walls off the grid
     assert ed.level is before and ed.version == version
+
+
+def world_from(level, x, y, angle):
+    """The World with the player started at (x, y) facing ``angle`` (no start thing)."""
+    from wallbsp.level.model import Start
+    moved = dataclasses.replace(level, start=Start(x, y, angle),
+                                things=tuple(t for t in level.things if t.type != 1))
+    tree = wallbsp.compile_level(moved)
+    return tree, wallbsp.World(tree, skill=3)
+
+
+def test_the_stairs_lead_up_into_the_north_room(session):
+    ed, names, _ = session
+    tree, world = world_from(ed.level, 192, 400, 90)
+    for _ in range(300):
+        world.tic(forward=1.0)
+        if world.player.y > 760:
+            break
+    assert tree.locate(world.player.x, world.player.y) == names["north"]
+    assert world.player.z == 128
+
+
+def test_the_lift_comes_down_when_used_and_carries_the_player_up(session):
+    ed, names, _ = session
+    tree, world = world_from(ed.level, 928, 300, 90)
+    for _ in range(60):                        # north, against the lift's side
+        world.tic(forward=1.0)
+    assert world.player.y < 512
+    world.tic(use=True)
+    world.tic()
+    for _ in range(40):                        # down at 4 units a tic
+        world.tic()
+    for _ in range(40):                        # onto it
+        world.tic(forward=1.0)
+    assert tree.locate(world.player.x, world.player.y) == names["lift"]
+    for _ in range(150):                       # it waits 105 tics, then rises
+        world.tic()
+    assert world.player.z == 128
+    for _ in range(80):
+        world.tic(forward=1.0)
+    assert tree.locate(world.player.x, world.player.y) == names["north"]

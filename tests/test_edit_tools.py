@@ -6,7 +6,7 @@ import os
 import pytest
 
 import wallbsp
-from wallbsp.edit import Editor, EditError, Style
+from wallbsp.edit import Editor, EditError
 from wallbsp.edit.compiler import Compiler, compile_now
 from wallbsp.edit.overlay import TreeOverlay, chord, clip_convex
 
@@ -159,8 +159,10 @@ def test_compile_now_reports_a_failure_in_one_line():
 def test_a_wad_map_opens_edits_and_stays_sound():
     ed = Editor.open(f"{FREEDOOM2}:MAP01")
     assert ed.path is None and len(ed.level.walls) > 100
-    sector = ed.pick(*ed.level.vertices[ed.level.walls[0].v1], "sectors")
-    ed.set_sector([ed.level.walls[0].front], floor=ed.level.sectors[ed.level.walls[0].front].floor + 8)
+    unclosed = {w for kind, w, _ in ed.problems() if kind == "unclosed"}
+    sector = ed.level.walls[0].front
+    ed.set_sector([sector], floor=ed.level.sectors[sector].floor + 8)
     xs = [v[0] for v in ed.level.vertices]
-    ed.draw_rectangle(max(xs) + 64, 0, max(xs) + 256, 192)
-    assert ed.version == 2 and sector is None or sector >= 0
+    room = ed.draw_rectangle(max(xs) + 64, 0, max(xs) + 256, 192)
+    assert ed.version == 2 and ed.pick(max(xs) + 160, 96, "sectors") == room
+    assert {w for kind, w, _ in ed.problems() if kind == "unclosed"} == unclosed

@@ -60,6 +60,8 @@ def test_dooms_special_names():
 
 def test_thing_kinds_come_from_dooms_mobjinfo():
     assert kind_of(3004).category == "monster" and kind_of(3004).radius == 20
+    assert (kind_of(3004).name, kind_of(2011).name) == ("zombieman", "stimpack")
+    assert kind_of(3004).sprite == "POSS" and kind_of(2035).sprite == "BAR1"
     assert kind_of(2001).category == "pickup"
     assert kind_of(2035).category == "obstacle"
     assert kind_of(1).category == "player" and kind_of(1).radius == 16
@@ -88,3 +90,57 @@ def test_edit_without_a_display_is_a_usage_error(capsys, monkeypatch):
     assert main(["edit"]) == 2
     assert "no display" in capsys.readouterr().err
     assert os.environ["SDL_VIDEODRIVER"] == "dummy"
+
+
+def test_every_key_of_the_editor_is_in_its_docs():
+    from pathlib import Path
+    from wallbsp.editor.keys import KEYS
+    doc = (Path(__file__).resolve().parent.parent / "docs" / "editor.md").read_text().lower()
+    table = doc[doc.index("## keys"):]
+    arrows = {"up", "down", "left", "right"}
+    missing = []
+    for key, mods in KEYS:
+        if key in arrows:
+            key = "arrows"
+        elif key.startswith("[") and len(key) == 3:       # the keypad's + and -
+            key = key[1]
+        label = "+".join([*mods, key])
+        if f"`{label}`" not in table and not (key == "`" and "`` ` ``" in table) \
+                and not (key == "arrows" and "arrows" in table):
+            missing.append(label)
+    assert not missing, missing
+
+
+ends = st.integers(-300, 400)
+
+
+@settings(max_examples=150, deadline=None)
+@given(ends, ends, ends, ends)
+def test_numpy_lines_are_the_segment_clipped_to_the_window(x1, y1, x2, y2):
+    """Every pixel drawn lies on the segment (within half a pixel's diagonal) and inside the
+    surface; a segment with an end inside has that end's pixel drawn."""
+    import numpy as np
+    import pygame
+    from wallbsp.editor.raster import draw_lines
+    surface = pygame.Surface((100, 80))
+    surface.fill((0, 0, 0))
+    draw_lines(surface, np.array([[x1, y1, x2, y2]]), (255, 255, 255))
+    xs, ys = np.nonzero(pygame.surfarray.array2d(surface))
+    dx, dy = x2 - x1, y2 - y1
+    length = max(np.hypot(dx, dy), 1e-9)
+    distance = np.abs(dy * (xs - x1) - dx * (ys - y1)) / length
+    assert (distance <= 0.71 + 1e-9).all() if length > 1e-9 else True
+    for x, y in ((x1, y1), (x2, y2)):
+        if 0 <= x < 100 and 0 <= y < 80:
+            assert ((xs == x) & (ys == y)).any()
+
+
+def test_a_level_without_a_file_is_saved_under_its_map_name(tmp_path, monkeypatch):
+    from pathlib import Path
+    from wallbsp.editor.keys import free_name
+    monkeypatch.chdir(tmp_path)
+    assert free_name("E1M1 (freedoom1.wad)") == Path("E1M1.json")
+    Path("E1M1.json").write_text("{}")
+    assert free_name("E1M1 (freedoom1.wad)") == Path("E1M1-1.json")
+    assert free_name("") == Path("untitled.json")
+    assert free_name("a/b c") == Path("a_b_c.json")

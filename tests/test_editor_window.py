@@ -275,3 +275,85 @@ def test_f9_outside_every_sector_is_refused(session):
     step(session)
     assert play_here(session) is None
     assert session.refused and "inside a sector" in session.status
+
+
+def _box(level):
+    xs = [x for x, _ in level.vertices]
+    ys = [y for _, y in level.vertices]
+    return min(xs), min(ys), max(xs), max(ys)
+
+
+def test_rotate_mirror_copy_and_paste_keys(session):
+    rectangle(session, 0, 0, 256, 128)
+    key(pygame.K_s)
+    step(session)
+    session.editor.select("sectors", {0})
+    key(pygame.K_w, pygame.KMOD_SHIFT)            # Eureka's W: rotate 90 anticlockwise
+    step(session)
+    x0, y0, x1, y1 = _box(session.level)
+    assert (x1 - x0, y1 - y0) == (128, 256)
+    key(pygame.K_c, pygame.KMOD_CTRL)
+    move(at(session, -320, 0))
+    step(session)
+    key(pygame.K_v, pygame.KMOD_CTRL)
+    step(session)
+    assert not session.refused, session.status
+    assert len(session.level.sectors) == 2
+    x0, _, x1, _ = _box(session.level)
+    assert x0 < -128 and x1 - x0 > 256            # the copy landed left of the first
+    key(pygame.K_z, pygame.KMOD_CTRL)
+    step(session)
+    assert len(session.level.sectors) == 1
+
+
+def test_ctrl_s_saves_a_new_level_under_a_free_name(session, tmp_path, monkeypatch):
+    from wallbsp import load_level
+    monkeypatch.chdir(tmp_path)
+    (tmp_path / "untitled.json").write_text("{}")          # taken: the next name is used
+    rectangle(session, 0, 0, 256, 256)
+    key(pygame.K_s, pygame.KMOD_CTRL)
+    step(session)
+    assert session.status == "saved untitled-1.json", session.status
+    assert load_level(tmp_path / "untitled-1.json") == session.level
+    assert (tmp_path / "untitled.json").read_text() == "{}"
+
+
+def test_a_panned_layer_is_the_layer_drawn_afresh(session):
+    """Panning scrolls the cached picture and draws only the strips it uncovers: the
+    result is the picture drawn whole at the new place."""
+    from wallbsp.editor.mapdraw import StaticLayer
+    for x0, y0 in ((0, 0), (256, 64), (-320, -192), (128, -384)):
+        rectangle(session, x0, y0, x0 + 192, y0 + 128)
+    session.editor.add_thing(64, 64, 3004)
+    key(pygame.K_v)                               # vertex mode: vertices drawn too
+    step(session)
+    draws = session.layer.draws
+    for dx, dy in ((7, 0), (0, -5), (-13, 9), (40, 31), (-3, -60)):
+        session.view.pan_pixels(dx, dy)
+        step(session)
+    assert session.layer.draws == draws and session.layer.scrolls >= 5
+    fresh = StaticLayer().surface(session.view, session.arrays(), session.mode,
+                                  session.display)
+    scrolled = pygame.surfarray.array3d(session.layer.picture)
+    whole = pygame.surfarray.array3d(fresh)
+    assert (scrolled == whole).all()
+
+
+def _area(poly):
+    return abs(sum(x1 * y2 - x2 * y1 for (x1, y1), (x2, y2) in zip(poly, poly[1:] + poly[:1]))) / 2
+
+
+def test_a_sectors_leaf_cells_fill_exactly_its_area(session):
+    """The cells the sector shading is drawn from cover each sector's own area: a room
+    with a room inside it."""
+    from wallbsp.editor.treeview import LiveTree
+    rectangle(session, 0, 0, 512, 512)
+    rectangle(session, 128, 128, 256, 256)
+    session.compiler = LiveTree(session.editor)
+    overlay = session.compiler.wait()
+    inner = session.editor.pick(192, 192, "sectors", 0)
+    outer = session.editor.pick(64, 64, "sectors", 0)
+    assert {inner, outer} == {0, 1}
+    assert sum(map(_area, overlay.cells[outer])) == pytest.approx(512 ** 2 - 128 ** 2)
+    assert sum(map(_area, overlay.cells[inner])) == pytest.approx(128 ** 2)
+    session.compiler.close()

@@ -150,3 +150,52 @@ def test_after_the_warm_up_play_compiles_nothing():
             compose(walk)
     assert jit.compiled_signatures() == before
     assert walk.world.tic_count > 0 and np.asarray(walk.picture).any()
+
+
+@pytest.mark.skipif(not os.path.exists("/usr/share/games/doom/freedoom1.wad"),
+                    reason="Freedoom not installed")
+def test_the_title_shown_at_once_is_the_wads_titlepic_as_the_art_decodes_it():
+    from wallbsp.app.attract import page_picture
+    from wallbsp.app.startup import title_rgb
+    from wallbsp.screen.art import WadArt
+    wad = "/usr/share/games/doom/freedoom1.wad"
+    art = WadArt([wad])
+    rgb, mask = page_picture(art, "TITLEPIC", 320, 200)
+    assert np.array_equal(title_rgb(art, wad), np.where(mask[..., None], rgb, 0))
+    assert not title_rgb(art, wad, "NOSUCHPIC").any()               # none: black
+
+
+def test_the_bundled_games_attract_loop_plays_its_shipped_demo():
+    from types import SimpleNamespace
+    from wallbsp.app.cli import load_any
+    from wallbsp.app.startup import OwnGame
+    from importlib.resources import files
+    args = SimpleNamespace(candidates=None, seed=0, strict=False)
+    game = OwnGame(str(files("wallbsp") / "data" / "game.json"), load_any, args)
+    assert game.title().shape == (200, 320, 3) and game.title().any()
+    name, level = game.first_tree(lambda *a: None)
+    assert game.sequence(name) == [("page", "TITLEPIC", 170), ("demo", "level1"),
+                                   ("page", "TITLEPIC", 170), ("demo", "level2"),
+                                   ("page", "TITLEPIC", 170), ("demo", "level3")]
+    world = game.demo_world("level1")
+    assert world is not None and world.skill == 3 and len(world.demo_commands) > 1000
+    assert game.demo_world("level2").level.name == "The depot"
+    assert game.demo_world("nosuchdemo") is None
+
+
+def test_idclev_warps_within_the_bundled_episode(opened):
+    from types import SimpleNamespace
+    from wallbsp.app.cli import load_any
+    from wallbsp.app.gameflow import GameFlow
+    from wallbsp.app.walkgame import Episode
+    episode = Episode(load_any, SimpleNamespace(candidates=None, seed=0, strict=False))
+    walk = opened(episode.tree("game.json"))
+    walk.next_level = episode
+    walk.overlay = GameFlow(walk, app.start_level, "/nonexistent")
+    frames(walk, 1)
+    typed("idclev13")
+    frames(walk, 1)
+    assert walk.world.level.name == "The keep"
+    typed("idclev19")                              # no such level: nothing happens
+    frames(walk, 1)
+    assert walk.world.level.name == "The keep"

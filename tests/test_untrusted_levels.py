@@ -32,3 +32,20 @@ def test_a_few_crossings_still_load_with_their_warnings(tmp_path):
     wad.write_bytes(hostile.garbage_wad_map(lines=40))
     level = load_wad_level(wad, "MAP01")
     assert any("crosses walls" in w for w in level.warnings)
+
+
+def test_a_tree_file_with_more_segs_than_its_walls_allow_is_refused(tmp_path, monkeypatch):
+    from wallbsp import compile_level
+    from wallbsp.bsp import treefile
+    from wallbsp.bsp.tree import TreeError, load_tree
+    from wallbsp.level.conflicts import seg_limit
+    wad = tmp_path / "few.wad"
+    wad.write_bytes(hostile.garbage_wad_map(lines=40))
+    tree = compile_level(load_wad_level(wad, "MAP01"))
+    path = tmp_path / "few.wbsp"
+    tree.save(path)
+    assert tree.seg_count <= seg_limit(len(tree.level.walls))
+    assert load_tree(path).seg_count == tree.seg_count
+    monkeypatch.setattr(treefile, "seg_limit", lambda walls: tree.seg_count - 1)
+    with pytest.raises(TreeError, match="segs for .* walls, more than a level may compile"):
+        load_tree(path)

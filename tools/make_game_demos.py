@@ -37,7 +37,34 @@ ROUTE_1 = [
     ("use", 33.5, 9), ("wait", 30), ("go", 33.5, 8), ("go", 33.5, 6), ("go", 35, 5.5),
     ("go", 40, 5.5), ("go", 41, 3.5), ("go", 42.5, 3.5), ("use", 44, 3.5),
 ]
-ROUTES = {1: ROUTE_1}
+# level 2: the start room's shotgun, shells and armour; the secret east of them; the first
+# door; the hall of pillars and its chaingun; the corridor; the yard and the red key on its
+# plinth; the red door; the demons' room; the exit niche
+ROUTE_2 = [
+    ("go", 5, 14), ("go", 3, 14), ("go", 5, 14), ("go", 7, 14), ("go", 9.5, 12.5),
+    ("use", 11, 12.5), ("wait", 30), ("go", 12.5, 12.5), ("go", 12.5, 12), ("go", 12.5, 13),
+    ("go", 9.5, 12.5), ("go", 5.5, 10), ("use", 5.5, 8), ("wait", 30), ("go", 5.5, 7),
+    ("go", 8, 5.5), ("go", 8, 3), ("go", 8, 5.5), ("go", 12.5, 5), ("go", 20.5, 4.5),
+    ("go", 20.5, 6.5),
+    ("go", 20.5, 9), ("go", 21.5, 11), ("go", 26.5, 11), ("go", 26.5, 12.5), ("go", 28.5, 10),
+    ("go", 28.5, 9), ("use", 28.5, 7), ("wait", 30), ("go", 28.5, 6), ("go", 31, 3.5),
+    ("go", 34, 2.5), ("go", 35.5, 2.5), ("use", 37, 2.5),
+]
+# level 3: the yard's shotgun, shells and armour; the secret; the keep's door; the great
+# hall and its chaingun; the lift to the ledge and the red key; down into the hall; the red
+# door; the last room; the exit niche
+ROUTE_3 = [
+    ("go", 8.5, 16), ("go", 6, 16), ("go", 10, 16), ("go", 12, 17), ("go", 13.5, 15.5),
+    ("use", 15, 15.5), ("wait", 30), ("go", 16.5, 15.5), ("go", 16.5, 15), ("go", 16.5, 16),
+    ("go", 13.5, 15.5), ("go", 8.5, 14.5), ("use", 8.5, 13), ("wait", 30), ("go", 8.5, 12),
+    ("go", 8.5, 11), ("go", 15, 11), ("go", 22, 11.5), ("go", 28, 11.5), ("go", 29.5, 8),
+    ("go", 29.5, 7.5), ("use", 29.5, 6), ("wait", 35), ("go", 29.5, 5.5), ("wait", 150),
+    ("go", 31.5, 3), ("go", 32, 2), ("go", 33, 4), ("go", 31.5, 5), ("go", 31.5, 8),
+    ("go", 22, 11.5), ("go", 10, 11.5), ("go", 5.5, 10.5), ("go", 5.5, 9.5),
+    ("use", 5.5, 8), ("wait", 30), ("go", 5.5, 7), ("go", 7, 6.5), ("go", 7, 3),
+    ("go", 12, 2.5), ("go", 13.5, 2.5), ("use", 15, 2.5),
+]
+ROUTES = {1: ROUTE_1, 2: ROUTE_2, 3: ROUTE_3}
 
 
 def route_in_map_units(route, map_text):

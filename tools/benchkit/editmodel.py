@@ -18,6 +18,7 @@ Targets (issue 29): pick ≤ 2 ms; the tree and problems fresh ≤ 0.5 s after a
 """
 from __future__ import annotations
 
+import os
 import statistics
 import time
 
@@ -64,6 +65,7 @@ def run(args) -> dict:
     seg = level.segments().astype(np.float64)
     tree = compile_level(level)
     result = {"machine": machine(), "quick": args.quick, "map": MAP,
+              "load_average": round(os.getloadavg()[0], 2),
               "walls": len(level.walls), "open_s": round(open_s, 3),
               "pick": _picks(ed, points, seg, xy, tree), "targets": TARGETS}
     result["commands"] = _commands(ed, 2 if args.quick else 5)
@@ -186,7 +188,10 @@ def section(result: dict) -> str:
             ["clipped partition lines", f"{result['partitions']['fast_s']} s",
              f"{result['partitions']['per_cell_peer_s']} s (each cell clipped)"]]
     return ("## The editor's model\n\n`python tools/bench.py edit` on Freedoom MAP12 "
-            f"({result['walls']} walls); medians, {result['machine'].get('cpu', '')}.\n\n"
+            f"({result['walls']} walls); medians, {result['machine'].get('cpu', '')}, "
+            f"load average {result['load_average']} on {result['machine'].get('nproc')} "
+            "CPUs while measured (other work shares the machine: the peers, run in the same "
+            "process at the same time, are the fair comparison).\n\n"
             + markdown_table(["what", "time", "peer"], rows)
             + f"\n\nAn edit's tree and problems are fresh {result['fresh_s']} s after it "
               f"(target 0.5 s).\n")

@@ -2,15 +2,19 @@
 checks against a baseline revision without them, both in ONE process, taking turns block by
 block, so that load from elsewhere on the machine falls on both alike.
 
-    python tools/bench.py checks [--rev REV] [--rounds N] [--steps N] [--quick] [--no-docs]
+    python tools/bench.py checks [--rev REV] [--checked REV] [--rounds N] [--steps N]
+                                 [--quick] [--no-docs]
 
 The baseline (default: the merge-base of ``main`` and this branch) is extracted with
 ``git archive`` and imported as another package (``wallbsp_base``: its absolute
-``wallbsp`` imports renamed; its kernels compile once, cached like ours).  Each side makes
+``wallbsp`` imports renamed; its kernels compile once, cached like ours); the checked side
+is this checkout, or with ``--checked`` another revision extracted alike (``wallbsp_new``),
+e.g. ``--rev 6cfde85^1 --checked 6cfde85``: main before and after the checks were merged.  Each side makes
 ``wallbsp/Exit-v0`` on freedoom1.wad E1M1 at 160x120 with the default observations
 (``ExitEnv`` directly: the two packages register the same gymnasium ids), resets with the
 same seed, and steps the same seeded random discrete actions; a round is a block of
-``--steps`` steps each side, the first side alternating.  Reported: each side's steps/s
+``--steps`` steps each side, the first side alternating, after both sides have stepped
+the whole sequence once (every kernel compiled).  Reported: each side's steps/s
 over all rounds and their ratio (target ≥ 0.98), and whether both sides saw the same poses.
 
 Prints one JSON object; rewrites the "checks" section of docs/benchmarks.md (not with
@@ -42,6 +46,8 @@ def main(argv=None) -> int:
     parser = script_parser(__doc__, "3 rounds of 100 steps")
     parser.add_argument("--rev", default=None, help="the baseline revision (default: the "
                         "merge-base of main and HEAD)")
+    parser.add_argument("--checked", default=None, help="the checked side's revision "
+                        "(default: this checkout)")
     parser.add_argument("--rounds", type=positive_int, default=None)
     parser.add_argument("--steps", type=positive_int, default=None)
     args = parser.parse_args(argv)
@@ -55,35 +61,39 @@ def _git(*words) -> str:
                           text=True).stdout.strip()
 
 
-def extract(rev: str, folder: Path) -> None:
-    """The revision's ``wallbsp/`` as package ``PACKAGE`` under ``folder``."""
+def extract(rev: str, folder: Path, package: str = PACKAGE) -> None:
+    """The revision's ``wallbsp/`` as package ``package`` under ``folder``."""
     archive = subprocess.run(["git", "archive", rev, "wallbsp"], cwd=ROOT, check=True,
                              capture_output=True).stdout
     subprocess.run(["tar", "-x", "-C", str(folder)], input=archive, check=True)
-    (folder / "wallbsp").rename(folder / PACKAGE)
-    for path in (folder / PACKAGE).rglob("*.py"):
+    (folder / "wallbsp").rename(folder / package)
+    for path in (folder / package).rglob("*.py"):
         text = path.read_text(encoding="utf-8")
-        path.write_text(IMPORTS.sub(PACKAGE, text), encoding="utf-8")
+        path.write_text(IMPORTS.sub(package, text), encoding="utf-8")
 
 
 def run(args) -> dict:
     rev = args.rev or _git("merge-base", "main", "HEAD")
-    rounds = args.rounds or (3 if args.quick else 12)
-    steps = args.steps or (100 if args.quick else 300)
+    rounds = args.rounds or (3 if args.quick else 40)
+    steps = args.steps or (100 if args.quick else 50)
     wad = str(FREEDOOM[0])
     with tempfile.TemporaryDirectory(prefix="bench_checks.") as folder:
         extract(rev, Path(folder))
+        checked = "wallbsp"
+        if args.checked:
+            checked = "wallbsp_new"
+            extract(args.checked, Path(folder), checked)
         sys.path.insert(0, folder)
         try:
             sides = {"baseline": importlib.import_module(f"{PACKAGE}.envs.tasks"),
-                     "checked": importlib.import_module("wallbsp.envs.tasks")}
+                     "checked": importlib.import_module(f"{checked}.envs.tasks")}
             envs = {name: mod.ExitEnv(level=f"{wad}:E1M1", size=SIZE)
                     for name, mod in sides.items()}
             result = _measure(envs, rounds, steps)
         finally:
             sys.path.remove(folder)
     result.update(baseline=_git("rev-parse", "--short", rev),
-                  checked=_git("rev-parse", "--short", "HEAD"), rounds=rounds,
+                  checked=_git("rev-parse", "--short", args.checked or "HEAD"), rounds=rounds,
                   steps_a_round=steps, size=list(SIZE), machine=machine())
     return result
 
@@ -93,9 +103,14 @@ def _measure(envs: dict, rounds: int, steps: int) -> dict:
     seconds = dict.fromkeys(envs, 0.0)
     poses = {name: [] for name in envs}
     for name, env in envs.items():
+        # the whole sequence once first: numba compiles a kernel where a step first takes
+        # its path (a door, a masked wall), and a compile inside a timed block is seconds
+        # (without this an A/A run of one revision under two names measured 0.54)
         env.reset(seed=5)
-        for a in actions[:20]:                       # kernels compiled, caches warm
-            env.step(a)
+        for a in actions:
+            _, _, terminated, truncated, _ = env.step(a)
+            if terminated or truncated:
+                env.reset(seed=5)
         env.reset(seed=5)
     order = list(envs)
     for r in range(rounds):

@@ -4,7 +4,8 @@ the credits, round and round until a key opens the menu.
 ``Attract(wad, art)`` is ``walk.attract`` while the loop runs: the walkthrough asks it for
 the page shown (``page``: a picture over the whole screen, counting its tics down in
 ``tic``), tells it when a demo played back has ended (``advance``: the next page or demo,
-a World made by ``walkgame.demo_world``), and a key in the loop opens DOOM's menu
+a World made by ``make_world(lump)`` whose ``demo_commands`` are the demo's tic commands),
+and a key in the loop opens DOOM's menu
 (``controls``).  A new game, a load or a warp ends the loop (``start_level``).  The pages
 are DOOM's: TITLEPIC 170 tics (Doom II 11 seconds), CREDIT 200; the demos DEMO1-DEMO4
 that the WAD holds and that are single-player v1.9 demos.
@@ -62,7 +63,7 @@ class Attract:
                 self.page = None
                 self.start_level(walk, world.tree, "", world=world)
                 walk.attract = self
-                walk.playback = iter([row[0].ticcmd() for row in world.demo.tics])
+                walk.playback = iter(world.demo_commands)
                 return
 
     def tic(self, walk) -> None:

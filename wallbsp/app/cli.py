@@ -241,7 +241,8 @@ COMMANDS = {"walk": cmd_walk, "play": cmd_play, "compile": cmd_compile, "render"
 def main(argv=None) -> int:
     try:
         args = build_parser(COMMANDS).parse_args(argv)
-        args.func(args)
+        status = args.func(args)          # a command may return its exit status
+
     except (UsageError, OutputError, LevelError) as err:   # TreeError is a LevelError too
         print(str(err), file=sys.stderr)
         return 2
@@ -253,4 +254,4 @@ def main(argv=None) -> int:
     except Exception as err:                         # noqa: BLE001 - the last resort line
         print(f"wallbsp: internal error: {type(err).__name__}: {err}", file=sys.stderr)
         return 1
-    return 0
+    return status or 0

@@ -125,7 +125,8 @@ def build_parser(commands) -> argparse.ArgumentParser:
                        "demos, menu: any key); 'wallbsp walk WAD:MAP' warps to a map.",
                        epilog=keys_text(), formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("level", nargs="?",
-                   help="level, tree or WAD:MAP (default: the bundled game level)")
+                   help="level, tree, WAD:MAP or a game folder (game.json; docs/modding.md) "
+                        "(default: the bundled game level)")
     p.add_argument("--size", type=_size, default=(320, 200), metavar="WxH",
                    help="internal resolution (default 320x200)")
     p.add_argument("--frames", type=_bounded(1, 10 ** 7, _integer, "a whole number"),

@@ -155,7 +155,15 @@ class GameFlow:
     def warp(self, walk, first: int, second: int) -> bool:
         """idclev: a new game on episode ``first`` map ``second`` (Doom II: map
         ``first second``) at the same skill, if the WAD has that map."""
-        if walk.world.wad_map is None or self.tree_of is None:
+        if walk.world.wad_map is None:          # our episode: idclev1N is its level N
+            level = getattr(walk.next_level, "level", None)
+            tree = level(second) if level is not None and first == 1 else None
+            if tree is None:
+                return False
+            self.intermission = self.finale = None
+            self.start_level(walk, tree, f"Entering {tree.level.name}")
+            return True
+        if self.tree_of is None:
             return False
         from wallbsp.level.wadmap import list_maps
         name = (f"MAP{first}{second}" if self.menu.commercial else f"E{first}M{second}")

@@ -4,7 +4,7 @@ stands still under it, any key closes it) and ``wallbsp walk --help`` (``KEYS_TE
 The screen lists the keys as bound now (a key file's included) and DOOM's cheats."""
 from __future__ import annotations
 
-__all__ = ["KEYS_TEXT", "help_lines", "draw_help_screen", "toggle_help_screen"]
+__all__ = ["KEYS_TEXT", "help_lines", "help_rows", "draw_help_screen", "toggle_help_screen"]
 
 # (what it does, the actions whose keys do it)
 SECTIONS = (
@@ -21,8 +21,8 @@ SECTIONS = (
                 ("readout (speed, position)", ("readout",)), ("key line", ("help",)))),
 )
 FIXED = ("F1 this screen   F2 save   F3 load   F6 quicksave   F9 quickload   F10 quit",
-         "Cheats (typed in play): iddqd god  idkfa weapons+keys  idfa weapons  idclip "
-         "no clipping  idclevXY warp  iddt on the automap: map, then things")
+         "Cheats, typed in play: iddqd god   idkfa weapons and keys   idfa weapons",
+         "  idclip no clipping   idclevXY warp   iddt on the automap: lines, then things")
 
 
 def _keys(names: dict, actions) -> str:
@@ -34,15 +34,21 @@ def _keys(names: dict, actions) -> str:
     return ", ".join(k.upper() if len(k) == 1 else k for k in seen[:7]) or "(none)"
 
 
-def help_lines(names=None) -> list:
-    """The screen's lines for the bindings ``names`` (action -> key names; None: DOOM's)."""
+def help_rows(names=None) -> list:
+    """``(what, keys)`` rows for the bindings ``names`` (action -> key names; None: DOOM's);
+    a section's title has no keys (None); the fixed lines at the end too."""
     from wallbsp.app.config import DEFAULT_KEYS
     names = names or DEFAULT_KEYS
-    lines = []
-    for title, rows in SECTIONS:
-        lines.append(title)
-        lines += [f"  {what:<40} {_keys(names, actions)}" for what, actions in rows]
-    return lines + [""] + list(FIXED)
+    rows = []
+    for title, entries in SECTIONS:
+        rows.append((title, None))
+        rows += [(f"  {what}", _keys(names, actions)) for what, actions in entries]
+    return rows + [("", None)] + [(line, None) for line in FIXED]
+
+
+def help_lines(names=None) -> list:
+    """The rows as text lines, the keys in a column."""
+    return [what if keys is None else f"{what:<42} {keys}" for what, keys in help_rows(names)]
 
 
 def _keys_text() -> str:
@@ -71,11 +77,13 @@ def draw_help_screen(walk) -> None:
     veil = pygame.Surface((width, height), pygame.SRCALPHA)
     veil.fill((0, 0, 0, 210))
     surface.blit(veil, (0, 0))
-    lines = help_lines(walk.key_names)
-    size = max(12, min(height // (len(lines) + 4), width // 45))
+    rows = help_rows(walk.key_names)
+    size = max(12, min(height // (len(rows) + 4), width // 45))
     font = pygame.font.Font(None, size)
     y = size
-    for line in lines:
-        colour = (255, 200, 60) if line and not line.startswith(" ") else (235, 235, 235)
-        surface.blit(font.render(line, True, colour), (size, y))
+    for what, keys in rows:
+        colour = (255, 200, 60) if keys is None else (235, 235, 235)
+        surface.blit(font.render(what, True, colour), (size, y))
+        if keys is not None:
+            surface.blit(font.render(keys, True, colour), (width * 9 // 20, y))
         y += font.get_linesize()

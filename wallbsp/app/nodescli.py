@@ -34,14 +34,17 @@ def add_parsers(sub, commands) -> None:
     p.add_argument("--check", action="store_true",
                    help="check the WAD's nodes instead (any node builder's); exit 2 if bad")
     p.add_argument("--no-reject", action="store_true", help="write a zeroed REJECT")
+    p.add_argument("--keep-reject", action="store_true",
+                   help="keep each map's own REJECT (zdbsp's -E), e.g. a hand-tuned one")
     p.add_argument("-p", "--candidates", "--partition", type=_positive, default=d.candidates,
                    metavar="N", help=f"segs whose lines are tried at each node, 0: all "
                                      f"(zdbsp's --partition; default {d.candidates})")
     p.add_argument("-s", "--split-cost", type=_positive, default=d.split_cost, metavar="N",
-                   help=f"cost of cutting a seg, against one seg of imbalance (zdbsp's "
-                        f"--split-cost; default {d.split_cost})")
+                   help=f"cost of cutting a seg (zdbsp's --split-cost; default "
+                        f"{d.split_cost})")
     p.add_argument("--balance", type=_positive, default=d.balance, metavar="N",
-                   help=f"weight of a partition's imbalance (default {d.balance})")
+                   help=f"how much a balanced partition counts against its cuts: higher, "
+                        f"fewer segs and a deeper tree (default {d.balance})")
     p.add_argument("-d", "--diagonal-cost", type=_positive, default=d.diagonal_cost,
                    metavar="N", help=f"cost of a diagonal partition (zdbsp's "
                                      f"--diagonal-cost; default {d.diagonal_cost})")
@@ -54,6 +57,8 @@ def add_parsers(sub, commands) -> None:
     p.add_argument("--map", default="MAP01", help="the map's name in the WAD (default MAP01)")
     p.add_argument("--format", choices=("doom", "udmf"), default="doom",
                    help="DOOM-format map with nodes (default) or UDMF (TEXTMAP)")
+    p.add_argument("--iwad", metavar="WAD", help="the IWAD the map will be played with: "
+                   "texture and flat names it lacks are replaced by its defaults")
     p.add_argument("--strict", action="store_true", help="treat level warnings as errors")
     p.set_defaults(func=commands["export"])
 
@@ -61,13 +66,13 @@ def add_parsers(sub, commands) -> None:
 def _options(args):
     from wallbsp.nodes.builder import BuildOptions
     from wallbsp.nodes.wadnodes import NodeOptions
-    build = BuildOptions(args.candidates, args.split_cost, args.balance, args.diagonal_cost,
-                         BuildOptions().slack)
+    build = BuildOptions(args.candidates, args.split_cost, args.balance, args.diagonal_cost)
     maps = tuple(m.strip() for m in args.maps.split(",") if m.strip()) if args.maps else None
-    return NodeOptions(build, maps, "zero" if args.no_reject else "sight")
+    reject = "zero" if args.no_reject else "keep" if args.keep_reject else "sight"
+    return NodeOptions(build, maps, reject)
 
 
-def cmd_nodes(args) -> None:
+def cmd_nodes(args) -> int:
     from wallbsp.app.cliargs import UsageError
     from wallbsp.assets.wadwrite import read_wad_image
     if args.check:
@@ -75,9 +80,7 @@ def cmd_nodes(args) -> None:
             raise UsageError("nodes: --check reads a WAD and writes nothing; drop -o")
         from wallbsp.nodes.check import check_wad_file
         ok = check_wad_file(args.wad, _options(args).maps, print, args.json)
-        if not ok:
-            raise SystemExit(2)
-        return
+        return 0 if ok else 2
     if not args.output:
         raise UsageError("nodes: the output WAD is missing (-o OUT.wad)")
     check_outputs("nodes", [args.output], [args.wad])
@@ -102,5 +105,5 @@ def cmd_export(args) -> None:
     from wallbsp.nodes.export import export_level
     check_outputs("export", [args.output], [args.level])
     level = load_source(args.level, strict=args.strict)
-    for note in export_level(level, args.output, args.map, args.format):
+    for note in export_level(level, args.output, args.map, args.format, args.iwad):
         print(f"note: {note}", file=sys.stderr)

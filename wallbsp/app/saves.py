@@ -97,15 +97,17 @@ def load_world(folder, slot: int, world, tree_of) -> World:
                 raise SaveError(f"{path}: header.map: {e}") from None
     skill = header.get("skill")
     skill = skill + 1 if isinstance(skill, int) and 0 <= skill <= 4 else world.skill
-    trial = _world_of(data, wad, level, tree, skill, path)
+    trial = _world_of(data, wad, level, tree, skill, path, world.tables)
     _try_tics(trial, path)
-    return _world_of(data, wad, level, tree, skill, path)
+    return _world_of(data, wad, level, tree, skill, path, world.tables)
 
 
-def _world_of(data, wad, level, tree, skill, path) -> World:
+def _world_of(data, wad, level, tree, skill, path, tables=None) -> World:
+    """(``tables``: the game's own, wallbsp.content)"""
     try:
-        play = load_game(data, wad, source=str(path), cls=world_play_class(), level=level)
-        return World(tree, skill, play=play)
+        play = load_game(data, wad, source=str(path), cls=world_play_class(), level=level,
+                         tables=tables)
+        return World(tree, skill, play=play, tables=tables)
     except SaveError:
         raise
     except Exception as e:

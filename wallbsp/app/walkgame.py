@@ -1,6 +1,7 @@
 """``wallbsp walk``: what the command line asks of the walkthrough, put together.
 
 - ``walk`` (the bundled game), ``walk LEVEL`` or ``walk WAD:MAP`` (a warp): that level;
+  ``walk FOLDER``: a game folder (``game.gamefolder``, docs/modding.md), its first map;
   ``walk WAD`` the WAD's game as DOOM starts it (``startup``: title, demos, menu).
 - ``--record X.lmp`` with a WAD: DOOM's v1.9 demo of the game from the map it starts
   on (``game.lmprecord``; headless with ``--frames N`` too); any other ``--record``: the
@@ -14,9 +15,10 @@ from __future__ import annotations
 import os
 
 from wallbsp.app.cliargs import UsageError
+from wallbsp.game.gamefolder import is_game_folder, load_game_folder
 from wallbsp.app.outputs import check_outputs, write_outputs
 
-__all__ = ["walk_command", "is_lmp", "demo_world", "first_map_name"]
+__all__ = ["walk_command", "is_lmp", "demo_world", "first_map_name", "Episode", "EPISODE"]
 
 
 def is_lmp(path) -> bool:
@@ -34,6 +36,7 @@ def walk_command(args, load_any, next_level_of) -> None:
     from wallbsp.app.config import KeyConfigError, read_bindings
     from wallbsp.app.vanilla import is_wad
     from wallbsp.app.window import NoDisplayError, check_display
+    bundled = args.level is None
     args.level = _level_spec(args)
     check_outputs("walk", [args.screenshot, args.record], [args.level])
     wad_game = is_wad(args.level)
@@ -44,15 +47,22 @@ def walk_command(args, load_any, next_level_of) -> None:
         keys = read_bindings(args.keys)
         if args.frames is None:
             check_display()
-        setup, world, tree, demo = None, None, None, None
+        setup, world, tree, demo, game = None, None, None, None, None
+        summary_holder = {}
         if args.playdemo:
             from wallbsp.app.walkthrough import run_walkthrough
             world = demo_world(_wad_of(args.level), args.playdemo)
             tree = world.tree
             setup = _playback_setup(world)
-        elif wad_game and args.frames is None and not vanilla:
+        elif (wad_game or bundled) and args.frames is None and not (vanilla or args.record):
             from wallbsp.app.startup import run_game
-            return run_game(args, keys)
+            return run_game(args, keys, load_any)
+        elif is_game_folder(args.level):                 # a game of one's own
+            from wallbsp.app.walkthrough import run_walkthrough
+            from wallbsp.game.world import World
+            game = load_game_folder(args.level)
+            tree = game.tree(0)
+            world = World(tree, args.skill, tables=game.tables)
         else:
             spec = _first_map_spec(args.level) if wad_game else args.level
             from wallbsp.app.walkthrough import run_walkthrough
@@ -67,16 +77,20 @@ def walk_command(args, load_any, next_level_of) -> None:
             from wallbsp.game.demo import demo_for
             demo = demo_for(tree.level, args.skill)
         effects = not (args.nosound or args.nosfx)
-        summary_holder = {}
 
         def keep(walk, setup=setup):
             summary_holder["walk"] = walk
+            if summary_holder.get("episode") is not None:
+                summary_holder["episode"].attach(walk)
             if setup is not None:
                 setup(walk)
+        episode = Episode(load_any, args) if bundled else None
+        summary_holder["episode"] = episode
         summary = run_walkthrough(
             tree, size=args.size, frames=args.frames, turn=args.turn,
             screenshot=args.screenshot, max_fps=args.max_fps, demo=demo,
-            next_level=next_level_of(args.level, args), skill=args.skill,
+            next_level=game.next_level if game else (episode or next_level_of(args.level, args)),
+            skill=args.skill,
             sound=effects, music=not (args.nosound or args.nomusic), keys=keys,
             saves=args.saves, aspect=None if args.square_pixels else 4 / 3, world=world,
             setup=keep, menus=True if (vanilla or args.playdemo) else None)
@@ -85,6 +99,41 @@ def walk_command(args, load_any, next_level_of) -> None:
     _save_recording(args, demo, summary_holder.get("walk"))
     if args.frames is not None:
         print(summary)
+
+
+EPISODE = ("game.json", "game2.json", "game3.json")      # the bundled episode's levels, in order
+
+
+class Episode:
+    """``next_level(exit)`` of the bundled game: the level after the one being left (the
+    walkthrough's ``world``), compiled; None after the last (the intermission's play goes
+    on there again)."""
+
+    def __init__(self, load_any, args):
+        self.load_any, self.args, self.walk, self.trees = load_any, args, None, {}
+
+    def attach(self, walk) -> None:
+        self.walk = walk
+
+    def tree(self, name):
+        if name not in self.trees:
+            from importlib.resources import files
+            self.trees[name] = self.load_any(str(files("wallbsp") / "data" / name),
+                                             self.args, strict=self.args.strict)
+        return self.trees[name]
+
+    def level(self, number: int):
+        """Level ``number`` (1-based) of the episode, or None (idclev1N)."""
+        return self.tree(EPISODE[number - 1]) if 1 <= number <= len(EPISODE) else None
+
+    def __call__(self, exit_kind):
+        if self.walk is None:
+            return None
+        names = [self.tree(name).level.name for name in EPISODE]
+        here = self.walk.world.level.name
+        if here not in names or names.index(here) + 1 >= len(EPISODE):
+            return None
+        return self.tree(EPISODE[names.index(here) + 1])
 
 
 def _save_recording(args, demo, walk) -> None:
@@ -148,12 +197,13 @@ def demo_world(wad: str, demo_spec: str):
     play.g_do_play_demo(demo)
     world = World(tree, demo.skill + 1, play=play)
     world.demo = demo
+    world.demo_commands = [row[0].ticcmd() for row in demo.tics]
     return world
 
 
 def _playback_setup(world):
     def setup(walk):
-        walk.playback = iter([row[0].ticcmd() for row in world.demo.tics])
+        walk.playback = iter(world.demo_commands)
     return setup
 
 

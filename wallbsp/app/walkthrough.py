@@ -373,7 +373,7 @@ def start_level(walk, tree, text, world=None):
     """A fresh World of ``tree`` at the same skill (the recording stops: a demo is one
     level from its start), heard by the sound, and ``text`` said (``world``: one already
     made of ``tree``, a loaded save)."""
-    world = World(tree, walk.world.skill) if world is None else world
+    world = World(tree, walk.world.skill, tables=walk.world.tables) if world is None else world
     walk.world, walk.previous, walk.demo, walk.seen_message = world, None, None, 0
     walk.attract = walk.playback = None        # a game of one's own ends the attract loop
     walk.was_dead = False

@@ -97,14 +97,15 @@ class WadImage:
     def to_bytes(self) -> bytes:
         if self.source is not None and self.unchanged():
             return self.source
-        return _layout(self.magic, self.lumps, self.tail_gap if self.unchanged() else b"")
+        same = self.unchanged()
+        return _layout(self.magic, self.lumps, self.tail_gap if same else b"", same)
 
     def write(self, path) -> None:
         """The WAD to ``path``: all of it or nothing."""
         write_atomically(path, self.to_bytes())
 
 
-def _layout(magic: bytes, lumps: list[Lump], tail_gap: bytes) -> bytes:
+def _layout(magic: bytes, lumps: list[Lump], tail_gap: bytes, exact: bool) -> bytes:
     body = bytearray()
     entries = []
     shared: dict[tuple[int, int], int] = {}      # (origin pos, size) -> new pos
@@ -112,9 +113,10 @@ def _layout(magic: bytes, lumps: list[Lump], tail_gap: bytes) -> bytes:
         origin = lump.origin
         size = len(lump.data)
         raw = origin.raw_name if origin is not None else lump.name.encode("latin-1")
-        if not size:         # an empty lump's offset means nothing: keep it if it can be
-            here = HEADER.size + len(body)
-            pos = origin.pos if origin is not None and 0 <= origin.pos <= here else here
+        if not size:         # an empty lump's offset means nothing: kept unless it could
+            here = HEADER.size + len(body)     # point past the end of a changed file
+            keep = origin is not None and (exact or 0 <= origin.pos <= here)
+            pos = origin.pos if keep else here
         elif origin is not None and (origin.pos, size) in shared:
             pos = shared[(origin.pos, size)]
         else:

@@ -7,7 +7,7 @@ from __future__ import annotations
 import dataclasses
 from typing import NamedTuple
 
-from wallbsp.edit.commands import one_sided
+from wallbsp.edit.commands import one_sided, split_at_touches, weld_duplicates
 from wallbsp.edit.draft import Draft, EditError
 from wallbsp.edit.arrays import wall_arrays
 from wallbsp.edit.locate import sector_at
@@ -72,6 +72,9 @@ class Clipboard:
             d.walls.append(dataclasses.replace(
                 w, v1=d.vertex(x1 + dx, y1 + dy), v2=d.vertex(x2 + dx, y2 + dy),
                 front=w.front + base, back=None if w.back is None else w.back + base))
+        split_at_touches(d, set(range(len(self.level.vertices), len(d.vertices)))
+                         | {v for w in d.walls[len(self.level.walls):] for v in (w.v1, w.v2)})
+        weld_duplicates(d)
         first_thing = len(d.things)
         d.things.extend(Thing(t.x + dx, t.y + dy, t.angle, t.type, t.flags)
                         for t in copied.things)

@@ -5,11 +5,14 @@ from __future__ import annotations
 import dataclasses
 import math
 
-from wallbsp.edit.draft import Draft, EditError
+import numpy as np
+
+from wallbsp.edit.draft import Draft, EditError, opened
+from wallbsp.edit.faces import along
 from wallbsp.edit.selection import Selection
 from wallbsp.level.model import Side, Wall
 
-__all__ = ["Commands", "one_sided"]
+__all__ = ["Commands", "one_sided", "split_at_touches", "weld_duplicates"]
 
 
 def one_sided(w: Wall, keep_front: bool, texture: str | None) -> Wall:
@@ -25,7 +28,7 @@ def one_sided(w: Wall, keep_front: bool, texture: str | None) -> Wall:
     return dataclasses.replace(w, back=None, back_side=None, front_side=side, blocks=False)
 
 
-def _weld_duplicates(d: Draft) -> None:
+def weld_duplicates(d: Draft) -> None:
     """Walls with the same two ends: two one-sided walls facing away from each other become
     one two-sided wall; a wall with both ends at one vertex goes."""
     d.walls = [w for w in d.walls if w.v1 != w.v2]
@@ -37,19 +40,53 @@ def _weld_duplicates(d: Draft) -> None:
         if (other is not None and w.back is None and keep[other].back is None
                 and keep[other].v1 == w.v2):
             first = keep[other]
-            side = first.front_side
-            if side is not None and side.middle:
-                side = dataclasses.replace(side, upper=side.middle, lower=side.middle, middle=None)
-            back_side = w.front_side
-            if back_side is not None and back_side.middle:
-                back_side = dataclasses.replace(back_side, upper=back_side.middle,
-                                                lower=back_side.middle, middle=None)
-            keep[other] = dataclasses.replace(first, back=w.front, front_side=side,
-                                              back_side=back_side)
+            keep[other] = dataclasses.replace(first, back=w.front,
+                                              front_side=opened(first.front_side),
+                                              back_side=opened(w.front_side))
             continue
         seen.setdefault(key, len(keep))
         keep.append(w)
     d.walls = keep
+
+
+def split_at_touches(d: Draft, moved: set) -> None:
+    """Split walls where a moved vertex now lies inside one, or a moved wall now runs
+    through a vertex (Eureka's way: the line is split there), so every meeting is shared."""
+    xy = np.array(d.vertices, dtype=np.int64).reshape(-1, 2)
+    ends = np.array([(w.v1, w.v2) for w in d.walls], dtype=np.int64).reshape(-1, 2)
+    seg = np.hstack((xy[ends[:, 0]], xy[ends[:, 1]]))
+    lo_x, hi_x = np.minimum(seg[:, 0], seg[:, 2]), np.maximum(seg[:, 0], seg[:, 2])
+    lo_y, hi_y = np.minimum(seg[:, 1], seg[:, 3]), np.maximum(seg[:, 1], seg[:, 3])
+    cuts: dict[int, set] = {}
+    for v in moved:
+        x, y = xy[v]
+        near = np.flatnonzero((lo_x <= x) & (hi_x >= x) & (lo_y <= y) & (hi_y >= y))
+        for w in near.tolist():
+            if v not in ends[w] and _on_segment(seg[w], x, y):
+                cuts.setdefault(w, set()).add(v)
+    touched = np.flatnonzero(np.isin(ends, list(moved)).any(axis=1))
+    used = np.zeros(len(xy), dtype=bool)
+    used[ends.ravel()] = True           # a vertex no wall uses any more is no meeting
+    for w in touched.tolist():
+        inside = np.flatnonzero(used & (xy[:, 0] >= lo_x[w]) & (xy[:, 0] <= hi_x[w])
+                                & (xy[:, 1] >= lo_y[w]) & (xy[:, 1] <= hi_y[w]))
+        for v in inside.tolist():
+            if v not in ends[w] and _on_segment(seg[w], *xy[v]):
+                cuts.setdefault(w, set()).add(v)
+    for w, points in cuts.items():
+        a, b = d.vertices[d.walls[w].v1], d.vertices[d.walls[w].v2]
+        current = w
+        for v in sorted(points, key=lambda v: along(a, b, d.vertices[v])):
+            current = d.split_wall(current, v)
+
+
+def _on_segment(s, x, y) -> bool:
+    """(x, y), a vertex, lies inside the segment (collinear, between its ends)."""
+    x1, y1, x2, y2 = (int(c) for c in s)
+    x, y = int(x), int(y)
+    return ((x2 - x1) * (y - y1) == (y2 - y1) * (x - x1)
+            and min(x1, x2) <= x <= max(x1, x2) and min(y1, y2) <= y <= max(y1, y2)
+            and (x, y) not in ((x1, y1), (x2, y2)))
 
 
 class Commands:
@@ -64,6 +101,7 @@ class Commands:
         if v in (w.v1, w.v2):
             raise EditError(f"({round(x)}, {round(y)}) is an end of walls[{line}]")
         d.split_wall(line, v)
+        split_at_touches(d, {v})        # off the line, the new corner may touch another
         self.commit(d.level(), Selection("vertices", frozenset({v})), "split line")
         return v
 
@@ -78,7 +116,8 @@ class Commands:
         d.walls = [dataclasses.replace(w, v1=target if w.v1 in others else w.v1,
                                        v2=target if w.v2 in others else w.v2)
                    for w in d.walls]
-        _weld_duplicates(d)
+        split_at_touches(d, {target})
+        weld_duplicates(d)
         vmap, _ = d.compact()
         self.commit(d.level(), Selection("vertices", frozenset({vmap[target]}) - {-1}),
                     "merge vertices")
@@ -245,13 +284,14 @@ class Commands:
             for i, w in enumerate(d.walls):
                 if w.v1 in moved and w.v2 in moved:
                     d.walls[i] = dataclasses.replace(w, v1=w.v2, v2=w.v1)
-        # a moved vertex landing on another becomes it
+        # a moved vertex landing on another becomes it; one landing inside a wall splits it
         at = {p: i for i, p in enumerate(d.vertices) if i not in moved}
         weld = {v: at[d.vertices[v]] for v in moved if d.vertices[v] in at}
         if weld:
             d.walls = [dataclasses.replace(w, v1=weld.get(w.v1, w.v1), v2=weld.get(w.v2, w.v2))
                        for w in d.walls]
-            _weld_duplicates(d)
+        split_at_touches(d, {weld.get(v, v) for v in moved})
+        weld_duplicates(d)
         vmap, _ = d.compact()
         keep = self.selection
         if mode == "vertices":

@@ -15,7 +15,7 @@ import math
 from wallbsp.geometry import COORD_LIMIT
 from wallbsp.level.model import Level, Sector, Side, Wall
 
-__all__ = ["Draft", "EditError", "piece_offset"]
+__all__ = ["Draft", "EditError", "opened", "piece_offset"]
 
 
 class EditError(ValueError):
@@ -113,6 +113,15 @@ class Draft:
         return dataclasses.replace(self.base, vertices=self.vertices, sectors=self.sectors,
                                    walls=self.walls, things=tuple(self.things),
                                    start=self.start, warnings=[])
+
+
+def opened(side: Side | None) -> Side | None:
+    """A side whose wall became two-sided: its middle texture moves to its upper and lower
+    parts (where the wall now shows), as DOOM editors do."""
+    if side is None or side.middle is None:
+        return side
+    return dataclasses.replace(side, upper=side.upper or side.middle,
+                               lower=side.lower or side.middle, middle=None)
 
 
 def piece_offset(side: Side | None, along: int) -> Side | None:

@@ -51,7 +51,13 @@ class Editor(commands.Commands, clipboard.Clipboard, properties.Properties, smar
 
     # -- the edits -------------------------------------------------------------------------
     def commit(self, level: Level, selection: Selection | None = None, label: str = "edit"):
-        """Make ``level`` the current level as one undoable edit, if it breaks nothing."""
+        """Make ``level`` the current level as one undoable edit, if it breaks nothing.  An
+        edit that changes nothing (a move by nothing, a field set to what it was) only
+        sets the selection: no version, no undo step."""
+        if level == self.level:
+            if selection is not None:
+                self.selection = selection
+            return self
         facts = self._facts.refuse_worse(level)
         self._undo.append((self.level, self.selection, self._facts, label))
         self._redo.clear()

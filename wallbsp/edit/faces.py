@@ -58,12 +58,26 @@ class Edges:
         (x1, y1), (x2, y2) = self.d.vertices[u], self.d.vertices[v]
         return math.atan2(y2 - y1, x2 - x1)
 
-    def faces(self) -> list[list[int]]:
-        """The cycles of half-edges (a face on the right of each), by tracing."""
+    def _prepare(self) -> None:
+        if self.out:
+            return
         for h, (u, v, _, _) in enumerate(self.half):
             self.out.setdefault(u, []).append((self.angle(u, v), h))
         for items in self.out.values():
             items.sort()
+
+    def cycle(self, start: int) -> list[int]:
+        """The cycle of half-edges through ``start``."""
+        self._prepare()
+        cycle, h = [start], self._next(start)
+        while h != start and len(cycle) <= len(self.half):
+            cycle.append(h)
+            h = self._next(h)
+        return cycle
+
+    def faces(self) -> list[list[int]]:
+        """The cycles of half-edges (a face on the right of each), by tracing."""
+        self._prepare()
         seen, cycles = set(), []
         for start in range(len(self.half)):
             if start in seen:
@@ -96,6 +110,14 @@ class Edges:
         return w.front if w.v1 == u else w.back
 
 
+def _beside(vertices, half) -> tuple:
+    """A point a hair to the right of a half-edge's middle: inside the face it bounds, and
+    on no wall (an island's own vertex may touch its surroundings at a T-junction)."""
+    (x1, y1), (x2, y2) = vertices[half[0]], vertices[half[1]]
+    scale = Fraction(1, (1 << 30) * max(abs(x2 - x1), abs(y2 - y1)))
+    return (Fraction(x1 + x2, 2) + (y2 - y1) * scale, Fraction(y1 + y2, 2) - (x2 - x1) * scale)
+
+
 def faces_with_holes(edges: Edges, cycles: list) -> list[list]:
     """Faces as lists of cycles: each clockwise cycle (a face's outer boundary) with the
     counter-clockwise cycles (islands of walls) that lie directly inside it."""
@@ -106,7 +128,7 @@ def faces_with_holes(edges: Edges, cycles: list) -> list[list]:
     for c in cycles:
         if edges.area2(c) < 0:
             continue
-        p = vertices[edges.half[c[0]][0]]
+        p = _beside(vertices, edges.half[c[0]])
         around = [o for o in outer if inside_polygon(polys[id(o)], p) > 0]
         if around:
             home = min(around, key=lambda o: -edges.area2(o))

@@ -2,7 +2,8 @@
 textures, things stuck in walls, sectors the player cannot reach.
 
 ``problems(level)`` lists ``(kind, where, message)``; ``where`` is an index (a sector, a
-wall, a thing) or a pair of walls, or ``"start"``.  Kinds: ``"unclosed"``, ``"crossing"``
+wall, a thing), None (a line summing up more), or ``"start"``; a message names the place
+``(x, y)`` where it can (a crossing's point, a thing's place, where a boundary breaks).  Kinds: ``"unclosed"``, ``"crossing"``
 (also overlapping and duplicate walls), ``"texture"`` (a part a height difference shows
 with no texture, a one-sided wall with no middle texture, in a level that uses textures;
 a name the level's resources lack), ``"stuck"`` (a thing whose DOOM radius overlaps a
@@ -14,12 +15,12 @@ from __future__ import annotations
 import numpy as np
 
 from wallbsp.doom.info import DOOMEDNUM, MF_SHOOTABLE, MF_SOLID, MOBJINFO
-from wallbsp.edit.arrays import wall_arrays
+from wallbsp.edit.arrays import BAND, wall_arrays
 from wallbsp.edit.checks import open_ends
 from wallbsp.edit.fit import PLAYER_HEIGHT
 from wallbsp.edit.locate import sector_at
 from wallbsp.edit.reach import reachable_sectors
-from wallbsp.level.conflicts import find_wall_conflicts
+from wallbsp.level.conflicts import conflict_warnings
 from wallbsp.level.model import Level
 
 __all__ = ["problems", "thing_radius"]
@@ -49,15 +50,12 @@ def _unclosed(level: Level) -> list:
 
 
 def _crossings(level: Level) -> list:
+    """The level loader's words for crossing, overlapping and duplicate walls, each naming
+    where (the crossing point, the shared stretch, the ends)."""
     if len(level.walls) < 2:
         return []
-    found = find_wall_conflicts(wall_arrays(level).seg)
-    return ([("crossing", (i, j), f"walls[{i}] crosses walls[{j}]")
-             for i, j in found.crossings.tolist()]
-            + [("crossing", (i, j), f"walls[{i}] overlaps walls[{j}]")
-               for i, j in found.overlaps.tolist()]
-            + [("crossing", (i, j), f"walls[{j}] duplicates walls[{i}]")
-               for i, j in found.duplicates.tolist()])
+    return [("crossing", wall, what if wall is None else f"walls[{wall}] {what}")
+            for wall, what in conflict_warnings(wall_arrays(level).seg, MAX_EACH)]
 
 
 def _textures(level: Level, resources) -> list:
@@ -105,22 +103,26 @@ def _stuck(level: Level, tree=None) -> list:
     where = tree.locate if tree is not None else \
         (lambda x, y: sector_at(level, x, y, arrays))
     blocking = np.array([w.back is None or w.blocks for w in level.walls], dtype=bool)
-    seg = arrays.fseg[blocking]
-    lo_x, hi_x = np.minimum(seg[:, 0], seg[:, 2]), np.maximum(seg[:, 0], seg[:, 2])
-    lo_y, hi_y = np.minimum(seg[:, 1], seg[:, 3]), np.maximum(seg[:, 1], seg[:, 3])
+    seg = arrays.fseg
     out = []
     for i, t in enumerate(level.things):
         if where(t.x, t.y) is None:
-            out.append(("stuck", i, f"things[{i}] (type {t.type}) stands in the void"))
+            out.append(("stuck", i, f"things[{i}] (type {t.type}) at ({t.x}, {t.y}) stands "
+                                    f"in the void"))
             continue
         if not _solid(level, t.type):
             continue
         r = thing_radius(level, t.type)
-        near = np.flatnonzero((lo_x < t.x + r) & (hi_x > t.x - r)
-                              & (lo_y < t.y + r) & (hi_y > t.y - r))
+        # the bands the box spans (a wall in two bands comes twice: harmless for any())
+        near = np.concatenate([arrays.across(y) for y in
+                               np.arange(t.y - r, t.y + r + BAND, BAND)])
+        near = near[blocking[near]]
+        s = seg[near]
+        near = near[(np.minimum(s[:, 0], s[:, 2]) < t.x + r) & (np.maximum(s[:, 0], s[:, 2]) > t.x - r)
+                    & (np.minimum(s[:, 1], s[:, 3]) < t.y + r) & (np.maximum(s[:, 1], s[:, 3]) > t.y - r)]
         if len(near) and _box_hits(t.x, t.y, r, *(seg[near].T)).any():
-            out.append(("stuck", i, f"things[{i}] (type {t.type}, radius {r:g}) "
-                                    f"overlaps a wall"))
+            out.append(("stuck", i, f"things[{i}] (type {t.type}, radius {r:g}) at "
+                                    f"({t.x}, {t.y}) overlaps a wall"))
     return out
 
 

@@ -197,6 +197,26 @@ class Properties:
                     Selection("things", frozenset({len(things) - 1})), "add thing")
         return len(things) - 1
 
+    def set_level(self, **fields) -> None:
+        """The level's ``name``, ``resources`` (paths of WADs or PNG folders, relative to
+        the level file) and ``sky`` (a texture name, or None)."""
+        change = {}
+        for key, value in fields.items():
+            if key == "name":
+                if not isinstance(value, str):
+                    raise EditError(f"name must be a string, not {value!r}")
+                change[key] = value
+            elif key == "resources":
+                paths = tuple(str(p) for p in value)
+                if any(not p or "\0" in p for p in paths):
+                    raise EditError("resources are paths (non-empty strings)")
+                change[key] = paths
+            elif key == "sky":
+                change[key] = _name(value, "sky")
+            else:
+                raise EditError(f"a level has no {key!r} to set (name, resources, sky)")
+        self.commit(dataclasses.replace(self.level, **change), label="level properties")
+
     def set_start(self, x, y, angle: float = 90) -> None:
         """Where the player starts (the level's ``start``)."""
         start = Start(_number(x, "x"), _number(y, "y"), _number(angle, "angle") % 360)

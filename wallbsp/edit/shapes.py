@@ -7,14 +7,16 @@ new sector):
 
 - a face that was void becomes the new sector if the shape's outline bounds it (a room drawn
   in the void, or one drawn against existing rooms, which then join with two-sided walls);
-  a hole the outline does not touch (a pillar the shape encloses) stays void;
+  a hole in the map (a pillar) stays void unless the outline touches it and covers all of
+  it (drawn over exactly; a courtyard between rooms filled);
 - a face of a sector that also lies outside the shape becomes the new sector (a sector
   drawn inside another is nested in it; a shape across a room carves its part out);
 - a sector lying wholly inside the shape keeps itself (a shape drawn round a room makes a
   sector round it).
 
 Every wall's sides then follow from the faces on its right and left: a wall that now has a
-sector on both sides is two-sided, its middle texture moved to its upper and lower parts.
+sector on both sides is two-sided, its middle texture moved to its upper and lower parts;
+a wall with the new sector on both sides (an old room's edge the shape spread over) goes.
 """
 from __future__ import annotations
 
@@ -25,7 +27,7 @@ from fractions import Fraction
 import numpy as np
 
 from wallbsp.edit.arrays import wall_arrays
-from wallbsp.edit.draft import Draft, EditError
+from wallbsp.edit.draft import Draft, EditError, opened
 from wallbsp.edit.locate import inside_polygon, sector_at
 from wallbsp.edit.faces import NEW, Edges, along, faces_with_holes, meetings
 from wallbsp.edit.polygon import clean_polygon
@@ -95,6 +97,7 @@ def draw_shape(level: Level, points, style: Style = Style()) -> tuple[Level, int
     d = Draft(level)
     edge_cuts, wall_cuts = _cut_points(level, poly)
     _split_walls(d, wall_cuts)
+    holes = _Holes(d, poly)
     pieces = _outline_pieces(d, poly, edge_cuts)
     n_old = len(level.walls)
     xs, ys = [p[0] for p in poly], [p[1] for p in poly]
@@ -110,13 +113,64 @@ def draw_shape(level: Level, points, style: Style = Style()) -> tuple[Level, int
     for f in faces:
         o = old[id(f)]
         touches = any(edges.half[h][3] for cycle in f for h in cycle)
-        final[id(f)] = (new if touches else None) if o is None else (new if o in carved else o)
+        if o is None:
+            final[id(f)] = new if touches and not holes.any_bounded(edges, f) else None
+        else:
+            final[id(f)] = new if o in carved else o
     if new not in final.values():
         raise EditError("the shape encloses no new area")
     d.add_sector(_template(level, faces, old, final, new, edges, style))
     _assign_sides(d, edges, faces, old, final, style)
     d.compact()
     return d.level(), new
+
+
+class _Holes:
+    """Holes the shape covers only in part (a pillar it overlaps), which stay holes: a hole
+    is a bounded face of the void, told from the outside of the map by the walls as they
+    were before the shape (split where it meets them): the void on the right of a one-sided
+    wall's back, traced round, runs clockwise round a hole and counter-clockwise round the
+    outside of a cluster of rooms.  A hole the shape covers whole is filled (a courtyard
+    drawn over)."""
+
+    def __init__(self, d: Draft, poly: list):
+        self.poly2 = [(2 * x, 2 * y) for x, y in poly]
+        self.void = Edges(d)
+        self.at = {}
+        for i, w in enumerate(list(d.walls)):
+            if w.back is None:
+                self.at[(w.v2, w.v1)] = len(self.void.half)
+                self.void.add(w.v2, w.v1, i, False)
+        self.bounded: dict[int, bool] = {}
+
+    def any_bounded(self, edges: Edges, face: list) -> bool:
+        """Whether an old wall round the face has on this side a hole the shape does not
+        cover whole."""
+        for cycle in face:
+            for h in cycle:
+                u, v, wall, _ = edges.half[h]
+                start = self.at.get((u, v)) if wall is not None else None
+                if start is not None and self._bounded(start):
+                    return True
+        return False
+
+    def _bounded(self, start: int) -> bool:
+        if start not in self.bounded:
+            cycle = self.void.cycle(start)
+            keep = self.void.area2(cycle) < 0 and not self._covered(cycle)
+            self.bounded.update(dict.fromkeys(cycle, keep))
+        return self.bounded[start]
+
+    def _covered(self, cycle: list) -> bool:
+        """Every end and middle of the cycle's walls inside the shape or on it."""
+        vertices = self.void.d.vertices
+        for h in cycle:
+            u, v, _, _ = self.void.half[h]
+            (x1, y1), (x2, y2) = vertices[u], vertices[v]
+            if inside_polygon(self.poly2, (2 * x1, 2 * y1)) < 0 \
+                    or inside_polygon(self.poly2, (x1 + x2, y1 + y2)) < 0:
+                return False
+        return True
 
 
 def _gather_edges(d: Draft, poly: list, pieces: list, near: list) -> Edges:
@@ -214,7 +268,8 @@ def _assign_sides(d: Draft, edges: Edges, faces, old, final, style: Style) -> No
         if wall is None:
             _new_wall(d, u, v, right[h], right[("outer", h)], style)
             continue
-        sides.setdefault(wall, {})[u] = right[h]
+        if h in right:           # (a half-edge in no face keeps its wall's side as it was)
+            sides.setdefault(wall, {})[u] = right[h]
     for wall, by_start in sorted(sides.items()):
         w = d.walls[wall]
         front = by_start.get(w.v1, w.front)
@@ -247,10 +302,7 @@ def _resided(w: Wall, front, back, style: Style) -> Wall:
     if (front, back) == (w.front, w.back):
         return w
     if back is not None and w.back is None:
-        side = w.front_side
-        if side is not None and side.middle is not None:
-            side = dataclasses.replace(side, upper=side.upper or side.middle,
-                                       lower=side.lower or side.middle, middle=None)
+        side = opened(w.front_side)
         back_side = Side(upper=style.wall_texture, lower=style.wall_texture) \
             if style.wall_texture else None
         return dataclasses.replace(w, front=front, back=back, front_side=side,

@@ -95,11 +95,12 @@ class SmartTools:
         used = {s.tag for s in self.level.sectors} | {w.tag for w in self.level.walls}
         return next(t for t in range(1, len(used) + 2) if t not in used)
 
-    def make_lift(self, sector=None, height=None) -> int:
+    def make_lift(self, sector=None, height=None, texture: str | None = None) -> int:
         """Make a sector a lift: its floor at ``height`` (default: its highest neighbour's
         floor), a new tag, and the lines to lower neighbours facing them with DOOM's
         switch-lift special (62), those to the others with the walk-over one (88), so the
-        lift comes down when used from below or walked onto from above.  The tag."""
+        lift comes down when used from below or walked onto from above; ``texture``: the
+        lift's sides seen from below.  The tag."""
         _, items = self._items(sector, "sectors")
         if len(items) != 1:
             raise EditError("select one sector to make a lift")
@@ -125,8 +126,10 @@ class SmartTools:
                 w = _flipped(w)
             low = self.level.sectors[w.front].floor < top
             walls[i] = dataclasses.replace(w, special=LIFT_SWITCH if low else LIFT_WALK, tag=tag)
-        level = dataclasses.replace(self.level, sectors=sectors, walls=walls)
-        self.commit(self.filled(level, {s}), label="make lift")
+        level = self.filled(dataclasses.replace(self.level, sectors=sectors, walls=walls), {s})
+        if texture is not None:
+            level = _risers(level, {s}, texture)
+        self.commit(level, label="make lift")
         return tag
 
     def make_stairs(self, sectors=None, step: float = 16, count: int | None = None,

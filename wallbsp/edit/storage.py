@@ -1,9 +1,12 @@
 """Opening and saving: a level JSON file or a ``WAD:MAP``; saving writes level JSON
 version 2 atomically and keeps the previous file as ``NAME.bak``; ``autosave`` writes
-``NAME.autosave`` beside it (or in the temporary folder for a level with no file)."""
+``NAME.autosave`` beside it (or in the temporary folder for a level with no file);
+``export`` writes a DOOM PWAD with the node builder's nodes (``wallbsp.nodes.export``), for
+Chocolate Doom and other ports."""
 from __future__ import annotations
 
 import dataclasses
+import re
 import shutil
 import tempfile
 from pathlib import Path
@@ -12,7 +15,7 @@ from wallbsp.files import write_atomically
 from wallbsp.level.io import dumps_level, level_from_dict, level_to_dict, load_level
 from wallbsp.level.wadmap import load_wad_level, parse_wad_spec
 
-__all__ = ["Storage", "read_level"]
+__all__ = ["Storage", "iwad_of", "map_name_of", "read_level"]
 
 
 def read_level(path_or_wad_map):
@@ -54,6 +57,20 @@ class Storage:
         """Whether there are edits since the level was opened or last saved."""
         return self.version != self.saved_version
 
+    def export(self, path, map_name: str | None = None, fmt: str = "doom", iwad=None) -> list:
+        """Write the level as a DOOM PWAD at ``path`` (``fmt`` ``"doom"``: the DOOM format
+        with nodes, blockmap and reject from wallbsp's node builder; ``"udmf"``: UDMF).
+        ``map_name``: by default the map the level came from, else MAP01; ``iwad``: by
+        default the level's IWAD resource, whose missing texture names are replaced.  The
+        notes to show (names replaced, things left out).  Play it with
+        ``chocolate-doom -iwad IWAD -file OUT.wad -warp 1 1`` (or ``-warp 1`` for MAPxx)."""
+        from wallbsp.nodes.export import export_level
+        if fmt not in ("doom", "udmf"):
+            raise ValueError(f"export format is 'doom' or 'udmf', not {fmt!r}")
+        iwad = iwad if iwad is not None else iwad_of(self.level)
+        return export_level(self.level, path, map_name or map_name_of(self.level), fmt,
+                            None if iwad is None else str(iwad))
+
     def autosave(self, force: bool = False) -> Path | None:
         """Write the level to its autosave file if it changed since the last autosave (or
         ``force``); the file written, or None."""
@@ -64,6 +81,28 @@ class Storage:
         write_atomically(target, dumps_level(_as_version_2(self.level)).encode("utf-8"))
         self._autosaved = self.version
         return target
+
+
+_MAP_NAME = re.compile(r"E[1-9]M[1-9]|MAP[0-9][0-9]", re.IGNORECASE)
+
+
+def map_name_of(level) -> str:
+    """The map a level came from (``E1M1`` of ``freedoom1.wad:E1M1``, or a level named like
+    a map), else ``MAP01``."""
+    for text in (str(level.source).rsplit(":", 1)[-1], level.name):
+        if _MAP_NAME.fullmatch(text or ""):
+            return text.upper()
+    return "MAP01"
+
+
+def iwad_of(level) -> Path | None:
+    """The level's first resource that is an IWAD (whose names an export checks), if any."""
+    for path in level.resource_paths():
+        if path.suffix.lower() == ".wad" and path.is_file():
+            with open(path, "rb") as f:
+                if f.read(4) == b"IWAD":
+                    return path
+    return None
 
 
 def _as_version_2(level):

@@ -104,6 +104,11 @@ def _objects(session, arrays, mode, items, color, width, offset=(0, 0)):
 
 def draw_selection(session, surface, arrays):
     items = selected(session)
+    if session.mode == "sectors":        # sectors shaded, as the tree's leaves fill them
+        from wallbsp.editor.treeview import fill_sectors
+        fill_sectors(session, surface, sorted(items), COLORS["selected"])
+        if session.hover is not None and session.drag is None:
+            fill_sectors(session, surface, [session.hover], COLORS["hover"], alpha=36)
     _objects(session, arrays, session.mode, items, COLORS["selected"], 2)
     hover = session.hover
     if hover is not None and session.draft is None and session.drag is None:

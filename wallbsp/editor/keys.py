@@ -12,7 +12,7 @@ from wallbsp.editor import draw
 from wallbsp.editor.selection import selected
 from wallbsp.editor.thingkinds import kind_of
 
-__all__ = ["KEYS", "press", "help_lines"]
+__all__ = ["KEYS", "press", "help_lines", "free_name"]
 
 SHIFT, CTRL = "shift", "ctrl"
 FLOOR_STEP = 8             # Eureka's , and . in sector mode
@@ -69,9 +69,22 @@ def _redo(s):
 
 
 def _save(s):
-    path = s.command("save", "")
+    """Save to the level's file; a level with none (new, or from a WAD) gets the first free
+    ``NAME.json`` in the current folder."""
+    target = None if getattr(s.editor, "path", None) is not None else free_name(s.level.name)
+    path = s.command("save", "", target)
     if path:
         s.say(f"saved {path}")
+
+
+def free_name(name):
+    from pathlib import Path
+    name = (name or "untitled").split(" (")[0]       # "E1M1 (freedoom1.wad)": E1M1
+    stem = "".join(c if c.isalnum() or c in "-_" else "_" for c in name) or "untitled"
+    path, n = Path(f"{stem}.json"), 1
+    while path.exists():
+        path, n = Path(f"{stem}-{n}.json"), n + 1
+    return path
 
 
 def _delete(s):
@@ -321,9 +334,10 @@ def _drawing_key(session, name, mods) -> bool:
 
 
 def help_lines():
-    """``key: what`` for each binding, in the table's order (the help overlay, the docs)."""
-    lines = []
+    """``keys: what`` for each thing the keys do, keys that do the same on one line, in
+    the table's order (the help overlay)."""
+    grouped = {}
     for (key, mods), (what, _) in KEYS.items():
         label = "+".join([m.capitalize() for m in mods] + [key.capitalize()])
-        lines.append(f"{label}: {what}")
-    return lines
+        grouped.setdefault(what, []).append(label)
+    return [f"{', '.join(labels)}: {what}" for what, labels in grouped.items()]

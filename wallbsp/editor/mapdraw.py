@@ -13,6 +13,7 @@ from __future__ import annotations
 import numpy as np
 import pygame
 
+from wallbsp.editor.raster import draw_lines
 from wallbsp.editor.thingkinds import kind_of
 from wallbsp.editor.view import View, grid_lines
 
@@ -57,13 +58,15 @@ class LevelArrays:
 
 
 def visible_segments(view: View, segs: np.ndarray):
-    """``(indices, window coordinates)`` of the segments whose box meets the window."""
+    """``(indices, window coordinates)`` of the segments whose box meets the part of the
+    window being drawn."""
     if not len(segs):
         return np.zeros(0, np.int64), np.zeros((0, 4))
     xy = view.screen_array(segs)
+    x0, y0, x1, y1 = view.drawn_box()
     lo_x, hi_x = np.minimum(xy[:, 0], xy[:, 2]), np.maximum(xy[:, 0], xy[:, 2])
     lo_y, hi_y = np.minimum(xy[:, 1], xy[:, 3]), np.maximum(xy[:, 1], xy[:, 3])
-    keep = (hi_x >= -2) & (lo_x <= view.width + 2) & (hi_y >= -2) & (lo_y <= view.height + 2)
+    keep = (hi_x >= x0 - 2) & (lo_x <= x1 + 2) & (hi_y >= y0 - 2) & (lo_y <= y1 + 2)
     idx = np.flatnonzero(keep)
     return idx, xy[idx]
 
@@ -74,20 +77,60 @@ class StaticLayer:
     def __init__(self):
         self.key = None
         self.picture = None
-        self.draws = 0          # how many times it was drawn (the benchmark reports it)
+        self.draws = 0          # how many times it was drawn whole (the benchmark reports it)
+        self.scrolls = 0        # how many times it was scrolled, its uncovered strips drawn
 
     def surface(self, view: View, arrays: LevelArrays, mode: str, like, extra=None,
                 under=None, over=None):
         """``under``/``over``: painters ``f(surface, view)`` drawn below and above the walls
         (the tree overlay); ``extra`` names what they show, so the layer knows to redraw."""
         key = (view.key(), id(arrays), mode, extra)
-        if key != self.key or self.picture is None:
+        if key == self.key and self.picture is not None:
+            return self.picture
+        shift = self._scroll_of(key)
+        if shift is not None:                 # a pan: move the picture, draw what it uncovers
+            self.picture.scroll(*shift)
+            for strip in _uncovered(shift, view.width, view.height):
+                self.picture.set_clip(strip)
+                view.region = strip
+                try:
+                    draw_static(self.picture, view, arrays, mode, under, over)
+                finally:
+                    view.region = None
+                    self.picture.set_clip(None)
+            self.scrolls += 1
+        else:
             if self.picture is None or self.picture.get_size() != (view.width, view.height):
                 self.picture = pygame.Surface((view.width, view.height), 0, like)
             draw_static(self.picture, view, arrays, mode, under, over)
-            self.key = key
             self.draws += 1
+        self.key = key
         return self.picture
+
+    def _scroll_of(self, key):
+        """``(dx, dy)`` whole pixels when only the view's centre moved since the picture
+        was drawn (by less than half the window), else None."""
+        if self.key is None or self.picture is None or self.key[1:] != key[1:]:
+            return None
+        (w, h, ocx, ocy, scale, *rest), (nw, nh, cx, cy, nscale, *nrest) = self.key[0], key[0]
+        if (w, h, scale, rest) != (nw, nh, nscale, nrest):
+            return None
+        dx, dy = (ocx - cx) * scale, (cy - ocy) * scale
+        if abs(dx - round(dx)) > 1e-6 or abs(dy - round(dy)) > 1e-6 \
+                or abs(dx) >= w // 2 or abs(dy) >= h // 2:
+            return None
+        return round(dx), round(dy)
+
+
+def _uncovered(shift, width, height):
+    """The strips of the window a scroll by ``shift`` leaves to be drawn."""
+    dx, dy = shift
+    strips = []
+    if dx:
+        strips.append(pygame.Rect(0 if dx > 0 else width + dx, 0, abs(dx), height))
+    if dy:
+        strips.append(pygame.Rect(0, 0 if dy > 0 else height + dy, width, abs(dy)))
+    return strips
 
 
 def draw_static(surface, view: View, arrays: LevelArrays, mode: str, under=None, over=None):
@@ -97,7 +140,8 @@ def draw_static(surface, view: View, arrays: LevelArrays, mode: str, under=None,
     if under is not None:
         under(surface, view)
     idx, xy = visible_segments(view, arrays.segs)
-    draw_walls(surface, idx, xy, arrays, ticks=mode == "lines" and view.scale > 0.2)
+    draw_walls(surface, idx, xy, arrays, ticks=mode == "lines" and view.scale > 0.2,
+               box=view.drawn_box())
     if over is not None:
         over(surface, view)
     if mode == "vertices" or view.scale >= 0.5:
@@ -118,16 +162,14 @@ def draw_grid(surface, view: View):
         line(surface, COLORS[color], (0, py), (view.width, py))
 
 
-def draw_walls(surface, idx, xy, arrays: LevelArrays, ticks=False):
-    """Two-sided walls first, so one-sided and special walls stay on top where they meet."""
-    line = pygame.draw.line
+def draw_walls(surface, idx, xy, arrays: LevelArrays, ticks=False, box=None):
+    """Two-sided walls first, so one-sided and special walls stay on top where they meet;
+    all the walls of a colour in one numpy pass (``raster``)."""
     two = arrays.two_sided[idx]
     special = arrays.special[idx]
     for mask, color in ((two & ~special, "two_sided"), (~two & ~special, "one_sided"),
                         (special, "special")):
-        c = COLORS[color]
-        for x1, y1, x2, y2 in xy[mask].tolist():
-            line(surface, c, (x1, y1), (x2, y2))
+        draw_lines(surface, xy[mask], COLORS[color], box)
     if ticks:
         draw_ticks(surface, xy)
 
@@ -150,8 +192,8 @@ def draw_vertices(surface, view: View, vertices, large: bool):
     if not len(vertices):
         return
     xy = view.screen_array(vertices)
-    on = (xy[:, 0] >= -4) & (xy[:, 0] <= view.width + 4) & \
-         (xy[:, 1] >= -4) & (xy[:, 1] <= view.height + 4)
+    x0, y0, x1, y1 = view.drawn_box()
+    on = (xy[:, 0] >= x0 - 4) & (xy[:, 0] <= x1 + 4) & (xy[:, 1] >= y0 - 4) & (xy[:, 1] <= y1 + 4)
     half = 2 if large else 1
     rect, color = surface.fill, COLORS["vertex"]
     for x, y in xy[on].tolist():
@@ -164,8 +206,9 @@ def draw_things(surface, view: View, arrays: LevelArrays, bright: bool):
         return
     xy = view.screen_array(arrays.things)
     r = np.maximum(2.0, arrays.thing_radius * view.scale)
-    on = np.flatnonzero((xy[:, 0] + r >= 0) & (xy[:, 1] + r >= 0) &
-                        (xy[:, 0] - r <= view.width) & (xy[:, 1] - r <= view.height))
+    x0, y0, x1, y1 = view.drawn_box()
+    on = np.flatnonzero((xy[:, 0] + r >= x0) & (xy[:, 1] + r >= y0) &
+                        (xy[:, 0] - r <= x1) & (xy[:, 1] - r <= y1))
     colors = arrays.thing_color if bright else arrays.thing_dim
     rect, line = pygame.draw.rect, pygame.draw.line
     ticks = r[on] >= 4

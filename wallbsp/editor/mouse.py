@@ -88,14 +88,9 @@ def on_motion(session, event):
     if drag.kind == "pan":
         session.view.pan_pixels(*event.rel)
     elif drag.kind == "move":
-        drag.last_map = session.view.snapped(*_moved_point(session, drag))
-
-
-def _moved_point(session, drag):
-    """The grabbed point follows the mouse by whole grid steps (its offset from the grid
-    kept), so a selection off the grid moves by grid steps too."""
-    x, y = session.mouse_map()
-    return x, y
+        # the grabbed point (snapped when pressed) goes to grid points, so the selection
+        # moves by whole grid steps
+        drag.last_map = session.view.snapped(*session.mouse_map())
 
 
 def on_wheel(session, event):

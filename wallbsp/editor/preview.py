@@ -105,15 +105,8 @@ class Preview:
 
 def _marker(session, surface):
     """The camera on the map: a circle and its view cone."""
-    view = session.view
     x, y, angle = session.camera
-
-    class _Scaled:              # draw_marker's view: map point -> pixels, and its scale
-        scale = view.scale
-
-        def __call__(self, px, py):
-            return view.to_screen(px, py)
-    draw_marker(surface, _Scaled(), (x, y), 16, angle, FOV)
+    draw_marker(surface, session.view, (x, y), 16, angle, FOV)
 
 
 # -- F9: play from the mouse ------------------------------------------------------------------

@@ -83,8 +83,8 @@ class Session:
         was refused.  The result, or None when refused."""
         try:
             result = command(*args, **kwargs)
-        except EditError as err:
-            self.say(str(err), refused=True)
+        except (EditError, ValueError, OSError) as err:    # a refusal, a level the file
+            self.say(_one_line(err), refused=True)         # format refuses, a full disk
             return None
         if what:
             self.say(what)
@@ -122,3 +122,9 @@ class Session:
             self.editor.select(mode, ())
         self.say(f"{mode} mode")
 
+
+def _one_line(err) -> str:
+    text = str(err).strip().splitlines()
+    if isinstance(err, OSError) and not isinstance(err, EditError):
+        return f"{err.filename or 'saving'}: {err.strerror or err}"
+    return text[0] if text else type(err).__name__

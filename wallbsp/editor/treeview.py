@@ -21,7 +21,8 @@ from wallbsp.app.mapview import clip_polygon, depth_color, node_depths, partitio
 from wallbsp.edit.compiler import compile_now
 from wallbsp.editor.mapdraw import COLORS, visible_segments
 
-__all__ = ["LiveTree", "TreeOverlay", "draw_tree_overlays", "leaf_cell"]
+__all__ = ["LiveTree", "TreeOverlay", "draw_tree_overlays", "leaf_cell", "leaf_cells",
+           "fill_sectors"]
 
 PARTITION = (70, 140, 230)
 LEAF = (60, 200, 220)
@@ -51,6 +52,7 @@ class TreeOverlay:
         palette = np.array([depth_color(d, levels) for d in range(levels)], np.int64)
         self.seg_colors = palette[seg_depth] if tree.seg_count else np.zeros((0, 3), np.int64)
         self.stats = tree.stats()
+        self.cells = leaf_cells(tree, self.bounds)
         self._points = None
 
     def problem_points(self):
@@ -133,7 +135,10 @@ class LiveTree:
     def _compile(self, version, level):
         """The model's compile and problems (``edit.compiler.compile_now``), then what the
         overlays draw, all on this thread."""
-        compiled = compile_now(level, version)
+        try:
+            compiled = compile_now(level, version)
+        except Exception as err:            # noqa: BLE001 - the worker must outlive any
+            return f"not compiled: {type(err).__name__}: {err}"    # level; the window says why
         if compiled.tree is None:
             return f"not compiled: {compiled.error}"
         problems = compiled.problems if self.with_problems else []
@@ -157,6 +162,53 @@ def draw_segs_by_depth(surface, view, overlay: TreeOverlay):
     line = pygame.draw.line
     for (x1, y1, x2, y2), c in zip(xy.tolist(), colors):
         line(surface, c, (x1, y1), (x2, y2), 2)
+
+
+def leaf_cells(tree, bounds) -> dict:
+    """sector -> the convex cells of its leaves (polygons in map units), from one walk
+    down the tree cutting ``bounds`` at each node: a sector's area as the tree sees it."""
+    x0, y0, x1, y1 = bounds
+    cells = {}
+    stack = [(tree.root, [(x0, y0), (x1, y0), (x1, y1), (x0, y1)])]
+    lines, child, leaf_sector = tree.node_line, tree.node_child, tree.leaf_sector
+    while stack:
+        node, cell = stack.pop()
+        if len(cell) < 3:
+            continue
+        if node < 0:
+            sector = int(leaf_sector[~node])
+            if sector >= 0:
+                cells.setdefault(sector, []).append(cell)
+            continue
+        line = tuple(float(v) for v in lines[node])
+        front, back = (int(c) for c in child[node])
+        stack.append((front, clip_polygon(cell, line, -1)))
+        stack.append((back, clip_polygon(cell, line, 1)))
+    return cells
+
+
+def fill_sectors(session, surface, sectors, color, alpha=48, limit=3000):
+    """Shade ``sectors`` by their leaves' cells, when the newest tree is the level's own
+    (an older tree's sector numbers may no longer be these); at most ``limit`` cells."""
+    live = session.compiler
+    overlay = live.overlay if live is not None else None
+    if overlay is None or overlay.version != session.editor.version or not sectors:
+        return
+    polygons = [c for s in sectors for c in overlay.cells.get(s, ())]
+    if not polygons or len(polygons) > limit:
+        return
+    view = session.view
+    shapes = [[view.to_screen(x, y) for x, y in cell] for cell in polygons]
+    xs = [p[0] for shape in shapes for p in shape]
+    ys = [p[1] for shape in shapes for p in shape]
+    box = pygame.Rect(min(xs), min(ys), max(xs) - min(xs) + 1, max(ys) - min(ys) + 1)
+    box = box.clip(pygame.Rect(0, 0, view.width, view.height))
+    if not box.width or not box.height:
+        return
+    shade = pygame.Surface(box.size, pygame.SRCALPHA)
+    for shape in shapes:
+        pygame.draw.polygon(shade, (*color, alpha), [(x - box.x, y - box.y) for x, y in shape])
+    surface.blit(shade, box.topleft)
 
 
 def leaf_cell(tree, bounds, x, y):

@@ -30,11 +30,22 @@ class View:
         self.grid = grid
         self.snap = True
         self.show_grid = True
+        self.region = None       # the part of the window being drawn (pixels), None: all
+
+    def drawn_box(self):
+        """``(x0, y0, x1, y1)`` in pixels of what is being drawn: ``region``, else the
+        window (the static layer draws only the strips a scroll uncovers)."""
+        if self.region is None:
+            return 0, 0, self.width, self.height
+        x, y, w, h = self.region
+        return x, y, x + w, y + h
 
     # -- conversions ---------------------------------------------------------------------
     def to_screen(self, x, y):
         return (self.width / 2 + (x - self.cx) * self.scale,
                 self.height / 2 - (y - self.cy) * self.scale)
+
+    __call__ = to_screen          # a view is also the map view's transform of app.mapview
 
     def to_map(self, px, py):
         return (self.cx + (px - self.width / 2) / self.scale,

@@ -24,8 +24,8 @@ def describe(value) -> str:
     if isinstance(value, (int, np.integer)) and not isinstance(value, bool):
         digits = _digits(int(value))
         if digits > SHOWN:
-            head = "-" if value < 0 else ""
-            return f"{head}an integer of {digits} digits ({kind})"
+            sign = "a negative" if value < 0 else "an"
+            return f"{sign} integer of {digits} digits ({kind})"
     try:
         text = repr(value)
     except Exception:           # a repr that fails says nothing more than the kind

@@ -5,7 +5,8 @@ each level's exit.
 A route is a list of steps, map points in map units:
 
 - ``("go", x, y)``: walk (running) to the point; a monster in sight first is shot at
-  (turned toward, fire held) until it is dead or out of sight;
+  (turned toward, fire held) until it is dead or out of sight; no progress for a while
+  and it presses use (a door that shut again while it fought);
 - ``("use", x, y)``: face the point and press use (a door, a switch, a lift);
 - ``("wait", tics)``: stand (still fighting what comes).
 
@@ -25,6 +26,7 @@ ARRIVED = 20.0          # map units from a point: reached
 TURN = 20.0             # degrees a tic at most
 FIGHT_RANGE = 900.0     # map units: nearer monsters in sight are fought
 USE_TICS = 4
+STUCK_TICS = 20
 
 
 def _turn_toward(mo, x, y) -> float:
@@ -38,6 +40,8 @@ class RoutePlayer:
         self.route = list(route)
         self.step = 0
         self.counter = 0
+        self.tics = 0
+        self.last = None            # where the player was STUCK_TICS ago
 
     @property
     def done(self) -> bool:
@@ -74,7 +78,18 @@ class RoutePlayer:
             self._next()
             return ticcmd(turn=turn)
         forward = 1.0 if abs(delta) < 30.0 else 0.0
-        return ticcmd(forward=forward, turn=turn, run=distance > 64.0)
+        return ticcmd(forward=forward, turn=turn, run=distance > 64.0,
+                      use=self._stuck(mo))
+
+    def _stuck(self, mo) -> bool:
+        """No progress for ``STUCK_TICS``: press use (a door shut again in the way)."""
+        self.tics += 1
+        if self.tics % STUCK_TICS:
+            return False
+        here = (mo.x / FRACUNIT, mo.y / FRACUNIT)
+        stuck = self.last is not None and math.dist(here, self.last) < 4.0
+        self.last = here
+        return stuck
 
     def _next(self) -> None:
         self.step += 1

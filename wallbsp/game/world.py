@@ -28,6 +28,12 @@ things is the object its ``i``-th thing spawned), ``exited`` (None, ``"normal"``
 The single player's own body is drawn by no view (a view blended between two tics trails
 it by a few units; ``PlayThings.hide``); other players' bodies are drawn.
 
+``World(tree, skill, tables=tables)`` plays with a game's own actors, weapons and items
+(``wallbsp.content.game_tables``: DOOM's tables with the game's added).
+
+``World(tree, skill, script=path)`` runs a level script (``game.levelscript``; by default
+the one the level names, ``"script"``) after each of the play's tics.
+
 ``World(tree, skill, play=play)`` goes on with a play of the tree's level already under way
 (a loaded save: ``playsim.savegame.load_game(..., cls=world_play_class())``).
 
@@ -49,8 +55,11 @@ from __future__ import annotations
 
 from collections import deque
 
+import numpy as np
+
 from wallbsp.camera import EYE_HEIGHT, Camera
 from wallbsp.game import probe
+from wallbsp.game.levelscript import LevelScript
 from wallbsp.game.multiplayer import check_deathmatch, check_players, join_players
 from wallbsp.game.playerview import (AMMO_NAMES, KEY_NAMES, POWER_NAMES, WEAPON_NAMES,
                                      PlayerView)
@@ -79,10 +88,13 @@ class World:
     """A level in play (module docstring)."""
 
     def __init__(self, tree, skill: int = 3, players: int = 1, deathmatch: int = 0,
-                 play=None):
+                 play=None, tables=None, script=None):
         skill = integer("World", "skill", skill, SKILLS.start, SKILLS.stop - 1)
         _check_tree("World", tree)
         self.tree, self.level, self.skill = tree, tree.level, skill
+        self.tables = tables            # a game's own (wallbsp.content), else DOOM's
+        script = script if script is not None else self.level.script_path()
+        self.script = LevelScript(self, script) if script is not None else None
         self.player_count = check_players(players)
         self.deathmatch = check_deathmatch(deathmatch)
         self.player_messages = tuple(deque(maxlen=MESSAGE_LOG)
@@ -104,12 +116,16 @@ class World:
         if self.wad_map is not None:
             wad, map_name = self.wad_map
             play = play_cls(wad)
+            if self.tables is not None:
+                play.set_tables(self.tables)
             play.level_things = level_thing_keys(self.level)
             join_players(play, self.level, self.player_count, self.deathmatch)
             episode, gamemap = map_numbers(map_name)
             play.g_init_new(self.skill - 1, episode, gamemap)
         else:
             play = play_cls(None)
+            if self.tables is not None:
+                play.set_tables(self.tables)
             play.level_things = level_thing_keys(self.level)
             join_players(play, self.level, self.player_count, self.deathmatch)
             try:
@@ -128,6 +144,8 @@ class World:
             self._state.things.hide(play.players[play.consoleplayer].mo)
         self._loads = play.loads
         self._things = ThingsView(self._state.things)
+        if self.script is not None:
+            self.script.start()
 
     def next_map(self, tree) -> None:
         """G_DoWorldDone: the play, done with the intermission (or Doom II's text screen),
@@ -324,6 +342,8 @@ class World:
         play = self.play
         play.g_ticker(cmds)
         self._tics += 1
+        if self.script is not None and play.gamestate == GS_LEVEL:
+            self.script.after_tic()
         if play.loads != self._loads:        # the level started again (after a death)
             self._adopt()
         else:
@@ -335,6 +355,8 @@ class World:
                 p.message = None
         if play.gameaction in (GA_COMPLETED, GA_VICTORY) or play.gamestate != GS_LEVEL:
             self.exited = "secret" if play.secret_exit_taken else "normal"
+            if self.script is not None:
+                self.script.exit()
 
     def _commands(self, given) -> list:
         if len(given) != self.player_count:

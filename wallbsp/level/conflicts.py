@@ -33,6 +33,13 @@ def crossing_limit(walls: int) -> int:
     return CROSSINGS_PER_WALL * walls + CROSSINGS_SPARE
 
 
+def seg_limit(walls: int) -> int:
+    """The segs a compiled tree of ``walls`` walls may have (a tree file is refused past
+    it): each crossing splits two walls, and the splitters' own splits are generously
+    counted (real levels: 1-2 segs a wall)."""
+    return 2 * crossing_limit(walls) + 16 * walls + CROSSINGS_SPARE
+
+
 def too_many_crossings(conflicts, walls: int):
     """The one-line reason a level's crossings are refused, or None."""
     count, limit = len(conflicts.crossings), crossing_limit(walls)

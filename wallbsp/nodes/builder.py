@@ -2,9 +2,9 @@
 
 Public API:
 - ``BuildOptions``: ``candidates`` (segs whose lines are tried at each node; zdbsp's
-  ``--partition``, default 64; 0: every seg), ``split_cost`` (a cut seg's cost against one
-  seg of imbalance, zdbsp's ``--split-cost``), ``balance`` (the imbalance's weight),
-  ``diagonal_cost`` (zdbsp's ``--diagonal-cost``);
+  ``--partition``; 0: every seg), ``split_cost`` (what a cut costs, zdbsp's
+  ``--split-cost``), ``balance`` (how much balance counts against cuts), ``diagonal_cost``
+  (zdbsp's ``--diagonal-cost``); the score they weigh is ``partition``'s;
 - ``build_nodes(map_data, options) -> Nodes``: ``vertexes`` (n, 2) (the map's own, then the
   split points), ``segs``, ``subsectors``, ``nodes`` (numpy records in ``mapdata``'s dtypes,
   full-range ints before any lump's limits), ``depth``, ``seg_rows`` (the segs' integer ends).
@@ -32,11 +32,10 @@ LEAF_FLAG = 1 << 31       # a child that is a subsector (wide; a lump has its ow
 
 @dataclass(frozen=True)
 class BuildOptions:
-    candidates: int = 64
-    split_cost: int = 64
-    balance: int = 1
+    candidates: int = 512
+    split_cost: int = 16
+    balance: int = 3
     diagonal_cost: int = 0
-    slack: int = 8
 
 
 @dataclass
@@ -91,7 +90,7 @@ def build_nodes(m: MapData, options: BuildOptions = BuildOptions()) -> Nodes:
     if n == 0:
         raise LevelError(f"{m.where}: no linedef has a sidedef and a length: nothing to build")
     params = np.array([options.candidates, options.split_cost, options.balance,
-                       options.diagonal_cost, options.slack], np.int64)
+                       options.diagonal_cost], np.int64)
     room = 4
     while True:
         seg = np.zeros((room * n + 64, 7), np.int64)

@@ -7,7 +7,7 @@ nodes are reported as extended, not checked):
 - every record whole and every index in range (a seg's vertexes, linedef and side, a
   subsector's segs, a node's children), within vanilla's limits;
 - the tree: every node and every subsector reached exactly once from the root (the last
-  node), no cycle, every partition of some length;
+  node), no cycle, every partition of some length, every seg in exactly one subsector;
 - segs on their lines: both ends within ``TOLERANCE`` units of the linedef's line and
   inside its ends, the side with a sidedef;
 - the tree covers the map: each side of each linedef is covered by its segs once (the
@@ -69,6 +69,14 @@ def _indices(m, segs, subs, nodes, problems):
             problems.append(f"{lump}[{i[0]}]: {field} {_value(lump, field, i[0], segs, subs)}"
                             f": {why}")
     if problems:
+        return False
+    owners = np.zeros(len(segs), np.int64)
+    for first, count in zip(subs["first"].tolist(), subs["count"].tolist()):
+        owners[first:first + count] += 1
+    i = np.flatnonzero(owners != 1)
+    if i.size:
+        problems.append(f"SEGS[{i[0]}]: in {owners[i[0]]} subsectors, not one "
+                        f"({i.size} segs so)")
         return False
     ld = m.linedefs[segs["linedef"]]
     sd = np.where(segs["side"] == 0, ld["right"], ld["left"])

@@ -2,7 +2,8 @@
 
 Public API:
 - ``NodeOptions``: the build's ``BuildOptions``, ``maps`` (names, or None: every map),
-  ``reject`` (``"sight"``: ``reject``'s table; ``"zero"``: all zeros);
+  ``reject`` (``"sight"``: ``reject``'s table; ``"zero"``: all zeros; ``"keep"``: the map's
+  own when it has the right size, as zdbsp ``-E``);
 - ``rebuild_wad(image, label, options) -> list[MapReport]``: every chosen DOOM-format map of
   the ``WadImage`` gets new VERTEXES, SEGS, SSECTORS, NODES, REJECT and BLOCKMAP, in DOOM's
   lump order; every other lump (and a map's own THINGS, LINEDEFS, SIDEDEFS, SECTORS) keeps
@@ -66,7 +67,11 @@ def rebuild_map(label: str, name: str, own: dict, options: NodeOptions):
         new["BLOCKMAP"] = b""
         warnings.append(f"{err}; an empty BLOCKMAP written (ports that build their own "
                         f"accept it)")
-    new["REJECT"] = reject_lump(m, zero=options.reject == "zero")
+    size = (len(m.sectors) ** 2 + 7) // 8
+    kept = options.reject == "keep" and len(m.lumps.get("REJECT", b"")) == size
+    new["REJECT"] = m.lumps["REJECT"] if kept else reject_lump(m, zero=options.reject == "zero")
+    if options.reject == "keep" and not kept:
+        warnings.append(f"{m.where}: REJECT: missing or not {size} bytes; a new one built")
     out = [Lump(lump, new[lump]) if lump in new else own[lump] for lump in MAP_LUMPS
            if lump in new or lump in own]
     report = MapReport(name, len(nodes.segs), len(nodes.subsectors), len(nodes.nodes),

@@ -89,15 +89,6 @@ class Play(*MIXINS):
     def __init__(self, wad_path, files=()):
         self.g_init(wad_path, files)
 
-    def __getattr__(self, name):
-        """A game's own action (``tables.actions``, ``wallbsp.content``) as a method of this
-        play.  Only names no mixin defines come here: DOOM's are found as fast as ever."""
-        tables = self.__dict__.get("tables")
-        action = tables.actions.get(name) if tables is not None else None
-        if action is None:
-            raise AttributeError(f"'Play' object has no attribute {name!r}")
-        return action.__get__(self)
-
 
 def play_class():
     """The ``Play`` class (kept for callers that compose on it, such as ``WorldPlay``)."""

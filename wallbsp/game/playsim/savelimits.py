@@ -142,12 +142,14 @@ def _check_player(p, tables, where) -> None:
     _check_words(p, _PLAYER_WORDS, where)
     _ranged(p, "playerstate", 0, 2, where)
     _ranged(p, "armortype", 0, 2, where)
-    _index(p, "readyweapon", NUMWEAPONS, where)
-    _ranged(p, "pendingweapon", 0, info.wp_nochange, where)
+    weapons = len(tables.weaponinfo)               # DOOM's, and a game's own after them
+    _index(p, "readyweapon", weapons, where)
+    _ranged(p, "pendingweapon", 0, max(info.wp_nochange, weapons - 1), where)
     _ranged(p, "fixedcolormap", 0, 255, where)
     if p.mo is not None and not isinstance(p.mo, Mobj):
         raise SaveError(f"{where}.mo: not a map object")
     for name, length in _PLAYER_LISTS:
+        length = weapons if name == "weaponowned" else length
         value = getattr(p, name, None)
         if type(value) is not list or len(value) != length or \
                 any(type(v) not in (int, bool) for v in value):

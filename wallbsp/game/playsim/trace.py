@@ -57,21 +57,24 @@ def trace_line(play):
         p.killcount, p.itemcount, p.secretcount, h)
 
 
-def start_demo(wad, demo, files=()):
+def start_demo(wad, demo, files=(), tables=None):
     """``(play, demo)``: a ``Play`` on the WAD (and PWADs ``files``) with ``demo`` (a
-    ``Demo``, a lump name of ``wad`` or a .lmp path) started (G_DoPlayDemo).  Each of
-    ``demo.tics`` is then one ``play.g_ticker(commands)``, True when the play ran."""
+    ``Demo``, a lump name of ``wad`` or a .lmp path) started (G_DoPlayDemo); ``tables``: a
+    game's own (``wallbsp.content.game_tables``).  Each of ``demo.tics`` is then one
+    ``play.g_ticker(commands)``, True when the play ran."""
     if not hasattr(demo, "tics"):
         demo = load_demo(wad, demo)
     play = Play(wad, files)
+    if tables is not None:
+        play.set_tables(tables)
     play.g_do_play_demo(demo)
     return play, demo
 
 
-def play_demo(wad, demo, tics=None, files=()):
+def play_demo(wad, demo, tics=None, files=(), tables=None):
     """Plays ``demo`` (see ``start_demo``) and yields the trace line of every tic that ran
     the play ticker (at most ``tics`` tics of the demo)."""
-    play, demo = start_demo(wad, demo, files)
+    play, demo = start_demo(wad, demo, files, tables)
     for commands in itertools.islice(demo.tics, tics):
         if play.g_ticker(commands):
             line = trace_line(play)
