@@ -178,7 +178,11 @@ def test_send_recv_returns_batches_of_finished_environments(workers, no_leak):
     seen = {e: [] for e in range(n)}
     try:
         envs.async_reset(seed=20)
-        for _ in range(2 * 9):
+        # which environments finish first is the scheduler's business: go on until every
+        # one has come back a few times (the bound only stops a pool that never returns one)
+        for _ in range(10_000):
+            if min(len(v) for v in seen.values()) >= 4:
+                break
             obs, rewards, terminated, truncated, infos = envs.recv()
             ids = infos["env_id"]
             assert len(ids) == batch and rewards.shape == (batch,)
