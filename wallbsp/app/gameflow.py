@@ -25,6 +25,7 @@ from __future__ import annotations
 import sys
 import time
 
+from wallbsp.app.config import DEFAULT_KEYS, key_codes, write_bindings
 from wallbsp.app.saves import SaveError, load_world, read_slots, save_world, saves_folder
 from wallbsp.game.maporder import next_map
 from wallbsp.game.playsim.game import GA_WORLDDONE, GS_FINALE, GS_INTERMISSION
@@ -32,8 +33,8 @@ from wallbsp.game.world import TICRATE
 from wallbsp.screen.art import art_for
 from wallbsp.screen.finale import FinaleScreen
 from wallbsp.screen.intermission import IntermissionScreen
-from wallbsp.screen.menu import (EndGame, LoadGame, Menu, NewGame, Option, Quit, SaveGame,
-                                 Sound)
+from wallbsp.screen.menu import (EndGame, KeysChanged, LoadGame, Menu, NewGame, Option, Quit,
+                                 SaveGame, Sound)
 from wallbsp.screen.menudraw import MenuScreen, menu_art, string_width
 from wallbsp.doom import info
 
@@ -69,6 +70,22 @@ def menu_key_name(code) -> str | None:
     return None
 
 
+def sdl_key_name(code) -> str | None:
+    """SDL's name of a pygame key code, as the key file writes it (None: a key SDL does
+    not name)."""
+    import pygame
+    from wallbsp.app.config import MOUSE_BUTTON
+    from wallbsp.app.keys import MOUSE_FIRE
+    if code == MOUSE_FIRE:
+        return MOUSE_BUTTON
+    name = pygame.key.name(code).lower() if isinstance(code, int) else ""
+    try:
+        key_codes((name,))              # the name reads back from the key file
+    except ValueError:
+        return None
+    return name or None
+
+
 class GameFlow:
     """Menus, intermission and the next map for a walkthrough (module doc)."""
 
@@ -83,6 +100,7 @@ class GameFlow:
         self.names = (None, None)
         self.following = None                   # the tree after the intermission
         self._clock = None
+        self.menu.bindings = dict(walk.key_names or DEFAULT_KEYS)
         self._game_of(walk.world)
         walk.warp = self.warp
 
@@ -102,7 +120,7 @@ class GameFlow:
 
     # -- keys -------------------------------------------------------------------------------
     def key(self, walk, code) -> bool:
-        name = menu_key_name(code)
+        name = sdl_key_name(code) if self.menu.awaiting is not None else menu_key_name(code)
         self.menu.in_level = self.intermission is None and not walk.world.exited
         events = self.menu.key(name) if name is not None else None
         if events is None:
@@ -127,6 +145,8 @@ class GameFlow:
             self._new_game(walk, NewGame(1, walk.world.skill))
         elif isinstance(event, Option):
             self._option(walk, event)
+        elif isinstance(event, KeysChanged):
+            self._keys_changed(walk, event.bindings)
 
     def _sound(self, walk, name: str) -> None:
         sound = getattr(walk, "sound", None)
@@ -191,6 +211,15 @@ class GameFlow:
             return
         self.intermission = self.finale = None
         self.start_level(walk, world.tree, "game loaded", world=world)
+
+    def _keys_changed(self, walk, bindings) -> None:
+        """The Controls page's keys: played from now on, and written to the key file."""
+        walk.key_names, walk.keys = dict(bindings), None     # controls.bindings remakes codes
+        try:
+            write_bindings(getattr(walk, "key_file", None), bindings)
+        except OSError as e:
+            print(f"wallbsp: keys not saved: {e}", file=sys.stderr)
+            self._say(walk, "keys not saved (see the terminal)")
 
     def _option(self, walk, event) -> None:
         name, value = event
