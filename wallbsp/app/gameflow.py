@@ -17,7 +17,9 @@ level, the next map, new games, saves and loads.  A ``GameFlow`` is the walkthro
   skipped by any button after 50 tics) and, when DOOM would load the next map, the same
   play goes on there (``World.next_map``: the player keeps weapons, ammo, armour and
   health, as DOOM's G_DoWorldDone; ``start_level`` with that world).  Our levels have no
-  text screens; one with no level after it is played again by the same play.
+  text screens between them; the bundled episode's last level ends in its finale (our text
+  on our flat, then our title picture; the game over, New Game starts its first level
+  again); another level of ours with no level after it is played again by the same play.
 - ``draw(walk, picture)``: the intermission or finale over everything, then the menu.
 """
 from __future__ import annotations
@@ -25,13 +27,15 @@ from __future__ import annotations
 import sys
 import time
 
+import numpy as np
+
 from wallbsp.app.config import DEFAULT_KEYS, key_codes, write_bindings
 from wallbsp.app.saves import SaveError, load_world, read_slots, save_world, saves_folder
 from wallbsp.game.maporder import next_map
-from wallbsp.game.playsim.game import GA_WORLDDONE, GS_FINALE, GS_INTERMISSION
+from wallbsp.game.playsim.game import GA_NOTHING, GA_WORLDDONE, GS_FINALE, GS_INTERMISSION
 from wallbsp.game.world import TICRATE
 from wallbsp.screen.art import art_for
-from wallbsp.screen.finale import FinaleScreen
+from wallbsp.screen.finale import OWN_EPISODE_END, FinaleScreen
 from wallbsp.screen.intermission import IntermissionScreen
 from wallbsp.screen.menu import (EndGame, KeysChanged, LoadGame, Menu, NewGame, Option, Quit,
                                  SaveGame, Sound)
@@ -84,6 +88,21 @@ def sdl_key_name(code) -> str | None:
     except ValueError:
         return None
     return name or None
+
+
+def _episode_of(walk):
+    """``level(n)`` of the bundled episode the walk plays (``walkgame.Episode``), or None."""
+    return getattr(walk.next_level, "level", None)
+
+
+def own_flat(name="FLOOR1"):
+    """One of our flats as 64 × 64 RGB (the finale's background), or None."""
+    from wallbsp.assets.catalogue import TEXTURE_DIR
+    from wallbsp.assets.resources import ResourceSet
+    picture = ResourceSet([TEXTURE_DIR]).flat(name)
+    if picture is None or picture.pixels.shape[:2] != (64, 64):
+        return None
+    return np.ascontiguousarray(picture.pixels.transpose(1, 0, 2)[..., :3])
 
 
 class GameFlow:
@@ -161,6 +180,9 @@ class GameFlow:
         """G_DeferedInitNew: the episode's first map (a WAD), or our level again, at the
         skill chosen."""
         world, tree = walk.world, walk.world.tree
+        first = _episode_of(walk)
+        if first is not None and world.wad_map is None:
+            tree = first(1) or tree                 # our episode starts at its first level
         if world.wad_map is not None and self.tree_of is not None:
             name = "MAP01" if self.menu.commercial else f"E{event.episode}M1"
             try:
@@ -273,8 +295,26 @@ class GameFlow:
         if getattr(walk, "sound", None) is not None:
             walk.sound.update()
         if play.gameaction == GA_WORLDDONE:
-            self._world_done(walk)
+            if self.finale is not None and self.finale.end is not None:
+                play.gameaction = GA_NOTHING    # our episode's end: the game is over
+            elif self._episode_over(walk):
+                self._start_own_finale(walk)
+            else:
+                self._world_done(walk)
         return True
+
+    def _episode_over(self, walk) -> bool:
+        """Our bundled episode's last level left: DOOM would show the finale now."""
+        return (walk.world.wad_map is None and self.following is None
+                and self.finale is None and _episode_of(walk) is not None)
+
+    def _start_own_finale(self, walk) -> None:
+        """F_StartFinale for our episode: its text on our flat, then our title picture; the
+        game is over (the menu's New Game starts it again), as after Doom's episodes."""
+        play = walk.world.play
+        play.f_start_finale()
+        art = walk.hud.art or art_for(play)
+        self.finale = FinaleScreen(play, art, OWN_EPISODE_END, own_flat(), "TITLEPIC")
 
     def _start_finale(self, walk) -> None:
         """The finale's screen (``screen.finale``) and music (S_ChangeMusic); a level of our
