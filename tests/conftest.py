@@ -3,6 +3,12 @@ import os
 from pathlib import Path
 
 import pytest
+from hypothesis import HealthCheck, settings
+
+# no timing in tests: hypothesis's per-example deadline and its too-slow health check are
+# clocks, and a loaded machine trips them on code that is right
+settings.register_profile("wallbsp", deadline=None, suppress_health_check=[HealthCheck.too_slow])
+settings.load_profile("wallbsp")
 
 # no test ever opens a window or a sound device
 os.environ.setdefault("SDL_VIDEODRIVER", "dummy")

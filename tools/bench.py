@@ -28,6 +28,7 @@ BENCHMARKS = {
     "env": ("env_throughput", "environments' steps/s, vector envs, reset time"),
     "vector": ("vector", "make_vec's batched vector env against one env and gymnasium's"),
     "playsim": ("playsim", "DOOM's play simulation: demo playback tics/s against Chocolate Doom"),
+    "playsim_baseline": ("playsim_baseline", "demo playback against a baseline checkout, one process, interleaved"),
     "scenarios": ("scenarios", "ViZDoom's scenarios beside ViZDoom: steps/s, a random agent's returns"),
     "multiagent": ("multiagent", "several agents in one world: steps/s for 2 and 4 agents"),
     "hud": ("hud", "the status bar, weapon, messages and flashes: CPU ms a frame and a tic"),

@@ -20,13 +20,12 @@ from __future__ import annotations
 
 import dataclasses
 import json
-import tomllib
 from dataclasses import dataclass, field
 from pathlib import Path
 
 from wallbsp.files import LevelError
 
-from .levelscript import guarded
+from .levelscript import run_file
 
 __all__ = ["GameFolder", "load_game_folder", "is_game_folder", "MANIFESTS"]
 
@@ -100,6 +99,14 @@ def load_game_folder(path) -> GameFolder:
     return game
 
 
+def _toml(raw) -> dict:
+    try:
+        import tomllib                   # Python 3.11 and later
+    except ImportError:
+        raise ValueError("a game.toml needs Python 3.11 or later; use game.json") from None
+    return tomllib.loads(raw.decode("utf-8"))
+
+
 def _manifest(folder):
     for name in MANIFESTS:
         path = folder / name
@@ -108,8 +115,7 @@ def _manifest(folder):
                 raw = path.read_bytes()[:MAX_MANIFEST_BYTES + 1]
                 if len(raw) > MAX_MANIFEST_BYTES:
                     raise ValueError("larger than a manifest can be")
-                data = json.loads(raw) if name.endswith(".json") else tomllib.loads(
-                    raw.decode("utf-8"))
+                data = json.loads(raw) if name.endswith(".json") else _toml(raw)
             except (OSError, ValueError, UnicodeDecodeError) as e:
                 raise LevelError(f"{path}: {e}") from None
             if not isinstance(data, dict):
@@ -142,16 +148,9 @@ def _actors(folder, manifest, actors):
     if actors is None:
         return [], DOOM
     path = folder / str(actors)
-    try:
-        source = path.read_bytes()
-    except OSError as e:
-        raise LevelError(f"{manifest}: actors: {path}: {e.strerror or e}") from None
-    try:
-        code = compile(source, str(path), "exec")
-    except SyntaxError as e:
-        raise LevelError(f"{path}: line {e.lineno}: {e.msg}") from None
-    namespace = {"__name__": f"gameactors:{folder.name}", "__file__": str(path)}
-    guarded(path, lambda: exec(code, namespace))
+    if not path.is_file():
+        raise LevelError(f"{manifest}: actors: {path}: no such file")
+    namespace = run_file(path, f"gameactors:{folder.name}")
     classes = classes_of(namespace)
     try:
         return classes, game_tables(classes)

@@ -46,8 +46,10 @@ class ScriptError(LevelError):
     """A level script that cannot run: ``file: line N: what``."""
 
 
-def load_script(path) -> dict:
-    """The handlers of the script at ``path``: its module's namespace, run once."""
+def run_file(path, module_name) -> dict:
+    """The namespace of the Python file at ``path`` run once as module ``module_name`` (a
+    level script, a game's actors); any failure is one ``ScriptError`` line naming the file
+    and, where it has one, the line."""
     path = Path(path)
     try:
         with open(path, "rb") as f:
@@ -60,8 +62,15 @@ def load_script(path) -> dict:
         code = compile(source, str(path), "exec")
     except SyntaxError as e:
         raise ScriptError(f"{path}: line {e.lineno}: {e.msg}") from None
-    namespace = {"__name__": f"levelscript:{path.stem}", "__file__": str(path)}
+    namespace = {"__name__": module_name, "__file__": str(path)}
     guarded(path, lambda: exec(code, namespace))
+    return namespace
+
+
+def load_script(path) -> dict:
+    """The handlers of the script at ``path``: its module's namespace, run once."""
+    path = Path(path)
+    namespace = run_file(path, f"levelscript:{path.stem}")
     unknown = sorted(n for n in namespace if n.startswith("on_") and n not in HANDLERS)
     if unknown:
         raise ScriptError(f"{path}: {unknown[0]}: not a handler ({', '.join(HANDLERS)})")
