@@ -199,3 +199,40 @@ def test_idclev_warps_within_the_bundled_episode(opened):
     typed("idclev19")                              # no such level: nothing happens
     frames(walk, 1)
     assert walk.world.level.name == "The keep"
+
+
+def test_leaving_the_episodes_last_level_shows_the_finale_not_the_level_again(opened):
+    from types import SimpleNamespace
+    from wallbsp.app.cli import load_any
+    from wallbsp.app.controls import press
+    from wallbsp.app.gameflow import GameFlow
+    from wallbsp.app.walkgame import Episode
+    from wallbsp.game.playsim.game import GS_FINALE
+    from wallbsp.game.ticcmds import ticcmd
+    from wallbsp.screen.finale import F_STAGE_ARTSCREEN, OWN_EPISODE_END, finale_stage
+    episode = Episode(load_any, SimpleNamespace(candidates=None, seed=0, strict=False))
+    walk = opened(episode.tree("game3.json"))
+    walk.next_level = episode
+    walk.overlay = flow = GameFlow(walk, app.start_level, "/nonexistent")
+    play = walk.world.play
+    play.g_exit_level()
+    for n in range(400):                           # the intermission, skipped with use
+        app.run_tic(walk, ticcmd(use=n % 2 == 0))
+        if flow.finale is not None:
+            break
+    assert flow.finale is not None and play.gamestate == GS_FINALE
+    assert flow.finale.text == OWN_EPISODE_END and walk.world.level.name == "The keep"
+    picture = np.zeros((200, 320, 3), np.uint8)
+    flow.draw(walk, picture)
+    assert picture.any()                            # our flat under the text
+    wait = len(OWN_EPISODE_END) * 3 + 250
+    for n in range(wait + 5):
+        app.run_tic(walk, ticcmd(use=n % 2 == 0))   # the game is over: buttons go nowhere
+    assert play.gamestate == GS_FINALE and flow.finale is not None
+    assert finale_stage(play, flow.finale.text, True)[0] == F_STAGE_ARTSCREEN
+    flow.draw(walk, picture)
+    assert picture.any()                            # our title picture at the end
+    for name in ("ESCAPE", "RETURN", "UP", "RETURN"):           # new game, skill 2
+        press(walk, getattr(pygame, f"K_{name}"))
+    assert walk.world.level.name == episode.tree("game.json").level.name
+    assert flow.finale is None and walk.world.skill == 2

@@ -192,3 +192,21 @@ def test_quit_is_confirmed(walk):
     assert walk.running
     keys(walk, "F10", "y")
     assert not walk.running
+
+
+def test_a_key_rebound_in_the_controls_menu_is_played_and_written(walk, tmp_path):
+    from wallbsp.app.config import read_bindings
+    from wallbsp.app.controls import bindings
+    walk.key_file = tmp_path / "conf" / "keys.ini"
+    keys(walk, "ESCAPE", "o", "RETURN", "c", "RETURN")       # options, controls
+    assert walk.overlay.menu.current == "keys"
+    keys(walk, "RETURN", "i")                                # forward: the I key
+    assert pygame.K_i in bindings(walk).forward and pygame.K_w not in bindings(walk).forward
+    assert read_bindings(walk.key_file) == walk.overlay.menu.bindings == walk.key_names
+    keys(walk, "DOWN", "RETURN", "COMMA")                    # back: ',' (spelled 'comma')
+    assert read_bindings(walk.key_file)["back"] == ("comma",)
+    assert bindings(walk).back == (pygame.K_COMMA,)
+    keys(walk, "ESCAPE")                                     # closes the menu, as DOOM's
+    assert not walk.overlay.menu.active
+    keys(walk, "i")
+    assert pygame.K_i in walk.held

@@ -307,3 +307,45 @@ def test_our_own_pictures_cover_every_lump_the_menus_and_intermission_draw():
               "WIPCNT", "WIMINUS", "WICOLON", "WISUCKS"} | {f"WINUM{n}" for n in range(10)}
     missing = sorted(n for n in names if not (OWN_MENU / f"{n}.png").exists())
     assert not missing, f"run tools/make_menu_pictures.py: {missing}"
+
+
+def test_controls_page_rebinds_a_key_taking_it_from_its_old_action():
+    from wallbsp.screen.menu import KeysChanged
+    menu = Menu(bindings={"forward": ("w", "up"), "back": ("s",), "fire": ("f", "mouse1")})
+    menu.open()
+    for k in ("o", "enter", "c", "enter"):
+        menu.key(k)
+    assert (menu.current, menu.item_on) == ("keys", 0)
+    menu.key("down")
+    assert actions(menu.key("enter")) == [] and menu.awaiting == "back"
+    changed = actions(menu.key("w"))           # any key name, even one the game plays
+    assert changed == [KeysChanged({"forward": ("up",), "back": ("w",),
+                                    "fire": ("f", "mouse1")})]
+    assert menu.awaiting is None and menu.bindings["back"] == ("w",)
+    menu.key("down")
+    menu.key("enter")
+    menu.key("left ctrl")                      # a mouse button bound to the action stays
+    assert menu.bindings["fire"] == ("left ctrl", "mouse1")
+    menu.key("enter")
+    assert actions(menu.key("escape")) == [] and menu.bindings["fire"] == ("left ctrl",
+                                                                         "mouse1")
+    assert menu.active and menu.current == "keys"     # escape while waiting keeps the page
+    menu.key("backspace")
+    assert menu.current == "options"
+
+
+def test_controls_page_draws_its_rows_and_scrolls_with_the_cursor():
+    from wallbsp.screen.menudraw import paint_menu, menu_art
+    from wallbsp.screen.art import OwnArt, OWN_ART
+    bindings = {f"action{n}": (str(n % 10),) for n in range(30)}
+    menu = Menu(bindings=bindings)
+    menu.open()
+    for k in ("o", "enter", "c", "enter"):
+        menu.key(k)
+    art = menu_art(OwnArt(OWN_ART))
+    top = paint_menu(menu, art).mask.copy()
+    assert top[30:160].any() and menu.keys_window() == range(0, 12)
+    for _ in range(20):
+        menu.key("down")
+    assert 20 in menu.keys_window() and len(menu.keys_window()) == 12
+    assert not np.array_equal(paint_menu(menu, art).mask, top)

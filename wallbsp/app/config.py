@@ -10,21 +10,23 @@ action or key, a key on two lines, a line that is no binding) is one ``KeyConfig
 line naming the file and the line.
 
 ``read_bindings(path)`` reads the file into ``{action: (key name, ...)}``;
-``key_codes(names)`` turns the names into pygame's key codes (pygame imported then).
+``write_bindings(path, bindings)`` writes every action's line (the options menu's Controls
+page), atomically, as ``format_bindings`` gives them; ``key_codes(names)`` turns the names into pygame's key codes (pygame imported then).
 """
 from __future__ import annotations
 
 import os
 from pathlib import Path
 
-from wallbsp.files import InputError, read_input
+from wallbsp.files import InputError, read_input, write_atomically
 
 __all__ = ["ACTIONS", "DEFAULT_KEYS", "MOUSE_BUTTON", "KeyConfigError", "default_path",
-           "read_bindings", "parse_bindings", "key_codes"]
+           "read_bindings", "parse_bindings", "format_bindings", "write_bindings", "key_codes"]
 
 MOUSE_BUTTON = "mouse1"
 CONFIG_LIMIT = 64 * 1024        # bytes: a key file is a few lines
 ALIASES = {"comma": ","}        # a key the line's own syntax cannot hold
+SPELLED = {v: k for k, v in ALIASES.items()}
 
 # action -> its default keys (SDL's key names); the held actions first, then the one-shots
 DEFAULT_KEYS = {
@@ -93,6 +95,24 @@ def parse_bindings(text: str, name: str = "<keys>") -> dict:
                 for action, keys in DEFAULT_KEYS.items()}
     bindings.update(chosen)
     return bindings
+
+
+def format_bindings(bindings: dict) -> str:
+    """The key file of ``bindings``: every action on its line, in ``ACTIONS``' order."""
+    lines = ["# wallbsp's keys (written by the options menu's Controls page)", "[keys]"]
+    for action in ACTIONS:
+        keys = (SPELLED.get(k, k) for k in bindings.get(action, ()))
+        lines.append(f"{action} = {', '.join(keys)}".rstrip())
+    return "\n".join(lines) + "\n"
+
+
+def write_bindings(path, bindings: dict) -> Path:
+    """``bindings`` into the key file at ``path`` (None: the default file, its folder
+    made); all of it or, on an error (an ``OSError``), nothing."""
+    path = default_path() if path is None else Path(path)
+    path.parent.mkdir(parents=True, exist_ok=True)
+    write_atomically(path, format_bindings(bindings).encode("utf-8"))
+    return path
 
 
 def _binding(line: str, where: str):

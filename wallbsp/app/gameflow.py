@@ -17,7 +17,9 @@ level, the next map, new games, saves and loads.  A ``GameFlow`` is the walkthro
   skipped by any button after 50 tics) and, when DOOM would load the next map, the same
   play goes on there (``World.next_map``: the player keeps weapons, ammo, armour and
   health, as DOOM's G_DoWorldDone; ``start_level`` with that world).  Our levels have no
-  text screens; one with no level after it is played again by the same play.
+  text screens between them; the bundled episode's last level ends in its finale (our text
+  on our flat, then our title picture; the game over, New Game starts its first level
+  again); another level of ours with no level after it is played again by the same play.
 - ``draw(walk, picture)``: the intermission or finale over everything, then the menu.
 """
 from __future__ import annotations
@@ -25,15 +27,18 @@ from __future__ import annotations
 import sys
 import time
 
+import numpy as np
+
+from wallbsp.app.config import DEFAULT_KEYS, key_codes, write_bindings
 from wallbsp.app.saves import SaveError, load_world, read_slots, save_world, saves_folder
 from wallbsp.game.maporder import next_map
-from wallbsp.game.playsim.game import GA_WORLDDONE, GS_FINALE, GS_INTERMISSION
+from wallbsp.game.playsim.game import GA_NOTHING, GA_WORLDDONE, GS_FINALE, GS_INTERMISSION
 from wallbsp.game.world import TICRATE
 from wallbsp.screen.art import art_for
-from wallbsp.screen.finale import FinaleScreen
+from wallbsp.screen.finale import OWN_EPISODE_END, FinaleScreen
 from wallbsp.screen.intermission import IntermissionScreen
-from wallbsp.screen.menu import (EndGame, LoadGame, Menu, NewGame, Option, Quit, SaveGame,
-                                 Sound)
+from wallbsp.screen.menu import (EndGame, KeysChanged, LoadGame, Menu, NewGame, Option, Quit,
+                                 SaveGame, Sound)
 from wallbsp.screen.menudraw import MenuScreen, menu_art, string_width
 from wallbsp.doom import info
 
@@ -69,6 +74,37 @@ def menu_key_name(code) -> str | None:
     return None
 
 
+def sdl_key_name(code) -> str | None:
+    """SDL's name of a pygame key code, as the key file writes it (None: a key SDL does
+    not name)."""
+    import pygame
+    from wallbsp.app.config import MOUSE_BUTTON
+    from wallbsp.app.keys import MOUSE_FIRE
+    if code == MOUSE_FIRE:
+        return MOUSE_BUTTON
+    name = pygame.key.name(code).lower() if isinstance(code, int) else ""
+    try:
+        key_codes((name,))              # the name reads back from the key file
+    except ValueError:
+        return None
+    return name or None
+
+
+def _episode_of(walk):
+    """``level(n)`` of the bundled episode the walk plays (``walkgame.Episode``), or None."""
+    return getattr(walk.next_level, "level", None)
+
+
+def own_flat(name="FLOOR1"):
+    """One of our flats as 64 × 64 RGB (the finale's background), or None."""
+    from wallbsp.assets.catalogue import TEXTURE_DIR
+    from wallbsp.assets.resources import ResourceSet
+    picture = ResourceSet([TEXTURE_DIR]).flat(name)
+    if picture is None or picture.pixels.shape[:2] != (64, 64):
+        return None
+    return np.ascontiguousarray(picture.pixels.transpose(1, 0, 2)[..., :3])
+
+
 class GameFlow:
     """Menus, intermission and the next map for a walkthrough (module doc)."""
 
@@ -83,6 +119,7 @@ class GameFlow:
         self.names = (None, None)
         self.following = None                   # the tree after the intermission
         self._clock = None
+        self.menu.bindings = dict(walk.key_names or DEFAULT_KEYS)
         self._game_of(walk.world)
         walk.warp = self.warp
 
@@ -102,7 +139,7 @@ class GameFlow:
 
     # -- keys -------------------------------------------------------------------------------
     def key(self, walk, code) -> bool:
-        name = menu_key_name(code)
+        name = sdl_key_name(code) if self.menu.awaiting is not None else menu_key_name(code)
         self.menu.in_level = self.intermission is None and not walk.world.exited
         events = self.menu.key(name) if name is not None else None
         if events is None:
@@ -127,6 +164,8 @@ class GameFlow:
             self._new_game(walk, NewGame(1, walk.world.skill))
         elif isinstance(event, Option):
             self._option(walk, event)
+        elif isinstance(event, KeysChanged):
+            self._keys_changed(walk, event.bindings)
 
     def _sound(self, walk, name: str) -> None:
         sound = getattr(walk, "sound", None)
@@ -141,6 +180,9 @@ class GameFlow:
         """G_DeferedInitNew: the episode's first map (a WAD), or our level again, at the
         skill chosen."""
         world, tree = walk.world, walk.world.tree
+        first = _episode_of(walk)
+        if first is not None and world.wad_map is None:
+            tree = first(1) or tree                 # our episode starts at its first level
         if world.wad_map is not None and self.tree_of is not None:
             name = "MAP01" if self.menu.commercial else f"E{event.episode}M1"
             try:
@@ -191,6 +233,15 @@ class GameFlow:
             return
         self.intermission = self.finale = None
         self.start_level(walk, world.tree, "game loaded", world=world)
+
+    def _keys_changed(self, walk, bindings) -> None:
+        """The Controls page's keys: played from now on, and written to the key file."""
+        walk.key_names, walk.keys = dict(bindings), None     # controls.bindings remakes codes
+        try:
+            write_bindings(getattr(walk, "key_file", None), bindings)
+        except OSError as e:
+            print(f"wallbsp: keys not saved: {e}", file=sys.stderr)
+            self._say(walk, "keys not saved (see the terminal)")
 
     def _option(self, walk, event) -> None:
         name, value = event
@@ -244,8 +295,26 @@ class GameFlow:
         if getattr(walk, "sound", None) is not None:
             walk.sound.update()
         if play.gameaction == GA_WORLDDONE:
-            self._world_done(walk)
+            if self.finale is not None and self.finale.end is not None:
+                play.gameaction = GA_NOTHING    # our episode's end: the game is over
+            elif self._episode_over(walk):
+                self._start_own_finale(walk)
+            else:
+                self._world_done(walk)
         return True
+
+    def _episode_over(self, walk) -> bool:
+        """Our bundled episode's last level left: DOOM would show the finale now."""
+        return (walk.world.wad_map is None and self.following is None
+                and self.finale is None and _episode_of(walk) is not None)
+
+    def _start_own_finale(self, walk) -> None:
+        """F_StartFinale for our episode: its text on our flat, then our title picture; the
+        game is over (the menu's New Game starts it again), as after Doom's episodes."""
+        play = walk.world.play
+        play.f_start_finale()
+        art = walk.hud.art or art_for(play)
+        self.finale = FinaleScreen(play, art, OWN_EPISODE_END, own_flat(), "TITLEPIC")
 
     def _start_finale(self, walk) -> None:
         """The finale's screen (``screen.finale``) and music (S_ChangeMusic); a level of our

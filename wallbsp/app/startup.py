@@ -261,4 +261,4 @@ def _attract_and_play(args, keys, source, made) -> None:
     app.run_walkthrough(first_tree, size=args.size, max_fps=args.max_fps, skill=args.skill,
                         sound=effects, music=not (args.nosound or args.nomusic), keys=keys,
                         saves=args.saves, aspect=None if args.square_pixels else 4 / 3,
-                        world=world, setup=setup, menus=True)
+                        world=world, setup=setup, menus=True, key_file=args.keys)

@@ -93,7 +93,8 @@ def walk_command(args, load_any, next_level_of) -> None:
             skill=args.skill,
             sound=effects, music=not (args.nosound or args.nomusic), keys=keys,
             saves=args.saves, aspect=None if args.square_pixels else 4 / 3, world=world,
-            setup=keep, menus=True if (vanilla or args.playdemo) else None)
+            setup=keep, menus=True if (vanilla or args.playdemo) else None,
+            key_file=args.keys)
     except (NoDisplayError, KeyConfigError) as err:
         raise UsageError(str(err)) from None
     _save_recording(args, demo, summary_holder.get("walk"))

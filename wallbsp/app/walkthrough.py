@@ -88,6 +88,7 @@ class Walkthrough:
     sound: object = None             # a sound.SoundSystem hearing the world, or None
     overlay: object = None           # a menu over the game: takes keys first (controls)
     key_names: dict = None           # action -> SDL key names (config); None: DOOM's
+    key_file: object = None          # where the menu writes rebound keys (None: config's)
     keys: object = None              # the bindings as key codes (controls.bindings)
     held: set = field(default_factory=set)     # keys down, from KEYDOWN/KEYUP events
     mouse_dx: float = 0.0
@@ -159,7 +160,7 @@ def run_walkthrough(tree, *, size=(320, 200), window=None, frames=None, turn=0.0
                     screenshot=None, max_fps=None, order="front_to_back", fov=90.0,
                     demo=None, next_level=None, skill=3, sound=True, music=True,
                     keys=None, statusbar=True, saves=None, menus=None, aspect=4 / 3,
-                    world=None, setup=None) -> Summary:
+                    world=None, setup=None, key_file=None) -> Summary:
     """Walk ``tree`` in a window; with ``frames=N`` render N frames headless and return the
     summary.  ``screenshot``: save the last picture (internal resolution, as shown) as a
     PNG.  ``demo``: record the tics into it; ``next_level(exit)``: the tree to go on to;
@@ -169,7 +170,8 @@ def run_walkthrough(tree, *, size=(320, 200), window=None, frames=None, turn=0.0
     ``menus``: DOOM's menus, intermission and saves (``gameflow``; default: interactive
     walks only), saves in the folder ``saves`` (default ``app.saves.saves_folder``);
     ``aspect``: the picture's shape in the window (4:3, DOOM's; None: square pixels);
-    ``world``: a World of ``tree`` already made (a demo's); ``setup(walk)``: called before
+    ``world``: a World of ``tree`` already made (a demo's); ``key_file``: where the
+    options menu's Controls page writes the keys (default ``config.default_path``); ``setup(walk)``: called before
     the first frame (a demo to record or play back: ``app.walkgame``)."""
     if frames is None:
         check_display()
@@ -179,7 +181,7 @@ def run_walkthrough(tree, *, size=(320, 200), window=None, frames=None, turn=0.0
         window = (960, 720) if aspect else (3 * size[0], 3 * size[1])
     walk = Walkthrough.at_start(tree, size, window, skill, world=world, order=order, fov=fov,
                                 demo=demo, next_level=next_level, key_names=keys,
-                                statusbar=statusbar, aspect=aspect)
+                                statusbar=statusbar, aspect=aspect, key_file=key_file)
     if menus or (menus is None and frames is None):
         walk.overlay = GameFlow(walk, start_level, saves)
     if setup is not None:

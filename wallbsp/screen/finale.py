@@ -35,7 +35,7 @@ from wallbsp.screen.menudefs import HU_FONTEND, HU_FONTSTART
 from wallbsp.screen.menudraw import SCREENHEIGHT, SCREENWIDTH, Canvas, menu_art
 
 __all__ = ["FinaleScreen", "finale_text", "bex_strings", "finale_stage", "paint_finale",
-           "OWN_TEXTS", "TEXTSPEED", "TEXTWAIT"]
+           "OWN_TEXTS", "OWN_EPISODE_END", "TEXTSPEED", "TEXTWAIT"]
 
 TEXTSPEED, TEXTWAIT = 3, 250
 TEXT_X, TEXT_Y, TEXT_LINE, NO_GLYPH = 10, 10, 11, 4
@@ -61,6 +61,11 @@ OWN_TEXTS = {
     "C5TEXT": "A STRANGE PLACE.\n\nYOU ARE NOT ALONE HERE.",
     "C6TEXT": "STRANGER STILL.\n\nKEEP GOING.",
 }
+# the end of our bundled episode (its text on our flat, then our title picture)
+OWN_EPISODE_END = ("THE KEEP FALLS SILENT. THE LAST GATE\nSHUTS BEHIND YOU.\n\n"
+                   "THREE PLACES CLEARED, ONE BY ONE,\nAND YOU WALKED OUT OF EACH.\n\n"
+                   "THE GAME IS YOURS. REST NOW.\n\n"
+                   "(ESCAPE, NEW GAME: PLAY IT AGAIN.)")
 
 
 def bex_strings(raw: bytes) -> dict:
@@ -134,34 +139,42 @@ def _wad_strings(play) -> dict:
     return bex_strings(raw) if raw else {}
 
 
-def finale_stage(play, text: str) -> tuple[int, int]:
+def finale_stage(play, text: str, end_picture: bool | None = None) -> tuple[int, int]:
     """``(stage, DOOM's finalecount)``: Doom's end picture once its F_Ticker would have
-    gone on to it, counting from 0 again there."""
+    gone on to it, counting from 0 again there (``end_picture``: whether the text goes on
+    to one; None: Doom's finales do, Doom II's text screens do not)."""
     count = play.finalecount
     if play.finalestage == F_STAGE_CAST:
         return F_STAGE_CAST, count
     wait = len(text) * TEXTSPEED + TEXTWAIT
-    if play.gamemode != COMMERCIAL and count > wait:
+    if end_picture is None:
+        end_picture = play.gamemode != COMMERCIAL
+    if end_picture and count > wait:
         return F_STAGE_ARTSCREEN, count - wait - 1
     return F_STAGE_TEXT, count
 
 
 class FinaleScreen:
-    """Draws a play's finale (module doc); the text and flat are chosen when it starts."""
+    """Draws a play's finale (module doc); the text and flat are chosen when it starts.
+    A game of our own gives its ``text``, its flat's colours ``flat_rgb`` (64 × 64 RGB)
+    and its ``end`` picture instead of DOOM's."""
 
-    def __init__(self, play, art):
-        self.art = art
+    def __init__(self, play, art, text=None, flat_rgb=None, end=None):
+        self.art, self.end = art, end
         self.text, self.flat, self.source = finale_text(play)
         self.flat_rgb = _flat_colours(art, self.flat)
+        if text is not None:
+            self.text, self.flat, self.source, self.flat_rgb = text, None, "own", flat_rgb
         self._kept = (None, None)
 
     def draw(self, frame: np.ndarray, play) -> np.ndarray:
         height, width = frame.shape[:2]
-        stage, count = finale_stage(play, self.text)
+        stage, count = finale_stage(play, self.text, True if self.end else None)
         shown = _shown(stage, count, play.gameepisode)
         key = (stage, shown, width, height)
         if self._kept[0] != key:
-            canvas = paint_finale(play, self.art, self.text, self.flat_rgb, stage, count)
+            canvas = paint_finale(play, self.art, self.text, self.flat_rgb, stage, count,
+                                  self.end)
             self._kept = (key, canvas.scaled(width, height)[0])
         frame[...] = self._kept[1]
         return frame
@@ -176,8 +189,9 @@ def _shown(stage, count, episode):
     return 0
 
 
-def paint_finale(play, art, text, flat_rgb, stage, count) -> Canvas:
-    """F_Drawer at DOOM's ``finalecount`` ``count`` of ``stage`` on a fresh canvas."""
+def paint_finale(play, art, text, flat_rgb, stage, count, end=None) -> Canvas:
+    """F_Drawer at DOOM's ``finalecount`` ``count`` of ``stage`` on a fresh canvas (``end``:
+    the end picture of a game of our own, in place of DOOM's)."""
     canvas = Canvas()
     art = menu_art(art)
     if stage == F_STAGE_TEXT:
@@ -187,6 +201,8 @@ def paint_finale(play, art, text, flat_rgb, stage, count) -> Canvas:
         _text_write(canvas, art, text, count)
     elif stage == F_STAGE_CAST:
         canvas.patch(art, "BOSSBACK", 0, 0)
+    elif end is not None:
+        canvas.patch(art, end, 0, 0)
     elif play.gameepisode == 3:
         _bunny_scroll(canvas, art, count)
     else:

@@ -29,10 +29,12 @@ from typing import Callable
 
 from wallbsp.screen.menudefs import (DEFAULTS, EMPTY_SLOT, HU_FONTEND, HU_FONTSTART, MENUS,
     NIGHTMARE, QUIT_SOUNDS, QUIT_SOUNDS2, RANGES, SAVE_SLOTS, SAVESTRINGSIZE, SKULL_TICS,
-    TEXT, EndGame, Item, LoadGame, MenuDef, NewGame, Option, Quit, SaveGame, Sound)
+    TEXT, EndGame, Item, KeysChanged, LoadGame, MenuDef, NewGame, Option, Quit, SaveGame,
+    Sound)
+from wallbsp.screen.menukeys import KeysMenu
 
 __all__ = ["Menu", "font_width", "Sound", "NewGame", "LoadGame", "SaveGame", "EndGame",
-           "Quit", "Option"]
+           "Quit", "Option", "KeysChanged"]
 
 def font_width(ch: str) -> int:
     """A stand-in for the font's widths (the drawer passes the real ones): 8 a glyph."""
@@ -40,7 +42,7 @@ def font_width(ch: str) -> int:
 
 
 @dataclass
-class Menu:
+class Menu(KeysMenu):
     """The state of DOOM's menus (module doc)."""
     commercial: bool = False
     episodes: int = 4
@@ -49,7 +51,8 @@ class Menu:
     active: bool = False
     current: str = "main"
     item_on: int = 0
-    last_on: dict = field(default_factory=lambda: {k: m.last_on for k, m in MENUS.items()})
+    last_on: dict = field(default_factory=lambda: {"keys": 0, **{k: m.last_on
+                                                                 for k, m in MENUS.items()}})
     options: dict = field(default_factory=lambda: dict(DEFAULTS))
     slots: list = field(default_factory=lambda: [None] * SAVE_SLOTS)
     message: str | None = None            # a question or notice drawn instead of the menu
@@ -65,6 +68,8 @@ class Menu:
     which_skull: int = 0
     skull_counter: int = 10
     tics: int = 0
+    bindings: dict = field(default_factory=dict)   # action -> key names (the Controls page)
+    awaiting: str | None = None           # the action whose new key is awaited
 
     # -- what is shown --------------------------------------------------------------------
     @property
@@ -73,6 +78,8 @@ class Menu:
 
     def items_of(self, name: str) -> MenuDef:
         """``MENUS[name]`` as this game has it (Doom II: no episodes; fewer episodes)."""
+        if name == "keys":
+            return self.keys_def()
         found = MENUS[name]
         if name == "episode":
             return found._replace(items=found.items[:max(1, min(4, self.episodes))])
@@ -103,7 +110,7 @@ class Menu:
         return [Sound("swtchn")]
 
     def close(self) -> None:
-        self.active, self.message, self.save_entry = False, None, False
+        self.active, self.message, self.save_entry, self.awaiting = False, None, False, None
 
     def _setup(self, name: str) -> None:
         """M_SetupNextMenu."""
@@ -118,6 +125,8 @@ class Menu:
     # -- keys -----------------------------------------------------------------------------
     def key(self, key: str):
         """M_Responder: the events of ``key``, or None when the menu does not take it."""
+        if self.awaiting is not None:
+            return self.bind_key(key)
         if self.save_entry:
             return self._type(key)
         if self.message is not None:

@@ -5,7 +5,8 @@ from __future__ import annotations
 from typing import NamedTuple
 
 __all__ = ["MENUS", "MenuDef", "Item", "Sound", "NewGame", "LoadGame", "SaveGame", "EndGame",
-           "Quit", "Option", "RANGES", "DEFAULTS", "TEXT", "QUIT_SOUNDS", "QUIT_SOUNDS2",
+           "Quit", "Option", "KeysChanged", "RANGES",
+           "DEFAULTS", "TEXT", "QUIT_SOUNDS", "QUIT_SOUNDS2",
            "LINEHEIGHT", "SKULLXOFF", "SAVE_SLOTS", "SAVESTRINGSIZE", "EMPTY_SLOT",
            "SKULL_TICS", "HU_FONTSTART", "HU_FONTEND", "NIGHTMARE"]
 
@@ -65,12 +66,18 @@ class Option(NamedTuple):
     value: object
 
 
+class KeysChanged(NamedTuple):
+    """The key bindings after a rebinding (action -> key names), for the key file."""
+    bindings: dict
+
+
 # -- DOOM's menu tables -----------------------------------------------------------------------
 class Item(NamedTuple):
     status: int            # 1 chosen with enter, 2 a slider (left/right), -1 a blank row
     patch: str             # the lump drawn ("" for none)
     routine: str           # what choosing it does (a Menu method's suffix)
     key: str               # its alpha key
+    label: str = ""        # text written in the font where there is no lump (our rows)
 
 
 class MenuDef(NamedTuple):
@@ -101,7 +108,8 @@ MENUS = {
                               (1, "M_DETAIL", "detail", "g"),
                               (2, "M_SCRNSZ", "screen_size", "s"), BLANK,
                               (2, "M_MSENS", "mouse", "m"), BLANK,
-                              (1, "M_SVOL", "sound", "s")), "main", 60, 37, 0),
+                              (1, "M_SVOL", "sound", "s"),
+                              (1, "", "keys_menu", "c", "controls")), "main", 60, 37, 0),
     "sound": MenuDef(_items((2, "M_SFXVOL", "sfx", "s"), BLANK,
                             (2, "M_MUSVOL", "music", "m"), BLANK), "options", 80, 64, 0),
     "load": MenuDef(_items(*[(1, "", "choose_load", str(n)) for n in range(1, 7)]),

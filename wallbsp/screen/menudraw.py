@@ -27,6 +27,7 @@ __all__ = ["Canvas", "ArtChain", "OwnMenuArt", "menu_art", "MenuScreen", "paint_
            "OWN_MENU", "SCREENWIDTH", "SCREENHEIGHT"]
 
 SCREENWIDTH, SCREENHEIGHT = 320, 200
+KEYS_LINE = 12                          # the Controls page's rows, M_WriteText's line
 OWN_MENU = Path(__file__).resolve().parent.parent / "data" / "menu"
 THERMO_WIDTH = {"screen_size": 9, "mouse": 10, "sfx": 16, "music": 16}
 _OWN: dict = {}
@@ -164,11 +165,16 @@ def paint_menu(menu, art: ArtChain) -> Canvas:
         return canvas
     if not menu.active:
         return canvas
+    if menu.current == "keys":
+        _keys(canvas, art, menu)
+        return canvas
     _TITLES[menu.current](canvas, art, menu)
     spec = menu.menu
     for i, item in enumerate(spec.items):
         if item.patch:
             canvas.patch(art, item.patch, spec.x, spec.y + LINEHEIGHT * i)
+        elif item.label:                    # a row of ours: its name in the font
+            canvas.text(art, spec.x, spec.y + LINEHEIGHT * i + 3, item.label)
     canvas.patch(art, f"M_SKULL{menu.which_skull + 1}", spec.x + SKULLXOFF,
                  spec.y - 5 + menu.item_on * LINEHEIGHT)
     return canvas
@@ -243,6 +249,26 @@ def _slots(canvas, art, menu, title):
         canvas.text(art, x, spec.y + LINEHEIGHT * menu.save_slot, "_")
 
 
+def _keys(canvas, art, menu):
+    """The Controls page: its title, a window of ``action  keys`` rows, a ``>`` at the
+    cursor (blinking as the skull does), and what a waiting row asks."""
+    spec = menu.menu
+    canvas.text(art, 160 - string_width(art, "controls") // 2, 12, "controls")
+    actions = list(menu.bindings)
+    for row, i in enumerate(menu.keys_window()):
+        y = spec.y + KEYS_LINE * row
+        action = actions[i]
+        canvas.text(art, spec.x, y, action.replace("_", " "))
+        keys = "..." if menu.awaiting == action else ", ".join(menu.bindings[action]) or "-"
+        canvas.text(art, spec.x + 100, y, keys)
+        if i == menu.item_on and not menu.which_skull:
+            canvas.text(art, spec.x - 12, y, ">")
+    ask = (f"press a key for {menu.awaiting.replace('_', ' ')}\n(escape: keep it)"
+           if menu.awaiting else "enter: rebind   backspace: back")
+    for n, line in enumerate(ask.split("\n")):
+        canvas.text(art, 160 - string_width(art, line) // 2, 176 + 10 * n, line)
+
+
 _TITLES = {"main": _main, "episode": _episode, "skill": _skill, "options": _options,
            "sound": _sound, "load": lambda c, a, m: _slots(c, a, m, "M_LOADG"),
            "save": lambda c, a, m: _slots(c, a, m, "M_SAVEG")}
@@ -252,7 +278,8 @@ def _view(menu) -> tuple:
     """Everything M_Drawer reads of the menu (the scaled picture is kept while it holds)."""
     return (menu.active, menu.current, menu.item_on, menu.which_skull, menu.message,
             menu.save_entry, menu.save_slot, menu.save_text, tuple(menu.slots),
-            tuple(sorted(menu.options.items())), menu.commercial, menu.episodes)
+            tuple(sorted(menu.options.items())), menu.commercial, menu.episodes,
+            tuple(menu.bindings.items()), menu.awaiting)
 
 
 class MenuScreen:
