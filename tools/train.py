@@ -187,10 +187,7 @@ def summary(result, args, iteration, started, names) -> dict:
             "return_max": _unscaled(runners.get("episode_return_max"), args.reward_scale),
             "episode_len_mean": _rounded(runners.get("episode_len_mean")),
             "episodes": _whole(runners.get("num_episodes")),
-            **({"agent_return_mean": {a: round(float(v), 2) for a, v in
-                                      runners["agent_episode_return_mean"].items()}}
-               if args.scenario == DEATHMATCH and runners.get("agent_episode_return_mean")
-               else {}),
+            **agent_returns(runners, args),
             "wall_s": round(time.perf_counter() - started, 1),
             "iter_s": round(seconds, 2),
             "sample_s": _rounded(result.get("timers", {}).get("env_runner_sampling_timer"), 2),
@@ -201,6 +198,14 @@ def summary(result, args, iteration, started, names) -> dict:
     if seconds:
         line["steps_per_s_node"] = {k: round(v / seconds, 1) for k, v in per_node.items()}
     return line
+
+
+def agent_returns(runners, args) -> dict:
+    """Deathmatch: each agent's mean return (RLlib's multi-agent runners' key)."""
+    per_agent = runners.get("agent_episode_returns_mean") or {}
+    if args.scenario != DEATHMATCH or not per_agent:
+        return {}
+    return {"agent_return_mean": {a: round(float(v), 2) for a, v in per_agent.items()}}
 
 
 def learner_stats(result) -> dict:
