@@ -3,6 +3,12 @@ import os
 from pathlib import Path
 
 import pytest
+from hypothesis import HealthCheck, settings
+
+# no timing in tests: hypothesis's per-example deadline and its too-slow health check are
+# clocks, and a loaded machine trips them on code that is right
+settings.register_profile("wallbsp", deadline=None, suppress_health_check=[HealthCheck.too_slow])
+settings.load_profile("wallbsp")
 
 # no test ever opens a window or a sound device
 os.environ.setdefault("SDL_VIDEODRIVER", "dummy")
@@ -51,11 +57,13 @@ def freedoom_cache():
 @pytest.fixture
 def opened():
     """``opened(tree, size=(160, 100), window=(320, 200), **options)``: a walkthrough at the
-    level's start with its display open; every one opened is closed after the test."""
+    level's start with its display open (square pixels unless ``aspect`` is given); every
+    one opened is closed after the test."""
     from wallbsp.app import walkthrough
     walks = []
 
     def open_walk(tree, size=(160, 100), window=(320, 200), **options):
+        options.setdefault("aspect", None)          # square pixels: the window is filled
         walk = walkthrough.Walkthrough.at_start(tree, size, window, **options)
         walkthrough.open_display(walk)
         walks.append(walk)

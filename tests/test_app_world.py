@@ -183,30 +183,36 @@ def thing_reach(walk):
     return round(THING_SIZE * view.scale) + 2
 
 
-def test_the_automap_shows_things_as_doom_does_and_t_toggles_them(opened):
+def test_the_automap_shows_things_as_doom_does_with_iddt(opened):
     from wallbsp.app.automap import COLOURS
     walk = opened(things_tree())
     walk.display = pygame.display.set_mode((640, 400))
     shown = [(200, 24), (160, 100), (230, 100), (24, 104)]   # monster, medikit, key, barrel
     pygame.event.post(pygame.event.Event(pygame.KEYDOWN, key=pygame.K_TAB, mod=0))
     frames(walk, 1)
-    assert walk.show_map and walk.show_things
+    assert walk.show_map and walk.map_cheat == 0
     reach = thing_reach(walk)
+    for x, y in shown:                       # DOOM's map shows no things without IDDT
+        assert not colour_near(walk, x, y, COLOURS["thing"], reach), (x, y)
+    for letter in "iddtiddt":                # the cheat, twice: every line, then the things
+        pygame.event.post(pygame.event.Event(pygame.KEYDOWN, key=ord(letter), mod=0))
+    frames(walk, 1)
+    assert walk.map_cheat == 2
     for x, y in shown:
         assert colour_near(walk, x, y, COLOURS["thing"], reach), (x, y)
-    pygame.event.post(pygame.event.Event(pygame.KEYDOWN, key=pygame.K_t, mod=0))
+    for letter in "iddt":                    # the third time: the cheat off
+        pygame.event.post(pygame.event.Event(pygame.KEYDOWN, key=ord(letter), mod=0))
     frames(walk, 1)
-    assert not walk.show_things and "off" in walk.message
+    assert walk.map_cheat == 0
     for x, y in shown:
         assert not colour_near(walk, x, y, COLOURS["thing"], reach), (x, y)
-    assert "T things" in " ".join(hud.HELP)
 
 
 def test_a_thing_picked_up_leaves_the_automap(opened):
     from wallbsp.app.automap import COLOURS
     walk = opened(things_tree())
     walk.display = pygame.display.set_mode((640, 400))
-    walk.show_map = True
+    walk.show_map, walk.map_cheat = True, 2
     set_health(walk.world, 50)
     walk.world.place_player(160, 60, 90)
     frames(walk, 1)

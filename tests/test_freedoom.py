@@ -13,18 +13,17 @@ import pytest
 from test_wad import FREEDOOM_MAPS, FREEDOOM_SAMPLE, freedoom
 
 from wallbsp import Camera, render
-from wallbsp.scene.queries import floor_z
+from wallbsp.camera import eye_camera
+from wallbsp.scene.state import static_state
 from wallbsp.level.wadmap import list_maps
 
-EYE = 41              # DOOM's view height above the floor
 SIZE = (64, 40)
 
 
 def start_camera(tree) -> Camera:
     start = tree.level.start
-    floor = floor_z(tree, start.x, start.y)
-    assert floor is not None, f"the player start {start} is outside the map"
-    return Camera(start.x, start.y, floor + EYE, start.angle)
+    assert tree.locate(start.x, start.y) is not None, f"the start {start} is outside the map"
+    return eye_camera(static_state(tree), start.x, start.y, start.angle)
 
 
 def first_difference(front, back):

@@ -10,7 +10,7 @@ PACKAGE = Path(jit.__file__).resolve().parent
 
 def package_copy(tmp_path):
     root = tmp_path / "wallbsp"
-    for name in ("jit.py", "lengths.py", "render/shading.py", "app/hud.py", "game/world.py"):
+    for name in ("jit.py", "render/shading.py", "app/hud.py", "game/world.py"):
         (root / name).parent.mkdir(parents=True, exist_ok=True)
         shutil.copy(PACKAGE / name, root / name)
     return root

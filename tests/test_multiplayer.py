@@ -7,7 +7,6 @@ import pytest
 
 from wallbsp import compile_level, load_level, render
 from wallbsp.files import LevelError
-from wallbsp.game.multiplayer import added_starts
 from wallbsp.game.ticcmds import ticcmd
 from wallbsp.game.world import World
 from wallbsp.level.io import level_from_dict
@@ -99,7 +98,8 @@ def test_cooperative_respawn_at_the_players_start(arena):
 def test_starts_a_level_lacks_are_made_near_player_one(textured):
     level = textured.level
     assert not any(t.type in (2, 3, 4, 11) for t in level.things)
-    made = added_starts(level, textured, 4, 1)
+    world = World(textured, 3, players=4, deathmatch=1)
+    made = [(m.x, m.y, m.angle, m.type) for m in world.play.extra_starts]
     players = [(x, y) for x, y, _, kind in made if kind in (2, 3, 4)]
     assert sorted(kind for *_, kind in made) == [2, 3, 4, 11, 11, 11, 11]
     everyone = players + [(level.start.x, level.start.y)]
@@ -107,7 +107,6 @@ def test_starts_a_level_lacks_are_made_near_player_one(textured):
         assert textured.locate(x, y) is not None
         for u, v in everyone[i + 1:]:
             assert max(abs(x - u), abs(y - v)) >= 40
-    world = World(textured, 3, players=4, deathmatch=1)
     spots = {(round(p.x), round(p.y)) for p in world.players}
     assert len(spots) == 4 and spots <= set(everyone)
     world.tic([ticcmd(forward=1)] * 4)

@@ -45,7 +45,8 @@ def test_timedemo_prints_the_rate(tmp_path, capsys):
 @pytest.mark.parametrize("damage, message", [
     (lambda d: d[:13 + 4 * 50 + 2], "byte 213: truncated tic"),
     (lambda d: b"\x49" + d[1:], "version 73"),
-    (lambda d: d[:2] + b"\x05\x01" + d[4:], "no map E5M1"),
+    (lambda d: d[:2] + b"\x05\x01" + d[4:],
+     "bad.lmp: bytes 2-3: the demo's header names the map E5M1"),      # not the WAD
 ])
 def test_a_bad_demo_is_one_line_and_nothing_written(tmp_path, capsys, damage, message):
     demo, out = tmp_path / "bad.lmp", tmp_path / "bad.trace"

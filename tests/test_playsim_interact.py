@@ -1,6 +1,8 @@
 """p_inter.c's port (``Interact`` and ``Damage``) against results worked out by hand from the C code."""
 import pytest
 
+from wallbsp.doom.tables import DOOM
+from wallbsp.game.playsim.game import bind_tables
 from wallbsp.game.playsim.damage import Damage
 from wallbsp.game.playsim.interact import Interact
 from wallbsp.game.playsim.structs import Mobj, Player, Sector, Subsector, PST_DEAD, \
@@ -24,6 +26,7 @@ class Stub(Interact, Damage):
     """Interact and Damage with the other modules' functions recorded instead of run."""
 
     def __init__(self, skill=2, rng=()):
+        bind_tables(self, DOOM)
         self.gameskill = skill
         self.gamemode = COMMERCIAL
         self.gameversion = EXE_DOOM_1_9
@@ -34,6 +37,7 @@ class Stub(Interact, Damage):
         self.rng = ScriptedRng(*rng)
         self.log = []
         self.touched = []               # the ticker's (what a tic may have changed)
+        self.events = []                # the event log (events.py)
 
     def s_start_sound(self, origin, sfx):
         self.log.append(("sound", origin, sfx))

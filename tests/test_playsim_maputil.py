@@ -28,6 +28,7 @@ class _Play(MapUtil, PathTraverse, Sight, Collide, Slide):
         self.validcount = 0
         self.gameversion = EXE_ULTIMATE
         self.touched = []               # the ticker's (what a tic may have changed)
+        self.events = []                # the event log (events.py)
         self.gamemap = 1
         self.crossed = []
 

@@ -1,5 +1,7 @@
 """p_mobj.c's port (playsim.mobjs / mobjspawn) against hand-computed C results, on a
 stand-in Play whose other modules are stubs."""
+from wallbsp.doom.tables import DOOM
+from wallbsp.game.playsim.game import bind_tables
 from wallbsp.game.playsim.mobjs import Mobjs
 from wallbsp.game.playsim.structs import MapThing, Player, Sector, Subsector, \
     EXE_DOOM_1_9, EXE_ULTIMATE
@@ -12,9 +14,11 @@ class StubPlay(Mobjs):
     """Mobjs with the other modules' functions reduced to what these tests need."""
 
     def __init__(self, gameversion=EXE_ULTIMATE):
+        bind_tables(self, DOOM)
         self.rng = Random()
         self.gameversion = gameversion
         self.touched = []               # the ticker's (what a tic may have changed)
+        self.events = []                # the event log (events.py)
         self.gameskill = 2
         self.leveltime = 0
         self.netgame = False

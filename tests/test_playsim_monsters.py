@@ -6,6 +6,8 @@ from pathlib import Path
 
 import pytest
 
+from wallbsp.doom.tables import DOOM
+from wallbsp.game.playsim.game import bind_tables
 from wallbsp.doom import info
 from wallbsp.doom.fixed import FRACUNIT, ANG45, ANG90, ANG180, aprox_distance
 from wallbsp.doom.rng import Random
@@ -26,7 +28,9 @@ class Fake(Monsters, Hearing, MonsterAttacks, ArchVile, MonsterDeaths, BossBrain
     """Just enough of Play: the other modules' functions are stubs that record calls."""
 
     def __init__(self):
+        bind_tables(self, DOOM)
         self.rng = Random()
+        self.events = []                # the event log (events.py)
         self.init_monsters()
         self.validcount = 0
         self.gameversion = EXE_DOOM_1_9

@@ -1,4 +1,6 @@
 """p_user.c's port (playsim.player) against hand-computed C results."""
+from wallbsp.doom.tables import DOOM
+from wallbsp.game.playsim.game import bind_tables
 from wallbsp.game.playsim.player import PlayerThink
 from wallbsp.game.playsim.structs import Mobj, Player, PST_LIVE, PST_DEAD, PST_REBORN, \
     BT_USE, BT_CHANGE, BT_WEAPONSHIFT, COMMERCIAL, RETAIL, Sector, Subsector
@@ -10,6 +12,7 @@ VIEWHEIGHT = 41 * F
 
 class StubPlay(PlayerThink):
     def __init__(self, gamemode=RETAIL):
+        bind_tables(self, DOOM)
         self.leveltime = 0
         self.gamemode = gamemode
         self.used = []

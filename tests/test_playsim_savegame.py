@@ -15,6 +15,7 @@ from pathlib import Path
 
 import pytest
 
+from wallbsp.doom import info, tables as doom_tables
 from wallbsp.game.playsim import game as gamemod
 from wallbsp.game.playsim import savegame
 from wallbsp.game.playsim.savegame import (SaveError, load_game, load_game_file, read_header,
@@ -202,13 +203,14 @@ def test_bad_saves_are_one_line_naming_the_place(kind, tmp_path):
     path = tmp_path / "bad.wsg"
     path.write_bytes(make(data))
     before = path.read_bytes()
-    fast = gamemod._fast_monsters
+    tables = info.STATES, info.MOBJINFO, doom_tables.DOOM.fast_monsters(True)
     with pytest.raises(SaveError, match=message) as err:
         load_game_file(path, wad_path("freedoom1"))
     text = str(err.value)
     assert text.startswith(f"{path}: ") and "\n" not in text
     assert isinstance(err.value, ValueError)
-    assert path.read_bytes() == before and gamemod._fast_monsters == fast
+    assert path.read_bytes() == before
+    assert (info.STATES, info.MOBJINFO, doom_tables.DOOM.fast_monsters(True)) == tables
 
 
 def test_a_save_of_another_wad_is_refused():
@@ -218,3 +220,20 @@ def test_a_save_of_another_wad_is_refused():
         load_game(data, wad_path("freedoom2"), source="slot.wsg")
     with pytest.raises(SaveError, match="made with 1 WAD"):
         load_game(data, wad_path("freedoom1"), [wad_path("freedoom2")])
+
+
+def test_a_nightmare_game_saves_and_loads():
+    """Skill 5's fast monsters live in the play's own tables (doom.tables): a save of such a
+    game loads and goes on as the uninterrupted one, however those tables were derived."""
+    import sys
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    from playsim_scenarios import scenario_demo
+    from wallbsp.game.playsim.demos import parse_demo
+    wad = wad_path("freedoom1")
+    demo = parse_demo(scenario_demo("nightmare-f1demo1", wad), "nightmare-f1demo1")
+    play, demo = start_demo(wad, demo)
+    assert play.tables.fast
+    run(play, demo.tics[:300])
+    loaded = load_game(save_game(play), wad)
+    assert loaded.tables.fast and first_difference(play, loaded) is None
+    assert run(loaded, demo.tics[300:400]) == run(play, demo.tics[300:400])

@@ -36,6 +36,7 @@ class _Play(Ticker, Doors, Floors, Ceilings, Plats, Lights, Switches, Teleport, 
         self.init_switches()
         self.init_specials()
         self.rng = Random()
+        self.events = []                # the event log (events.py)
         self.leveltime = 0
         self.gamemode, self.gameversion = gamemode, gameversion
         self.deathmatch = 0

@@ -1,4 +1,6 @@
 """p_pspr.c's port (``Weapons``) against results worked out by hand from the C code."""
+from wallbsp.doom.tables import DOOM
+from wallbsp.game.playsim.game import bind_tables
 from wallbsp.game.playsim.structs import BT_ATTACK, COMMERCIAL, Mobj, Player, PST_DEAD
 from wallbsp.game.playsim.weaponfire import WeaponFire
 from wallbsp.game.playsim.weapons import PS_FLASH, PS_WEAPON, WEAPONBOTTOM, WEAPONTOP, \
@@ -25,6 +27,7 @@ class Stub(Weapons, WeaponFire):
     """Weapons with the other modules' functions recorded instead of run."""
 
     def __init__(self, rng=(), targets=()):
+        bind_tables(self, DOOM)
         self.init_weapons()
         self.gamemode = COMMERCIAL
         self.leveltime = 0

@@ -19,7 +19,6 @@ from wallbsp.assets.wad import wad_bytes
 from wallbsp.camera import Camera
 from wallbsp.render import render
 from wallbsp.render.frame import KIND_FLOOR, KIND_WALL
-from wallbsp.scene.queries import floor_z
 from wallbsp.scene.state import WorldState
 
 RUNS = {"flat": [("NUKAGE1", "NUKAGE3"), ("FWATER1", "FWATER4"), ("SWATER1", "SWATER4"),
@@ -77,7 +76,8 @@ def doom_translation(path, tic: int) -> dict:
 def e1m1(freedoom_cache):
     wad = freedoom("freedoom1.wad")
     tree = freedoom_cache.tree("freedoom1.wad", "E1M1")
-    camera = Camera(1400, 900, floor_z(tree, 1400, 900) + 41, 30)     # the nukage pit
+    floor = tree.level.sectors[tree.locate(1400, 900)].floor
+    camera = Camera(1400, 900, floor + 41, 30)                       # the nukage pit
     return wad, tree, camera
 
 

@@ -70,6 +70,20 @@ def test_every_scenario_reproduces_from_its_seed(env_id):
         assert np.array_equal(x[0], y[0]) and x[1:4] == y[1:4] and np.array_equal(x[4], y[4])
 
 
+@pytest.mark.parametrize("env_id", sorted(SCENARIOS))
+def test_no_method_of_the_play_is_replaced(env_id):
+    """A scenario reads the play's event log and sets the play's own rules: after its
+    episode has begun and run, no attribute of the play hides a method of its class."""
+    needs_maps(env_id)
+    env = make(env_id, observations=("gamevars",))
+    env.reset(seed=0)
+    env.action_space.seed(0)
+    for _ in range(20):
+        env.step(env.action_space.sample())
+    play = env.world.play
+    assert [n for n in vars(play) if callable(getattr(type(play), n, None))] == []
+
+
 def test_scenarios_run_in_the_vector_env():
     envs = wallbsp.envs.make_vec("wallbsp/DefendTheCenter-v0", 2, workers=1, **SMALL)
     try:

@@ -22,6 +22,7 @@ from pathlib import Path
 
 import pytest
 
+from wallbsp.doom.tables import DOOM as DOOM_TABLES
 from wallbsp.doom import info
 from wallbsp.doom.fixed import FINESINE, point_to_angle2
 from wallbsp.sound import SoundSystem
@@ -346,6 +347,7 @@ def test_headless_clock_frees_a_channel_when_its_sound_ends():
     class FakePlay:
         gametic, leveltime, gamemap, gameepisode, consoleplayer = 10, 5, 1, 1, 0
         sectors = []
+        tables = DOOM_TABLES
 
         class rng:
             m_random = staticmethod(lambda: 0)

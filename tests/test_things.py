@@ -4,10 +4,9 @@ import pytest
 from game_levels import LENGTH, WIDTH, corridor, room
 
 from wallbsp import compile_level
-from wallbsp.level.model import Thing, ThingType
+from wallbsp.level.model import Thing
 from wallbsp.scene.things import (SPRITE_MARGIN, SPRITE_REACH, Things, level_things,
     locate_leaves, spawned_at)
-from wallbsp.scene.thingtypes import SOLID, SPECIAL
 from wallbsp.scene.state import WorldState
 
 HANGING = 63          # twitching hanging victim (not solid): hangs from the ceiling, height 68
@@ -134,53 +133,6 @@ def test_subtree_boxes_hold_every_drawn_thing_and_follow_moves():
     assert (things.subtree_boxes()[:, :2] <= tree.node_bbox[:, :2]).all()
     things.move(1, 200, 100)
     assert held(1)
-
-
-def every_thing_overlapping(things, x, y, radius, flags):
-    """DOOM's PIT_CheckThing box test over every thing, for comparison with the blockmap."""
-    reach = things.radius + radius
-    return np.flatnonzero((np.abs(things.x - x) < reach) & (np.abs(things.y - y) < reach)
-                          & things.alive & ((things.flags & flags) != 0)).tolist()
-
-
-def test_overlapping_finds_what_a_scan_of_every_thing_finds_across_changes():
-    """The blockmap answers as a test of every box would, for small and wide queries,
-    things wider than a cell, odd input, and after things are added, moved and removed."""
-    giant = 9000                              # a level's own, solid, wider than 64 cells
-    things = Things(three_rooms(), own_types={giant: ThingType("GIAN", 600, 16, True)})
-    rng = np.random.default_rng(11)
-    things.add(rng.uniform(0, 3 * LENGTH, 120), rng.uniform(0, WIDTH, 120),
-               rng.choice([BARREL, CLIP, STIMPACK], 120, p=[0.5, 0.2, 0.3]))
-    things.add(LENGTH, WIDTH / 2, giant)
-    queries = [(float(x), float(y), float(r)) for x, y, r in zip(
-        rng.uniform(-100, 3 * LENGTH + 100, 60), rng.uniform(-100, WIDTH + 100, 60),
-        rng.choice([0.0, 16.0, 34.0, 200.0, 5000.0], 60))]
-    queries += [(128.0 - 26.0, 64.0, 16.0), (np.nan, 0.0, 16.0), (0.0, 0.0, np.inf)]
-    moved = rng.choice(len(things), 30, replace=False)
-
-    def agree():
-        for flags in (SOLID, SPECIAL, SOLID | SPECIAL):
-            for x, y, r in queries:
-                assert things.overlapping(x, y, r, flags).tolist() == \
-                    every_thing_overlapping(things, x, y, r, flags), (flags, x, y, r)
-
-    agree()
-    things.move(moved, things.x[moved] + rng.uniform(-150, 150, 30), things.y[moved])
-    agree()
-    things.remove(moved[:10])
-    things.add(things.x[moved[:5]], things.y[moved[:5]], BARREL)
-    agree()
-
-
-def test_solid_sides_are_the_box_sides_of_the_solid_things_in_reach():
-    things = level_things(three_rooms([Thing(64, 64, 0, BARREL, 7), Thing(100, 64, 0, CLIP, 7),
-                                       Thing(300, 64, 0, BARREL, 7)]))
-    assert things.solid_sides(80, 64, 20) == things.box_sides([0])   # the clip is not solid
-    assert things.solid_sides(200, 64, 20) == []
-    things.move(2, 90, 64)                                # a solid thing comes near
-    assert things.solid_sides(80, 64, 20) == things.box_sides([0, 2])
-    things.remove(0)
-    assert things.solid_sides(80, 64, 20) == things.box_sides([2])
 
 
 def test_subtree_boxes_are_the_node_boxes_grown_by_each_things_reach():

@@ -2,9 +2,9 @@
 gymnasium's SyncVectorEnv gives on the same seeds, asynchronous batches, workers that
 raise or die, nothing left in /dev/shm.  Small frames and small generated levels, and the
 kernels compiled before the workers fork, keep it to seconds."""
+import multiprocessing
 import os
 import signal
-import time
 
 import numpy as np
 import pytest
@@ -197,32 +197,39 @@ def test_send_recv_returns_batches_of_finished_environments(workers, no_leak):
 
 
 def test_a_slow_environment_does_not_hold_the_batch(no_leak):
-    envs = make_vec(SlowEnv, 4, workers=2, batch_size=2, delay=0.3)
+    gate = multiprocessing.Event()                   # env 0's step waits until it opens
+    envs = make_vec(SlowEnv, 4, workers=2, batch_size=2, gate=gate)
     try:
         envs.async_reset(seed=0)                     # env 0 (seed 0) is slow, on worker 0
         ids = []
-        while 0 not in ids:                          # until env 0 is asleep in a step
+        while 0 not in ids:                          # until env 0 is held in a step
             ids = envs.recv()[4]["env_id"]
             envs.send(np.zeros(2, np.int64), ids)
-        started = time.perf_counter()
         for _ in range(5):                           # the others go on meanwhile
             ids = envs.recv()[4]["env_id"]
             envs.send(np.zeros(2, np.int64), ids)
             assert 0 not in ids
-        assert time.perf_counter() - started < 0.25
+        gate.set()
+        while 0 not in ids:                          # and env 0 comes back once let go
+            ids = envs.recv()[4]["env_id"]
+            envs.send(np.zeros(2, np.int64), ids)
     finally:
+        gate.set()
         envs.close()
 
 
 class SlowEnv(gym.Env):
-    """A tiny environment; the one reset with seed ``slow_seed`` sleeps ``delay`` a step,
-    the one with ``bad_seed`` raises on its second step, ``exit_seed`` dies there."""
+    """A tiny environment; the one reset with seed ``slow_seed`` says it is in a step
+    (``entered.set()``) and waits there until ``gate`` opens, the one with ``bad_seed``
+    raises on its second step, ``exit_seed`` dies there, ``hang_seed`` never returns from
+    it.  ``gate`` and ``entered``: multiprocessing events, shared with forked workers."""
 
     observation_space = gym.spaces.Box(0, 1, (2,), np.float32)
     action_space = gym.spaces.Discrete(2)
 
-    def __init__(self, delay=0.0, slow_seed=0, bad_seed=None, exit_seed=None, hang_seed=None):
-        self.delay, self.slow_seed = delay, slow_seed
+    def __init__(self, gate=None, entered=None, slow_seed=0, bad_seed=None, exit_seed=None,
+                 hang_seed=None):
+        self.gate, self.entered, self.slow_seed = gate, entered, slow_seed
         self.bad_seed, self.exit_seed, self.hang_seed = bad_seed, exit_seed, hang_seed
         self.seed_, self.t = None, 0
 
@@ -236,13 +243,16 @@ class SlowEnv(gym.Env):
     def step(self, action):
         self.t += 1
         if self.seed_ == self.slow_seed:
-            time.sleep(self.delay)
+            if self.entered is not None:
+                self.entered.set()
+            if self.gate is not None:
+                self.gate.wait()
         if self.t == 2 and self.seed_ == self.bad_seed:
             raise ValueError("the bad environment")
         if self.t == 2 and self.seed_ == self.exit_seed:
             os._exit(3)
         if self.t == 2 and self.seed_ == self.hang_seed:
-            time.sleep(3600)
+            multiprocessing.Event().wait()           # nobody sets it: hangs
         return np.full(2, self.t / 10, np.float32), 1.0, False, False, {"t": self.t}
 
 
@@ -270,14 +280,20 @@ def test_a_worker_that_dies_is_one_error_naming_the_environment(no_leak):
 
 
 def test_a_killed_worker_is_reported_and_the_others_shut_down(no_leak):
-    envs = make_vec(SlowEnv, 4, workers=2, delay=0.5, slow_seed=10)
-    envs.reset(seed=10)
-    envs.send(np.zeros(4, np.int64))                 # env 0 sleeps in worker 0
-    time.sleep(0.1)
-    os.kill(envs.processes[0].pid, signal.SIGKILL)
-    with pytest.raises(WorkerError, match=r"worker 0 .*killed by SIGKILL.*env 0 \(seed 10\)"):
-        envs.recv()
-    assert all(p.exitcode is not None for p in envs.processes)
+    # the gate is never opened: setting an event a killed process waited on would hang
+    gate, entered = multiprocessing.Event(), multiprocessing.Event()
+    envs = make_vec(SlowEnv, 4, workers=2, gate=gate, entered=entered, slow_seed=10)
+    try:
+        envs.reset(seed=10)
+        envs.send(np.zeros(4, np.int64))             # env 0 is held in worker 0's step
+        assert entered.wait(600)                     # (a bound only for a broken pool)
+        os.kill(envs.processes[0].pid, signal.SIGKILL)
+        with pytest.raises(WorkerError,
+                           match=r"worker 0 .*killed by SIGKILL.*env 0 \(seed 10\)"):
+            envs.recv()
+        assert all(p.exitcode is not None for p in envs.processes)
+    finally:
+        envs.close()
 
 
 def test_close_returns_when_a_worker_hangs(monkeypatch, no_leak):
@@ -286,10 +302,9 @@ def test_close_returns_when_a_worker_hangs(monkeypatch, no_leak):
     envs.reset(seed=0)
     envs.step(np.zeros(2, np.int64))
     envs.send(np.zeros(2, np.int64))                 # env 1 never comes back
-    started = time.perf_counter()
     envs.close()
-    assert time.perf_counter() - started < 5
     assert all(p.exitcode is not None for p in envs.processes)
+    assert envs.processes[1].exitcode < 0            # stopped by a signal: not waited for
 
 
 def test_an_environment_that_cannot_be_made_is_named(no_leak):

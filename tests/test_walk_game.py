@@ -233,7 +233,7 @@ def test_a_key_file_rebinds_and_takes_the_key_from_its_default_action(opened, tm
     x = walk.player.x
     pygame.event.post(pygame.event.Event(pygame.KEYDOWN, key=pygame.K_t, mod=0))
     frames(walk, 4)
-    assert walk.player.x > x and walk.show_things          # t walks, no longer a toggle
+    assert walk.player.x > x and walk.map_cheat == 0       # t walks, no longer a toggle
     pygame.event.post(pygame.event.Event(pygame.KEYDOWN, key=pygame.K_w, mod=0))
     frames(walk, 1)
     assert pygame.K_w not in controls.bindings(walk).forward
@@ -292,7 +292,7 @@ class Menu:
 
     def key(self, walk, k):
         self.keys.append(k)
-        return k != pygame.K_F1           # lets F1 through to the game
+        return k != pygame.K_r            # lets R through to the game
 
     def draw(self, walk, picture):
         self.drawn += 1
@@ -303,10 +303,10 @@ def test_an_overlay_takes_keys_first_stops_the_tics_and_draws(opened):
     walk = opened(medikit_tree())
     walk.overlay = menu = Menu()
     key(pygame.K_ESCAPE)
-    key(pygame.K_F1)
+    key(pygame.K_r)
     frames(walk, 5)
     assert walk.running and walk.show_readout and walk.world.tic_count == 0
-    assert menu.keys == [pygame.K_ESCAPE, pygame.K_F1] and menu.drawn == 5
+    assert menu.keys == [pygame.K_ESCAPE, pygame.K_r] and menu.drawn == 5
     assert (walk.picture[:4, :4] == (255, 0, 255)).all()
     walk.overlay = None
     frames(walk, 2)
@@ -332,12 +332,21 @@ def test_the_automap_colours_lines_as_doom_does():
     kinds = line_kinds(level, world.state.floor, world.state.ceiling, flags)
     assert kinds[wall_between(level, 2)] == -1 and named(kinds[wall_between(level, 1)]) == "wall"
     same = np.zeros(len(level.sectors))
-    assert named(line_kinds(level, same, same + 128)[wall_between(level, 0)]) == "two_sided"
+    # a two-sided line without a height change: only the cheat draws it (grey)
+    assert line_kinds(level, same, same + 128)[wall_between(level, 0)] == -1
+    assert named(line_kinds(level, same, same + 128, cheating=1)[wall_between(level, 0)]) \
+        == "two_sided"
     seen = np.zeros(len(level.walls), bool)
     seen[wall_between(level, 0)] = True
     kinds = line_kinds(level, world.state.floor, world.state.ceiling, flags, seen)
     assert named(kinds[wall_between(level, 0)]) == "floor_change"
-    assert named(kinds[one_sided[0]]) == "unseen" and kinds[wall_between(level, 2)] == -1
+    assert kinds[one_sided[0]] == -1 and kinds[wall_between(level, 2)] == -1   # not seen
+    mapped = line_kinds(level, world.state.floor, world.state.ceiling, flags, seen,
+                        allmap=True)                                   # the computer map
+    assert named(mapped[one_sided[0]]) == "unseen" and mapped[wall_between(level, 2)] == -1
+    cheat = line_kinds(level, world.state.floor, world.state.ceiling, flags, seen, cheating=1)
+    assert named(cheat[one_sided[0]]) == "wall"                       # IDDT: every line
+    assert named(cheat[wall_between(level, 2)]) == "ceiling_change"   # the hidden one too
 
 
 def test_the_walls_drawn_are_noted_as_seen_and_the_hidden_ones_are_not(opened):
@@ -384,8 +393,10 @@ def test_the_automap_draws_the_lines_above_the_status_bar(opened):
     colours = {tuple(c) for c in shown[:, :above].reshape(-1, 3)}
     assert COLOURS["wall"] in colours and COLOURS["floor_change"] in colours
     assert COLOURS["player"] in colours
-    # the far side of the shut door (a ceiling change) is not seen yet: grey
-    assert COLOURS["unseen"] in colours and COLOURS["ceiling_change"] not in colours
+    # the far side of the shut door (a ceiling change) is not seen yet: not drawn (no
+    # computer map), nor the things (no IDDT)
+    assert COLOURS["unseen"] not in colours and COLOURS["ceiling_change"] not in colours
+    assert COLOURS["thing"] not in colours
     assert not np.array_equal(shown[:, above:], np.zeros_like(shown[:, above:]))  # the bar
 
 
@@ -410,6 +421,7 @@ def test_with_the_automap_up_minus_and_equals_zoom_it_around_the_player(opened):
 
 def test_the_automaps_things_stay_off_the_status_bar(opened):
     walk = automap_up(opened, at=(200, 100, 90))
+    walk.map_cheat = 2                              # IDDT twice: the things on the map
     frames(walk, 1)
     size = hud.map_area(walk)
     above = size[1]

@@ -82,6 +82,7 @@ def test_things_come_and_go_and_are_drawn_in_their_current_frame(freedoom_cache)
     before = len(world.things)
     for i in range(60):               # the pistol comes up (DOOM ignores fire meanwhile)
         world.tic(fire=20 <= i < 30)
+        assert world.state.things is drawn          # the same arrays, read from the play now
         mo = drawn.mobj(zombie)
         if mo is not None:
             st = info.STATES[mo.state]
@@ -167,6 +168,7 @@ def test_each_tics_state_is_read_from_the_play(freedoom_cache):
     for i in range(70):
         version = state.version
         world.tic(fire=20 <= i < 40, forward=1 if i > 45 else 0, use=i == 60)
+        assert world.state is state                 # read from the play when asked for
         now = [(s.floorheight, s.ceilingheight) for s in world.play.sectors]
         assert (state.version != version) == (now != heights)
         heights = now

@@ -19,6 +19,7 @@ BENCHMARKS = {
     "world": ("world_targets", "the world's tic and its frame against the static tree"),
     "compile": ("compile_targets", "compile time and splits on generated and Freedoom maps"),
     "builders": ("builders", "our compiler beside other node builders on the Freedoom maps"),
+    "nodes": ("nodes", "wallbsp nodes beside zdbsp, glbsp and the shipped nodes, whole IWADs"),
     "table1": ("table1", "the lecture's Table 1: splits by candidate count"),
     "gordon_chen": ("gordon_chen", "front to back against the painter's, as Gordon & Chen"),
     "memory": ("memory", "peak memory of the largest level's first frame"),
@@ -27,10 +28,16 @@ BENCHMARKS = {
     "env": ("env_throughput", "environments' steps/s, vector envs, reset time"),
     "vector": ("vector", "make_vec's batched vector env against one env and gymnasium's"),
     "playsim": ("playsim", "DOOM's play simulation: demo playback tics/s against Chocolate Doom"),
+    "playsim_baseline": ("playsim_baseline", "demo playback against a baseline checkout, one process, interleaved"),
     "scenarios": ("scenarios", "ViZDoom's scenarios beside ViZDoom: steps/s, a random agent's returns"),
     "multiagent": ("multiagent", "several agents in one world: steps/s for 2 and 4 agents"),
     "hud": ("hud", "the status bar, weapon, messages and flashes: CPU ms a frame and a tic"),
     "game": ("game", "the walkthrough as a game on E1M1 under X: frames/s, HUD and sound ms"),
+    "checks": ("input_checks", "env steps/s with issue 34's input checks against a baseline, one process"),
+    "newcomer": ("newcomer", "a scripted newcomer on the bundled level 1: runs alive at skill 2"),
+    "startup": ("startup", "wallbsp walk WAD from a cold kernel cache: seconds to window, to play"),
+    "editor": ("editor", "the editor's window on MAP12: redraw and preview fps, pick ms"),
+    "edit": ("editmodel", "the editor's model on MAP12: picks, commands, compile beside peers"),
 }
 
 

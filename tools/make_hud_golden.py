@@ -67,8 +67,9 @@ def fake_play(wad: str, light: int = 160, **fields):
         setattr(player, key, value)
     sector = SimpleNamespace(lightlevel=light)
     player.mo = SimpleNamespace(x=0, y=0, angle=0, subsector=SimpleNamespace(sector=sector))
+    from wallbsp.doom.tables import DOOM
     return SimpleNamespace(players=[player], consoleplayer=0, netgame=False, deathmatch=0,
-                           rng=Random(), wad_path=WADS[wad], wad_files=())
+                           rng=Random(), wad_path=WADS[wad], wad_files=(), tables=DOOM)
 
 
 def armed(play, weapon: int, flash: bool):

@@ -25,8 +25,8 @@ _PUBLIC = {
     "Frame": "wallbsp.render",
     "World": "wallbsp.game.world",
 }
-# modules reached by their earlier, flat names (``from wallbsp import levelio, queries``)
-_MODULES = {"levelio": "wallbsp.level.io", "queries": "wallbsp.scene.queries"}
+# modules reached by their earlier, flat names (``from wallbsp import levelio``)
+_MODULES = {"levelio": "wallbsp.level.io"}
 
 __all__ = sorted([*_PUBLIC, "render"])
 __version__ = "0.1.0"

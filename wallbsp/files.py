@@ -39,7 +39,7 @@ def read_input(path, limit: int) -> bytes:
         size = os.fstat(f.fileno()).st_size
         if size > limit:
             raise InputError(path, _too_big(size, limit))
-        return _read_capped(f, path, limit)
+        return _read_capped(f, path, limit, size)
 
 
 def open_regular(path):
@@ -77,9 +77,13 @@ def _check_regular(path, mode: int) -> None:
     raise InputError(path, f"is {kind}, not a regular file; refusing to read it")
 
 
-def _read_capped(stream, path, limit: int) -> bytes:
+def _read_capped(stream, path, limit: int, size: int | None = None) -> bytes:
+    """At most ``limit`` bytes of ``stream``; ``size``: what the file holds, so that no
+    buffer of ``limit`` bytes is made for a small file (a read of n makes n first)."""
     try:
-        data = stream.read(limit + 1)
+        data = stream.read(limit + 1 if size is None else min(size, limit) + 1)
+        if data is not None and size is not None and size < len(data) <= limit:
+            data += stream.read(limit + 1 - len(data))      # it grew since the stat
     except OSError as err:
         raise InputError(path, f"cannot read: {err.strerror or err}") from None
     if data is None:        # a non-blocking read with nothing there yet

@@ -1,7 +1,7 @@
 """Compiled kernels: numba's ``njit`` for the few loops that numpy cannot batch cheaply.
 
 A frame is a few hundred small batches; at 160×120 numpy's fixed cost per call, not the
-pixels, sets the frame rate.  The hot stages (the renderer's stages, collision, the play
+pixels, sets the frame rate.  The hot stages (the renderer's stages, the play
 simulation's walks down the nodes, the screen's colour changes) are therefore compiled
 kernels, and they are the only implementation: numba is a dependency, and there is no
 switch to a numpy or Python twin.  Independent references the tests compare with live
@@ -21,8 +21,7 @@ import os
 import threading
 from pathlib import Path
 
-__all__ = ["kernel", "step_kernel", "LazyKernel", "jitable", "compiled_as",
-           "register_jitables"]
+__all__ = ["kernel", "step_kernel", "LazyKernel", "compiled_signatures"]
 
 _STATE = {"numba": None}
 _LAZY: list = []
@@ -32,10 +31,24 @@ _LOADING = threading.Lock()             # two threads' first calls load numba on
 _INLINE = "_wallbsp_inline"         # a step function's mark: compiled into its callers
 
 
+_MADE: list = []         # every dispatcher made: what ``compiled_signatures`` counts
+
+
 def _jit(function):
     numba = _STATE["numba"]
     inline = "always" if getattr(function, _INLINE, False) else "never"
-    return numba.njit(cache=True, nogil=True, error_model="numpy", inline=inline)(function)
+    dispatcher = numba.njit(cache=True, nogil=True, error_model="numpy",
+                            inline=inline)(function)
+    _MADE.append(dispatcher)
+    return dispatcher
+
+
+def compiled_signatures() -> dict:
+    """``kernel name -> signatures compiled (or loaded from the cache) so far`` in this
+    process: a kernel called with new argument types since shows as a new signature (the
+    game's warm-up is checked so: no new one during play)."""
+    return {f"{d.py_func.__module__}.{d.py_func.__qualname__}": len(d.signatures)
+            for d in _MADE}
 
 
 class LazyKernel:
@@ -126,39 +139,3 @@ def step_kernel(function):
     cost — a tenth of a frame's fill, measured — for a little more compile time."""
     setattr(function, _INLINE, True)
     return kernel(function)
-
-
-# Plain functions that numba may also compile inside a kernel: ``register_jitable``, done
-# only when a kernel that calls them is about to be built.  numba's own
-# ``register_jitable`` and ``overload`` need numba imported, so functions are marked here
-# instead and registered by ``register_jitables()``, which whoever makes such a kernel
-# calls first (``sim.collision``).
-_PENDING: list = []          # functions to register
-_OVERLOADS: list = []        # (Python function, what a kernel runs for it)
-
-
-def jitable(function):
-    """Mark ``function`` (in the subset of Python numba compiles) as callable from
-    kernels; it is returned unchanged, for the interpreter."""
-    _PENDING.append(function)
-    return function
-
-
-def compiled_as(python_function, choose) -> None:
-    """Inside a kernel, a call of ``python_function`` runs another function instead:
-    ``choose``, with the same parameters (numba passes their types), returns it (a
-    ``jitable``, same parameters again).  numba's ``overload``."""
-    _OVERLOADS.append((python_function, choose))
-
-
-def register_jitables() -> None:
-    """Register with numba what is marked (importing numba the first time)."""
-    if not (_PENDING or _OVERLOADS):
-        return
-    from numba.extending import overload, register_jitable
-    for function in _PENDING:
-        register_jitable(function)
-    for python_function, choose in _OVERLOADS:
-        overload(python_function, jit_options={"error_model": "numpy"})(choose)
-    _PENDING.clear()
-    _OVERLOADS.clear()

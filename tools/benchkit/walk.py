@@ -1,7 +1,8 @@
 """Where the benchmarks stand a camera, and the scripted walk through a map: a ``Walker``
-(a player circle of the collision queries, ``wallbsp.scene.queries``), stood at a spot or
-stepped with ``walk_by``.  Not the game's player (DOOM's play simulation): the benchmarks'
-camera paths stay the same whatever the game does.
+(a player-sized probe of the play's map, ``World.move``: DOOM's own P_CheckPosition and
+step rules on a ``World`` of the tree that never ticks, so its monsters stand where they
+were placed), stood at a spot or stepped with ``walk_by``.  Not the game's player: the
+benchmarks' camera paths stay the same whatever the game does.
 
 The walk starts at the player start; each frame is a turn, then a step through the game's
 collision, the eye EYE_HEIGHT above the floor the player stands on. When a wall is near
@@ -13,14 +14,15 @@ from __future__ import annotations
 
 import dataclasses
 import math
+import weakref
 
 import numpy as np
 
-from wallbsp import Camera
+from wallbsp import Camera, World
 from wallbsp.camera import EYE_HEIGHT as EYE
-from wallbsp.scene.queries import move, standing_heights
 
 CEILING_GAP = 4.0                     # DOOM keeps the eye this far under the ceiling
+_WORLDS: "weakref.WeakKeyDictionary" = weakref.WeakKeyDictionary()
 
 
 @dataclasses.dataclass
@@ -41,10 +43,17 @@ class Walker:
         return Camera(self.x, self.y, self.eye, self.angle, fov)
 
 
+def world_of(tree) -> World:
+    """The tree's level in a ``World`` that is asked questions and never stepped."""
+    world = _WORLDS.get(tree)
+    if world is None:
+        world = _WORLDS[tree] = World(tree, 3)
+    return world
+
+
 def _stand(tree, walker: Walker) -> Walker:
-    heights = standing_heights(tree, walker.x, walker.y)
-    if heights is not None:             # outside the map: keep the last
-        walker.floor, walker.ceiling = heights
+    if tree.locate(walker.x, walker.y) is not None:     # outside the map: keep the last
+        walker.floor, walker.ceiling = world_of(tree).heights(walker.x, walker.y)
     walker.z = walker.floor
     return walker
 
@@ -56,8 +65,10 @@ def spawn_player(tree, x, y, angle) -> Walker:
 
 def walk_by(tree, walker: Walker, dx, dy) -> None:
     """Move ``walker`` by (dx, dy) through collision, feet on the floor there at once."""
-    walker.x, walker.y = move(tree, walker.x, walker.y, dx, dy, walker.z)
+    walker.x, walker.y, _ = world_of(tree).move(walker.x, walker.y, dx, dy, walker.z)
     _stand(tree, walker)
+
+
 # The walk: (frames, map units forward per frame, degrees turned per frame). DOOM walks at
 # about 8 units a tic; one full turn on the spot looks round a room, the gentle turns sweep
 # the view while walking. 300 frames in all.

@@ -1,9 +1,9 @@
 """The walkthrough's automap in DOOM's colours (``am_map.c``): one-sided walls red, a
 floor-height change brown, a ceiling change yellow, two-sided walls without a change grey,
 teleporter lines dark red, secret doors red as walls (DOOM hides them), lines flagged "never
-on the map" not drawn, lines not seen yet darker grey (as the computer map shows them); the
-things as green thin triangles pointing the way they face (the cheat view of IDDT), the
-player as DOOM's white arrow.  ``SeenLines`` keeps which walls the player has seen (DOOM's
+on the map" not drawn; only the lines seen so far, and the others grey with the computer
+map; with IDDT every line, and the second time the things as green thin triangles pointing
+the way they face; the player as DOOM's white arrow.  ``SeenLines`` keeps which walls the player has seen (DOOM's
 ``ML_MAPPED``, set as the renderer draws a line).
 Colours are PLAYPAL's (DOOM's palette indices below), heights the world's now, so a door
 that opens changes its line's colour.  Drawn with pygame on off-screen surfaces (``MapView``
@@ -37,10 +37,16 @@ MIN_PIXELS = 3.0                          # a thing's triangle is never smaller 
 ARROW_PIXELS = 10.0                       # nor the player's arrow (the map is fitted whole)
 
 
-def line_kinds(level, floor, ceiling, flags=None, seen=None) -> np.ndarray:
+def line_kinds(level, floor, ceiling, flags=None, seen=None, cheating=0,
+               allmap=False) -> np.ndarray:
     """AM_drawWalls' choice for every wall of ``level`` (index into ``KINDS``, -1: not
     drawn) from the sectors' heights now (``floor``, ``ceiling``: arrays by sector), the
-    lines' DOOM ``flags`` (None: no flags) and which walls were ``seen`` (None: all)."""
+    lines' DOOM ``flags`` (None: no flags), which walls were ``seen`` (``ML_MAPPED``;
+    None: all), the IDDT level ``cheating`` (0-2) and the computer map (``allmap``).
+
+    DOOM's rules: a line not mapped is drawn only with the computer map (grey) or the
+    cheat; a secret line is drawn as a one-sided wall; a two-sided line with no height
+    change only with the cheat; lines flagged "never on the map" not without it."""
     walls = level.walls
     front = np.array([w.front for w in walls], np.int64)
     back = np.array([-1 if w.back is None else w.back for w in walls], np.int64)
@@ -48,15 +54,19 @@ def line_kinds(level, floor, ceiling, flags=None, seen=None) -> np.ndarray:
     flags = np.zeros(len(walls), np.int64) if flags is None else np.asarray(flags, np.int64)
     two = back >= 0
     b = np.where(two, back, 0)
-    kind = np.full(len(walls), KINDS.index("two_sided"))
+    kind = np.full(len(walls), KINDS.index("two_sided") if cheating else -1)
     kind[ceiling[front] != ceiling[b]] = KINDS.index("ceiling_change")
     kind[floor[front] != floor[b]] = KINDS.index("floor_change")
     kind[(flags & ML_SECRET) != 0] = KINDS.index("wall")
     kind[special == TELEPORT] = KINDS.index("teleporter")
     kind[~two] = KINDS.index("wall")
-    if seen is not None:
-        kind[~np.asarray(seen, bool)] = KINDS.index("unseen")
-    kind[(flags & ML_DONTDRAW) != 0] = -1
+    hidden = (flags & ML_DONTDRAW) != 0
+    if not cheating:
+        kind[hidden] = -1
+    if seen is not None and not cheating:
+        unseen = ~np.asarray(seen, bool)
+        kind[unseen] = KINDS.index("unseen") if allmap else -1
+        kind[unseen & hidden] = -1
     return kind
 
 

@@ -13,6 +13,7 @@ import time
 from wallbsp.app.cliargs import UsageError, build_parser
 from wallbsp.level.model import LevelError
 from wallbsp.app.outputs import OutputError, check_outputs, write_outputs
+from wallbsp.app.nodescli import cmd_export, cmd_nodes
 
 
 # -- loading what the user named ------------------------------------------------------------
@@ -142,7 +143,7 @@ def cmd_render(args):
         from wallbsp.app.hudframe import hud_frame, raise_weapon
         from wallbsp.game.world import World
         world = World(tree)
-        raise_weapon(world.play.players[world.play.consoleplayer])
+        raise_weapon(world.play, world.play.players[world.play.consoleplayer])
         rgb, frame = hud_frame(world, camera_for(tree, args), width, height, **options)
     else:
         frame = render(tree, camera_for(tree, args), width, height, **options)
@@ -158,30 +159,8 @@ def cmd_render(args):
 
 
 def cmd_walk(args):
-    from wallbsp.app.config import KeyConfigError, read_bindings
-    from wallbsp.app.walkthrough import NoDisplayError, check_display, run_walkthrough
-    from wallbsp.game.demo import demo_for, save_demo
-    if args.level is None:
-        from importlib.resources import files
-        args.level = str(files("wallbsp") / "data" / "game.json")
-    check_outputs("walk", [args.screenshot, args.record], [args.level])
-    try:
-        keys = read_bindings(args.keys)
-        if args.frames is None:
-            check_display()      # before the level is compiled: that may take a while
-        tree = load_any(args.level, args, strict=args.strict)
-        demo = demo_for(tree.level, args.skill) if args.record else None
-        summary = run_walkthrough(tree, size=args.size, frames=args.frames, turn=args.turn,
-                                  screenshot=args.screenshot, max_fps=args.max_fps, demo=demo,
-                                  next_level=_next_level(args.level, args), skill=args.skill,
-                                  sound=not args.nosound, music=not args.nomusic, keys=keys,
-                                  saves=args.saves)
-    except (NoDisplayError, KeyConfigError) as err:
-        raise UsageError(str(err)) from None
-    if demo is not None:
-        save_demo(demo, args.record)
-    if args.frames is not None:
-        print(summary)
+    from wallbsp.app.walkgame import walk_command
+    walk_command(args, load_any, _next_level)
 
 
 def _next_level(spec: str, args):
@@ -239,15 +218,31 @@ def cmd_import_wad(args):
     print(f"{args.output}: {len(level.walls)} walls, {len(level.sectors)} sectors")
 
 
+def cmd_edit(args):
+    """The editor's window lives in ``wallbsp.editor`` (a layer above the app), so it is
+    reached by name."""
+    import importlib
+    from wallbsp.app.walkthrough import NoDisplayError, check_display
+    try:
+        if args.frames is None:
+            check_display()
+    except NoDisplayError as err:
+        raise UsageError(str(err).replace("walk", "edit", 1)) from None
+    importlib.import_module("wallbsp.editor.window").run_editor(args.level, args.size,
+                                                                args.frames)
+
+
 # -- the commands by name (their parser: cliargs) -------------------------------------------
 COMMANDS = {"walk": cmd_walk, "play": cmd_play, "compile": cmd_compile, "render": cmd_render,
-            "stats": cmd_stats, "draw": cmd_draw, "import-wad": cmd_import_wad}
+            "stats": cmd_stats, "draw": cmd_draw, "import-wad": cmd_import_wad,
+            "edit": cmd_edit, "nodes": cmd_nodes, "export": cmd_export}
 
 
 def main(argv=None) -> int:
     try:
         args = build_parser(COMMANDS).parse_args(argv)
-        args.func(args)
+        status = args.func(args)          # a command may return its exit status
+
     except (UsageError, OutputError, LevelError) as err:   # TreeError is a LevelError too
         print(str(err), file=sys.stderr)
         return 2
@@ -259,4 +254,4 @@ def main(argv=None) -> int:
     except Exception as err:                         # noqa: BLE001 - the last resort line
         print(f"wallbsp: internal error: {type(err).__name__}: {err}", file=sys.stderr)
         return 1
-    return 0
+    return status or 0

@@ -118,9 +118,15 @@ def build_parser(commands) -> argparse.ArgumentParser:
     sub = parser.add_subparsers(dest="command", metavar="COMMAND", parser_class=_Parser)
     sub.required = True
 
-    p = sub.add_parser("walk", help="the pygame walkthrough")
+    from wallbsp.app.helpscreen import keys_text
+    p = sub.add_parser("walk", help="play: the bundled game, a level, or a DOOM WAD's game",
+                       description="Play. 'wallbsp walk' plays the bundled episode; "
+                       "'wallbsp walk WAD' starts a DOOM WAD's game as DOOM does (title, "
+                       "demos, menu: any key); 'wallbsp walk WAD:MAP' warps to a map.",
+                       epilog=keys_text(), formatter_class=argparse.RawDescriptionHelpFormatter)
     p.add_argument("level", nargs="?",
-                   help="level, tree or WAD:MAP (default: the bundled game level)")
+                   help="level, tree, WAD:MAP or a game folder (game.json; docs/modding.md) "
+                        "(default: the bundled game level)")
     p.add_argument("--size", type=_size, default=(320, 200), metavar="WxH",
                    help="internal resolution (default 320x200)")
     p.add_argument("--frames", type=_bounded(1, 10 ** 7, _integer, "a whole number"),
@@ -132,10 +138,18 @@ def build_parser(commands) -> argparse.ArgumentParser:
     p.add_argument("--max-fps", type=_bounded(1, 1000), default=None,
                    help="frame cap (default: none)")
     p.add_argument("--record", metavar="DEMO",
-                   help="write the inputs of every tic on the first level to this demo (JSON)")
+                   help="record a demo: DOOM's v1.9 .lmp with a WAD (what Chocolate Doom "
+                        "plays; the whole game from the map it starts on), else JSON (the "
+                        "first level's tics)")
+    p.add_argument("--playdemo", metavar="DEMO", help="with a WAD: play a v1.9 .lmp file or "
+                   "a lump such as DEMO1 in the window, with the status bar")
+    p.add_argument("--square-pixels", action="store_true", help="show the picture with "
+                   "square pixels (default: stretched to 4:3 as DOOM was seen)")
     p.add_argument("--skill", type=_bounded(1, 5, _integer, "a whole number"), default=3,
                    help="DOOM's skill, 1-5: which of the level's things are there (default 3)")
-    p.add_argument("--nosound", action="store_true", help="no sound effects")
+    p.add_argument("--nosound", action="store_true", help="no sound at all (the audio "
+                   "device is not opened)")
+    p.add_argument("--nosfx", action="store_true", help="no sound effects")
     p.add_argument("--nomusic", action="store_true", help="no music")
     p.add_argument("--keys", metavar="FILE", help="key bindings ('action = key, key' lines; "
                    "default ~/.config/wallbsp/keys.ini when it exists)")
@@ -207,4 +221,15 @@ def build_parser(commands) -> argparse.ArgumentParser:
     p.add_argument("map", help="map name, e.g. E1M1 or MAP01")
     p.add_argument("-o", "--output", required=True, metavar="LEVEL", help="level JSON to write")
     _finish(p, commands["import-wad"], build=False)
+
+    p = sub.add_parser("edit", help="the level editor (docs/editor.md)")
+    p.add_argument("level", nargs="?", help="level file or WAD:MAP (default: a new level)")
+    p.add_argument("--size", type=_size, default=(1280, 800), metavar="WxH",
+                   help="window size (default 1280x800)")
+    p.add_argument("--frames", type=_bounded(1, 10 ** 7, _integer, "a whole number"),
+                   default=None, help="run N frames headless and stop")
+    _finish(p, commands["edit"], build=False)
+
+    from wallbsp.app.nodescli import add_parsers      # nodes, export
+    add_parsers(sub, commands)
     return parser

@@ -15,6 +15,7 @@ from types import SimpleNamespace
 
 from wallbsp.app.config import DEFAULT_KEYS, key_codes
 from wallbsp.app.hud import say, texture_mode
+from wallbsp.app.helpscreen import toggle_help_screen
 from wallbsp.app.keys import MOUSE_FIRE
 from wallbsp.app.window import (next_resolution, on_resize, save_screenshot, toggle_fullscreen,
     toggle_mouse_grab)
@@ -69,15 +70,25 @@ def handle_events(walk, keys=True):
 
 def press(walk, key):
     """A key (or ``MOUSE_FIRE``) went down: the overlay's, else held, tapped, a command."""
+    if walk.help_screen:
+        walk.help_screen = False               # F1's screen: any key closes it
+        return
     if walk.overlay is not None and walk.overlay.key(walk, key):
         return
+    if walk.attract is not None and walk.overlay is not None:
+        import pygame                          # the attract loop: any key opens the menu
+        walk.overlay.key(walk, pygame.K_ESCAPE)
+        return
+    typing = False
+    if isinstance(key, int) and (48 <= key <= 57 or 97 <= key <= 122):
+        typing = walk.cheats.key(walk, chr(key)) is not None or walk.cheats.in_progress
     keys = bindings(walk)
     walk.held.add(key)
     walk.use_tapped |= key in keys.use
     walk.fire_tapped |= key in keys.fire
     walk.weapon_tapped = keys.weapons.get(key, walk.weapon_tapped)
     action = keys.actions.get(key)
-    if action is not None:
+    if action is not None and not typing:      # a cheat's letters move, but command nothing
         action(walk)
 
 
@@ -98,8 +109,9 @@ def _toggle(name):
 
 
 def _toggle_things(walk):
-    walk.show_things = not walk.show_things
-    say(walk, f"things on the map: {'on' if walk.show_things else 'off'}")
+    """The automap's things on or off: IDDT's second step, without typing it."""
+    walk.map_cheat = 0 if walk.map_cheat >= 2 else 2
+    say(walk, f"things on the map: {'on' if walk.map_cheat else 'off'}")
 
 
 def _toggle_textures(walk):
@@ -145,6 +157,7 @@ ACTIONS = {
     "map_lines": _toggle("show_partitions"), "map_things": _toggle_things,
     "textures": _toggle_textures, "readout": _toggle("show_readout"),
     "help": _toggle("show_help"), "painter": _toggle_order,
+    "help_screen": toggle_help_screen,
     "mouse_grab": toggle_mouse_grab, "fullscreen": toggle_fullscreen,
     "screenshot": save_screenshot,
     "resolution_down": lambda walk: next_resolution(walk, -1),

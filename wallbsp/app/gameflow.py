@@ -84,6 +84,7 @@ class GameFlow:
         self.following = None                   # the tree after the intermission
         self._clock = None
         self._game_of(walk.world)
+        walk.warp = self.warp
 
     def _game_of(self, world) -> None:
         """What the menu must know of the game: Doom II or not, how many episodes."""
@@ -150,6 +151,27 @@ class GameFlow:
         self.intermission = self.finale = None
         world.skill = event.skill           # start_level starts the new World at this skill
         self.start_level(walk, tree, f"New game: {tree.level.name}")
+
+    def warp(self, walk, first: int, second: int) -> bool:
+        """idclev: a new game on episode ``first`` map ``second`` (Doom II: map
+        ``first second``) at the same skill, if the WAD has that map."""
+        if walk.world.wad_map is None:          # our episode: idclev1N is its level N
+            level = getattr(walk.next_level, "level", None)
+            tree = level(second) if level is not None and first == 1 else None
+            if tree is None:
+                return False
+            self.intermission = self.finale = None
+            self.start_level(walk, tree, f"Entering {tree.level.name}")
+            return True
+        if self.tree_of is None:
+            return False
+        from wallbsp.level.wadmap import list_maps
+        name = (f"MAP{first}{second}" if self.menu.commercial else f"E{first}M{second}")
+        if name not in list_maps(walk.world.wad_map[0]):
+            return False
+        self.intermission = self.finale = None
+        self.start_level(walk, self.tree_of(name), f"Entering {name}")
+        return True
 
     def _save(self, walk, event) -> None:
         try:

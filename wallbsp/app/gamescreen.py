@@ -26,7 +26,7 @@ from wallbsp.screen.hud import view_size
 from wallbsp.screen.messages import paint_text
 from wallbsp.screen.remap import paste
 
-__all__ = ["NO_BLEND", "draw_frame", "view_camera", "render_view", "compose", "pause_picture"]
+__all__ = ["NO_BLEND", "draw_frame", "picture_rect", "view_camera", "render_view", "compose", "pause_picture"]
 
 NO_BLEND = 64.0           # map units: a jump this long (a teleport) is not interpolated
 SCREENWIDTH, SCREENHEIGHT = 320, 200
@@ -36,9 +36,26 @@ PAUSE_WIDTH = 68
 
 def draw_frame(walk, blend=1.0):
     import pygame
-    render_view(walk, blend)
-    draw_overlays(walk)
+    target = render_view(walk, blend)
+    window, walk.display = walk.display, target     # the overlays draw on the picture's part
+    try:
+        draw_overlays(walk)
+    finally:
+        walk.display = window
     pygame.display.flip()
+
+
+def picture_rect(walk) -> tuple:
+    """Where the picture goes in the window: as large as fits with DOOM's aspect
+    (``walk.aspect``: 4:3 as Chocolate Doom shows 320 x 200, or None for square pixels,
+    the picture's own), centred, black bars beside or above it."""
+    width, height = walk.display.get_size()
+    aspect = walk.aspect or walk.size[0] / walk.size[1]
+    if width > height * aspect:
+        w, h = max(1, round(height * aspect)), height
+    else:
+        w, h = width, max(1, round(width / aspect))
+    return ((width - w) // 2, (height - h) // 2, w, h)
 
 
 def view_camera(walk, blend=1.0) -> Camera:
@@ -54,13 +71,19 @@ def view_camera(walk, blend=1.0) -> Camera:
 
 
 def render_view(walk, blend=1.0):
-    """The picture at the internal resolution (``compose``); one blit_array, one scale."""
+    """The picture at the internal resolution (``compose``); one blit_array, one scale
+    into the window's part ``picture_rect`` (returned, a subsurface of the window)."""
     import pygame
     compose(walk, blend)
     if walk.surface is None or walk.surface.get_size() != walk.size:
         walk.surface = pygame.Surface(walk.size, 0, walk.display)   # the window's format
     pygame.surfarray.blit_array(walk.surface, walk.screen)
-    pygame.transform.scale(walk.surface, walk.display.get_size(), walk.display)
+    rect = picture_rect(walk)
+    if rect[2:] != walk.display.get_size():
+        walk.display.fill((0, 0, 0))
+    target = walk.display.subsurface(rect)
+    pygame.transform.scale(walk.surface, rect[2:], target)
+    return target
 
 
 def compose(walk, blend=1.0) -> np.ndarray:
@@ -81,6 +104,8 @@ def compose(walk, blend=1.0) -> np.ndarray:
     walk.hud.draw(walk.picture, walk.world.play)
     if walk.paused:
         draw_pause(walk.picture, walk.hud.art or art_for(walk.world.play), vh)
+    if getattr(walk, "attract", None) is not None:
+        walk.attract.draw(walk.picture)            # a title or credit page over it all
     if walk.overlay is not None and hasattr(walk.overlay, "draw"):
         walk.overlay.draw(walk, walk.picture)
     return walk.picture

@@ -17,12 +17,14 @@ from wallbsp.screen.hud import view_size
 __all__ = ["HELP", "HELP_SECONDS", "MESSAGE_SECONDS", "draw_overlays", "readout_lines", "inventory_lines",
            "texture_mode", "draw_automap", "say", "map_area", "map_view", "seen_lines"]
 
-HELP = ("WASD/arrows move   Left/Right or mouse (M grab) turn   Shift run   Alt strafe   "
-        "E/Space use   Ctrl/click fire   1-7 weapons   Pause   Esc menu",
-        "Tab map  O overlay  L lines  T things  X textures  R stats  P painter  "
-        "[ ] resolution  - = status bar  F fullscreen  K shot  H help")
+HELP = ("WASD/arrows move   Left/Right or mouse (M frees it) turn   Shift run   Alt strafe   "
+        "E/Space use   Ctrl/click fire   1-7 weapons   Esc menu",
+        "F1 all the keys  Tab map  O overlay  L lines  X textures  R readout  "
+        "P painter  [ ] resolution  - = status bar  F fullscreen  K shot  H this line")
 TEXT, SHADOW = (235, 235, 235), (0, 0, 0)
 MESSAGE_SECONDS = 2.0
+SCREENHEIGHT = 200
+READOUT_Y = 12               # of 200 rows: under the message line (a 7-row font and a gap)
 HELP_SECONDS = 15.0          # an interactive walk shows the key help this long at first
 
 
@@ -39,12 +41,17 @@ def draw_overlays(walk):
     if walk.show_map:
         draw_automap(walk)
     if walk.show_readout:
-        _draw_text_block(walk, readout_lines(walk), (8, 8))
+        # below DOOM's message line (HU_MSGY 0, the font's height), never over it
+        top = walk.display.get_size()[1] * READOUT_Y // SCREENHEIGHT
+        _draw_text_block(walk, readout_lines(walk), (8, top))
     if walk.show_help and walk.help_until is not None and time.perf_counter() > walk.help_until:
         walk.show_help, walk.help_until = False, None    # it covered the weapon; H brings it back
-    if walk.show_help:
+    if walk.show_help and walk.attract is None:
         bottom = map_area(walk)[1]
         _draw_text_block(walk, HELP, (8, bottom - 8 - len(HELP) * walk.font.get_linesize()))
+    if walk.help_screen:
+        from wallbsp.app.helpscreen import draw_help_screen
+        draw_help_screen(walk)
 
 
 def readout_lines(walk):
@@ -100,26 +107,34 @@ def map_area(walk):
 
 
 def draw_automap(walk):
-    """The lines in DOOM's colours (redrawn when a height changes or the map moves, else
-    cached per window size and mode), the things as they are now (toggled by
-    ``show_things``), then the player's arrow; over the window above the status bar."""
+    """The lines in DOOM's colours and rules (redrawn when a height changes, a line is
+    seen or the map moves, else cached per window size and mode), the things as they are
+    now (with IDDT's second step, ``map_cheat`` 2), then the player's arrow; over the
+    window above the status bar."""
     size = map_area(walk)
     view = map_view(walk, size)
     state = walk.world.state
     seen = seen_lines(walk)
     key = (size, walk.map_overlay, walk.show_partitions, id(state), state.version,
-           view.scale, view.ox, view.oy, seen.count)
+           view.scale, view.ox, view.oy, seen.count, walk.map_cheat, has_allmap(walk))
     if walk.map_cache[0] != key:
         walk.map_cache = (key, _map_layer(walk, size, view))
     walk.display.blit(walk.map_cache[1], (0, 0))
     walk.display.set_clip((0, 0, *size))           # never over the status bar
     try:
-        if walk.show_things:
+        if walk.map_cheat >= 2:                     # IDDT twice: the things too
             draw_things(walk.display, view, walk.world.things)
         player = walk.player
         draw_arrow(walk.display, view, player.x, player.y, player.angle)
     finally:
         walk.display.set_clip(None)
+
+
+def has_allmap(walk) -> bool:
+    """The player carries the computer area map (``pw_allmap``)."""
+    from wallbsp.doom import info
+    player = walk.world.play.players[walk.world.play.consoleplayer]
+    return bool(player.powers[info.pw_allmap])
 
 
 def seen_lines(walk) -> SeenLines:
@@ -155,6 +170,6 @@ def _map_layer(walk, size, view):
     flags = [line.flags for line in lines] if len(lines) == len(walk.tree.level.walls) \
         else None
     kinds = line_kinds(walk.tree.level, state.floor, state.ceiling, flags,
-                       seen_lines(walk).walls)
+                       seen_lines(walk).walls, walk.map_cheat, has_allmap(walk))
     return automap_layer(walk.tree, kinds, view, size, walk.display, walk.map_overlay,
                          walk.partitions if walk.show_partitions else None)

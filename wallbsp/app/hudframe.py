@@ -38,14 +38,13 @@ def play_with_hud(world, tics) -> Hud:
     return hud
 
 
-def raise_weapon(player) -> None:
+def raise_weapon(play, player) -> None:
     """The player's weapon at rest at the top (its ready state, ``sy`` = WEAPONTOP, no
     flash), as it is once P_BringUpWeapon's raise is over: a still frame of a level's
     start shows the weapon ready, not below the view."""
     from wallbsp.screen.weapon import WEAPONTOP
-    from wallbsp.doom import info
     from wallbsp.doom.fixed import FRACUNIT
     weapon, flash = player.psprites
-    weapon.state = info.WEAPONINFO[player.readyweapon].readystate
+    weapon.state = play.weaponinfo[player.readyweapon].readystate
     weapon.sx, weapon.sy = FRACUNIT, WEAPONTOP
     flash.state = None

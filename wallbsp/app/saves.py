@@ -97,20 +97,23 @@ def load_world(folder, slot: int, world, tree_of) -> World:
                 raise SaveError(f"{path}: header.map: {e}") from None
     skill = header.get("skill")
     skill = skill + 1 if isinstance(skill, int) and 0 <= skill <= 4 else world.skill
-    trial = _world_of(data, wad, level, tree, skill, path)
+    trial = _world_of(data, wad, level, tree, skill, path, world.tables)
     _try_tics(trial, path)
-    return _world_of(data, wad, level, tree, skill, path)
+    return _world_of(data, wad, level, tree, skill, path, world.tables)
 
 
-def _world_of(data, wad, level, tree, skill, path) -> World:
+def _world_of(data, wad, level, tree, skill, path, tables=None) -> World:
+    """(``tables``: the game's own, wallbsp.content)"""
     try:
-        play = load_game(data, wad, source=str(path), cls=world_play_class(), level=level)
-        return World(tree, skill, play=play)
+        play = load_game(data, wad, source=str(path), cls=world_play_class(), level=level,
+                         tables=tables)
+        return World(tree, skill, play=play, tables=tables)
     except SaveError:
         raise
-    except (TypeError, ValueError, IndexError, KeyError, AttributeError) as e:
-        # load_game checks the structure, not every saved field's type; a save edited with
-        # its digest made anew can still hold a value no World can be made from
+    except Exception as e:
+        # load_game checks the structure and the ranges of DOOM's own fields, not every
+        # value of every object; a save edited with its digest made anew can still hold one
+        # no World can be made from (an OverflowError, say): the game in play goes on
         raise SaveError(f"{path}: body: the saved state makes no world "
                         f"({type(e).__name__}: {e})") from None
 

@@ -47,6 +47,7 @@ from wallbsp.game.playsim.structs import BT_USE
 from wallbsp.game.ticcmds import ticcmd
 from wallbsp.game.world import TICRATE, World
 from wallbsp.app.audio import close_sound, hear, open_sound, tic_sound
+from wallbsp.app.cheats import CheatTyper
 from wallbsp.app.gameflow import GameFlow
 from wallbsp.app.controls import bindings, handle_events  # noqa: F401 - the app's names
 from wallbsp.app.gamescreen import NO_BLEND, draw_frame, view_camera  # noqa: F401
@@ -57,7 +58,7 @@ from wallbsp.image import save_png
 from wallbsp.render import render
 from wallbsp.screen.hud import Hud
 from wallbsp.app.window import (RESOLUTIONS, NoDisplayError, check_display,  # noqa: F401
-    close_display, no_window_system, open_display, show_caption)
+    close_display, no_window_system, open_display, show_caption, toggle_mouse_grab)
 
 MAX_FRAME_TIME = 0.1      # seconds: a hitch (window drag, swap) runs no more tics than this
 EXIT_SECONDS = 2.0        # the exit message stays this long on the next level
@@ -105,7 +106,14 @@ class Walkthrough:
     show_map: bool = False
     map_overlay: bool = False
     show_partitions: bool = False
-    show_things: bool = True         # the things on the automap
+    map_cheat: int = 0               # IDDT: 1 every line on the automap, 2 and the things
+    cheats: object = None            # the cheat codes typed (cheats.CheatTyper)
+    warp: object = None              # (walk, episode, map) -> a new game there (idclev)
+    aspect: float = 4 / 3            # the picture's shape in the window; None: square pixels
+    recorder: object = None          # a vanilla demo being recorded (game.lmprecord)
+    playback: object = None          # the tic commands of a demo being played, an iterator
+    attract: object = None           # DOOM's attract loop while it runs (app.attract)
+    help_screen: bool = False        # F1's list of the keys, the game standing still
     map_zoom: float = 1.0            # the automap: 1 the whole level, closer follows
     seen: tuple = None               # (world state, automap.SeenLines): the walls seen
     textures: bool = True            # textured view (a level with resources), else flat
@@ -127,10 +135,14 @@ class Walkthrough:
     def __post_init__(self):
         if self.hud is None:
             self.hud = Hud(statusbar=self.statusbar)
+        if self.cheats is None:
+            self.cheats = CheatTyper()
 
     @classmethod
-    def at_start(cls, tree, size=(320, 200), window=(960, 600), skill=3, **options):
-        return cls(World(tree, skill), tuple(size), tuple(window), **options)
+    def at_start(cls, tree, size=(320, 200), window=(960, 720), skill=3, world=None,
+                 **options):
+        world = World(tree, skill) if world is None else world
+        return cls(world, tuple(size), tuple(window), **options)
 
     @property
     def tree(self):
@@ -143,10 +155,11 @@ class Walkthrough:
 
 # -- the entry point ------------------------------------------------------------------------------
 
-def run_walkthrough(tree, *, size=(320, 200), window=(960, 600), frames=None, turn=0.0,
+def run_walkthrough(tree, *, size=(320, 200), window=None, frames=None, turn=0.0,
                     screenshot=None, max_fps=None, order="front_to_back", fov=90.0,
                     demo=None, next_level=None, skill=3, sound=True, music=True,
-                    keys=None, statusbar=True, saves=None, menus=None) -> Summary:
+                    keys=None, statusbar=True, saves=None, menus=None, aspect=4 / 3,
+                    world=None, setup=None) -> Summary:
     """Walk ``tree`` in a window; with ``frames=N`` render N frames headless and return the
     summary.  ``screenshot``: save the last picture (internal resolution, as shown) as a
     PNG.  ``demo``: record the tics into it; ``next_level(exit)``: the tree to go on to;
@@ -154,20 +167,30 @@ def run_walkthrough(tree, *, size=(320, 200), window=(960, 600), frames=None, tu
     ``music``: DOOM's sound effects and music; ``keys``: action -> key names
     (``config.read_bindings``); ``statusbar``: the view above DOOM's status bar;
     ``menus``: DOOM's menus, intermission and saves (``gameflow``; default: interactive
-    walks only), saves in the folder ``saves`` (default ``app.saves.saves_folder``)."""
+    walks only), saves in the folder ``saves`` (default ``app.saves.saves_folder``);
+    ``aspect``: the picture's shape in the window (4:3, DOOM's; None: square pixels);
+    ``world``: a World of ``tree`` already made (a demo's); ``setup(walk)``: called before
+    the first frame (a demo to record or play back: ``app.walkgame``)."""
     if frames is None:
         check_display()
     elif no_window_system():
         os.environ["SDL_VIDEODRIVER"] = "dummy"
-    walk = Walkthrough.at_start(tree, size, window, skill, order=order, fov=fov, demo=demo,
-                                next_level=next_level, key_names=keys, statusbar=statusbar)
+    if window is None:
+        window = (960, 720) if aspect else (3 * size[0], 3 * size[1])
+    walk = Walkthrough.at_start(tree, size, window, skill, world=world, order=order, fov=fov,
+                                demo=demo, next_level=next_level, key_names=keys,
+                                statusbar=statusbar, aspect=aspect)
     if menus or (menus is None and frames is None):
         walk.overlay = GameFlow(walk, start_level, saves)
+    if setup is not None:
+        setup(walk)
     prepare_renderer(walk)
     if frames is None:
         walk.help_until = time.perf_counter() + HELP_SECONDS
     open_display(walk)
     try:
+        if frames is None and walk.playback is None and walk.attract is None:
+            toggle_mouse_grab(walk)    # DOOM's: the mouse turns from the start (M frees it)
         open_sound(walk, sound, music)
         times = run_frames(walk, frames, turn, max_fps)
         if screenshot is not None and walk.picture is not None:
@@ -231,7 +254,9 @@ def headless_frame(walk, turn):
     """One frame with no input but closing the window; then one tic turning ``turn``."""
     handle_events(walk, keys=False)
     draw_frame(walk)
-    run_tic(walk, ticcmd(turn=turn))
+    cmd = ticcmd(turn=turn) if walk.playback is None else next_command(walk)
+    if cmd is not None:
+        run_tic(walk, cmd)
 
 
 def _summary(walk, times) -> Summary:
@@ -254,7 +279,7 @@ def tic_inputs(walk):
 def ticking(walk) -> bool:
     """Whether tics run: not paused, and no overlay up that pauses the game (DOOM's
     single player stops the level while the menu is up)."""
-    return not walk.paused and not (walk.overlay is not None
+    return not walk.paused and not walk.help_screen and not (walk.overlay is not None
                                     and getattr(walk.overlay, "pauses", True))
 
 
@@ -267,12 +292,35 @@ def run_tics(walk, dt):
     tics = int(walk.pending * TICRATE + 1e-9)     # a hair: k/35 s is k tics despite rounding
     walk.pending -= tics / TICRATE
     for _ in range(tics):
-        run_tic(walk, tic_inputs(walk))
+        if walk.attract is not None and walk.attract.page is not None:
+            walk.attract.tic(walk)             # a title or credit page: its tics
+            continue
+        cmd = next_command(walk)
+        if cmd is None:
+            return
+        run_tic(walk, cmd)
+
+
+def next_command(walk):
+    """The next tic's command: the demo's being played back, else the keys held; None
+    when the demo played back has ended (``walk.running`` False: the walk is over)."""
+    if walk.playback is None:
+        return tic_inputs(walk)
+    cmd = next(walk.playback, None)
+    if cmd is None:
+        walk.playback = None
+        if walk.attract is not None:
+            walk.attract.advance(walk)         # the attract loop goes on
+        else:
+            walk.running = False
+    return cmd
 
 
 def run_tic(walk, cmd):
     """One tic of the world with the tic command ``cmd`` (recorded while on the first
     level); the Hud's tic, the sound's, the messages; an exit or a restart."""
+    if walk.recorder is not None:      # a vanilla demo: the play runs what the demo keeps
+        cmd = walk.recorder.record(walk.world.play, cmd)
     if walk.overlay is not None and hasattr(walk.overlay, "tic") and walk.overlay.tic(walk, cmd):
         return                         # the overlay's tic instead (an intermission)
     walk.previous = walk.world.camera(walk.fov)
@@ -285,9 +333,16 @@ def run_tic(walk, cmd):
     _show_messages(walk)
     if walk.world.exited:
         leave_level(walk)
-    elif walk.world.dead and cmd.buttons & BT_USE:
+    elif walk.world.dead and cmd.buttons & BT_USE and not _play_restarts(walk):
         # DOOM's single player: use after death starts the level again
         start_level(walk, walk.world.tree, "The level again")
+
+
+def _play_restarts(walk) -> bool:
+    """A vanilla demo recorded or played: the play starts the level again itself
+    (G_DoReborn), as the demo's DOOM will."""
+    return walk.playback is not None or (walk.recorder is not None
+                                         and walk.recorder.recording)
 
 
 def _show_messages(walk):
@@ -318,8 +373,9 @@ def start_level(walk, tree, text, world=None):
     """A fresh World of ``tree`` at the same skill (the recording stops: a demo is one
     level from its start), heard by the sound, and ``text`` said (``world``: one already
     made of ``tree``, a loaded save)."""
-    world = World(tree, walk.world.skill) if world is None else world
+    world = World(tree, walk.world.skill, tables=walk.world.tables) if world is None else world
     walk.world, walk.previous, walk.demo, walk.seen_message = world, None, None, 0
+    walk.attract = walk.playback = None        # a game of one's own ends the attract loop
     walk.was_dead = False
     walk.map_cache, walk.partitions = (None, None), None
     hear(walk)

@@ -1,7 +1,7 @@
 """The compiled tree's invariants, checked exactly: ``BSPTree.validate()``, and ``load_tree``
 on every file it reads, so that a file either loads as a sound tree or is refused.
 
-What traversal, rendering and collision rely on, in the order checked (the first broken
+What traversal and rendering rely on, in the order checked (the first broken
 one raises ValueError naming it):
 
 - every index in range (no negative index reading from the end of an array), line
@@ -246,8 +246,8 @@ def _check_sides_of_ancestors(tree, parent, slot, ends):
 # -- the floats and the leaves ----------------------------------------------------------------
 
 def _check_seg_points(tree, ends):
-    """``seg_xy`` is the exact seg ends rounded as the compiler rounds them (renderer and
-    collision draw and collide with these numbers)."""
+    """``seg_xy`` is the exact seg ends rounded as the compiler rounds them (the renderer
+    draws with these numbers)."""
     w = ends[tree.seg_wall]
     n0, d0, n1, d1 = tree.seg_t.T
     dx, dy = w[:, 2] - w[:, 0], w[:, 3] - w[:, 1]

@@ -1,4 +1,4 @@
-"""The compiled tree: flat arrays, the one BSP walk, and the queries built on it.
+"""The compiled tree: flat arrays, the one BSP walk, and the look-ups built on it.
 
 Layout (N nodes, S segs, F = N + 1 leaves), all numpy arrays:
 
@@ -24,7 +24,7 @@ Layout (N nodes, S segs, F = N + 1 leaves), all numpy arrays:
 front) from a point, with the point's side of each node decided exactly even for float
 points (``geometry.side_of``; a point on a line is taken to be in front of it), optional
 culling of whole subtrees and optional visits of the leaves.  ``front_to_back``,
-``back_to_front`` and ``locate`` use that same side decision; the renderer, the queries and
+``back_to_front`` and ``locate`` use that same side decision; the renderer and
 the map views should walk with it rather than write their own.
 """
 from __future__ import annotations

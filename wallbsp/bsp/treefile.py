@@ -31,6 +31,7 @@ from pathlib import Path
 import numpy as np
 
 from wallbsp.files import InputError, open_regular, write_atomically
+from wallbsp.level.conflicts import seg_limit
 from wallbsp.level.model import Level, LevelError
 from wallbsp.level.io import content_hash, dumps_level, level_from_dict, parse_json
 
@@ -131,6 +132,10 @@ def _read_members(path, zf: zipfile.ZipFile, file_size: int) -> TreeFile:
     shapes = {name: _array_shape(path, zf, infos[name + ".npy"], name) for name in ARRAY_LAYOUT}
     _check_shapes_agree(path, shapes)
     level = _read_level(path, zf, infos["level.json"], header["level_sha256"])
+    segs, limit = shapes["seg_wall"][0], seg_limit(len(level.walls))
+    if segs > limit:        # walls crossing everywhere (docs/limits.md): its tables outgrow it
+        raise TreeError(f"{path}: {segs} segs for {len(level.walls)} walls, more than a "
+                        f"level may compile to ({limit})")
     arrays = {name: _read_array(path, zf, infos[name + ".npy"], name, shapes[name])
               for name in ARRAY_LAYOUT}
     return TreeFile(level, arrays, header["candidates"], header["seed"])

@@ -19,8 +19,9 @@ headers, as Chocolate Doom has them (the original DOOM v1.9 tables).
   ``MAXRADIUS``, ``MELEERANGE``, ``ONFLOORZ``, ``INVULNTICS``, ``CF_NOCLIP``, ...
 
 The data come from ``wallbsp/data/doom/info.json``, written by
-``tools/extract_doom_info.py`` from the C sources.  The records are tuples: shared by every
-``Play`` in a process, never changed.
+``tools/extract_doom_info.py`` from the C sources.  The records are tuples, never changed;
+a ``Play`` reads them through its own ``doom.tables.Tables`` (these by default), which
+skill 5 and a game's own actors replace for that play alone.
 """
 import json
 from pathlib import Path

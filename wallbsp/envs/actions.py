@@ -43,6 +43,7 @@ from typing import NamedTuple
 
 import numpy as np
 
+from wallbsp.game.arguments import describe
 from wallbsp.game.ticcmds import TicCmd, ticcmd
 
 __all__ = ["ACTION_SPACES", "BUTTONS", "DISCRETE_ACTIONS", "TURN_DEGREES", "Buttons",
@@ -96,13 +97,14 @@ _SIDE = (0.0, -1.0, 1.0)              # multidiscrete strafe and turn: none, lef
 def action_space(kind: str):
     """The gymnasium space of action space ``kind`` (one of ``ACTION_SPACES``)."""
     from gymnasium import spaces
+    if not isinstance(kind, str) or kind not in ACTION_SPACES:
+        raise ValueError(f"options: action_space must be one of {ACTION_SPACES}, not "
+                         f"{describe(kind)}")
     if kind == "discrete":
         return spaces.Discrete(len(_DISCRETE))
     if kind == "multidiscrete":
         return spaces.MultiDiscrete(np.array(MULTIDISCRETE, dtype=np.int64))
-    if kind == "box":
-        return spaces.Box(-1.0, 1.0, shape=(len(BUTTONS),), dtype=np.float32)
-    raise ValueError(f"action_space must be one of {ACTION_SPACES}, not {kind!r}")
+    return spaces.Box(-1.0, 1.0, shape=(len(BUTTONS),), dtype=np.float32)
 
 
 def buttons_of(kind: str, action) -> Buttons:

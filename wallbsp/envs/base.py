@@ -32,9 +32,9 @@ import gymnasium as gym
 import numpy as np
 
 from wallbsp.game.world import TICRATE, World
-from wallbsp.scene.queries import PLAYER_RADIUS
+from wallbsp.game.probe import PLAYER_RADIUS
 from wallbsp.render import render
-from wallbsp.envs import actions
+from wallbsp.envs import actions, checks
 from wallbsp.envs.observations import (VIEW_KEYS, Automap, check_observations,
     hud_observation, observation_space, pose_of, view_observation)
 from wallbsp.screen.hud import Hud, view_size
@@ -59,23 +59,24 @@ class WallbspEnv(gym.Env):
                  textures: bool = True, observations=DEFAULT_OBSERVATIONS, max_tics=None,
                  action_space: str = "discrete", render_mode=None, skill: int = 3,
                  hud: bool = False):
-        self.width, self.height = _size(size)
-        self.frame_skip = _positive("frame_skip", frame_skip)
-        self.max_tics = _positive("max_tics", self.default_max_tics if max_tics is None
-                                  else max_tics)
-        if not 0.0 < float(fov) < 180.0:
-            raise ValueError(f"fov must be between 0 and 180 degrees, not {fov!r}")
-        self.fov, self.textures, self.skill = float(fov), bool(textures), int(skill)
+        self.width, self.height = checks.check_size(size)
+        self.frame_skip = checks.check_count("frame_skip", frame_skip, 1, checks.MAX_FRAME_SKIP)
+        self.max_tics = checks.check_count("max_tics", self.default_max_tics if max_tics is None
+                                           else max_tics)
+        self.fov = _fov(fov)
+        self.textures = checks.check_flag("textures", textures)
+        self.skill = checks.check_count("skill", skill, *checks.SKILLS)
         self.keys = check_observations(observations)
         self._views = bool(VIEW_KEYS & set(self.keys))       # a frame is drawn each step
-        if render_mode is not None and render_mode not in self.metadata["render_modes"]:
-            raise ValueError(f"render_mode must be one of {self.metadata['render_modes']} "
-                             f"or None, not {render_mode!r}")
+        if render_mode is not None:
+            checks.check_choice("render_mode", render_mode, self.metadata["render_modes"])
         self.action_kind, self.render_mode = action_space, render_mode
         self.action_space = actions.action_space(action_space)   # checks the name
+        # a discrete space's size: a Python int below it needs no more checking (step)
+        self._discrete_n = int(self.action_space.n) if action_space == "discrete" else 0
         self.observation_space = observation_space(self.keys, self.width, self.height)
         self.metadata = {**self.metadata, "render_fps": TICRATE / self.frame_skip}
-        self.hud = bool(hud)
+        self.hud = checks.check_flag("hud", hud)
         self.world = None
         self.frame = None
         self._hud = self._picture = None         # the Hud and the last picture it drew on
@@ -95,6 +96,7 @@ class WallbspEnv(gym.Env):
 
     # -- the gymnasium API ------------------------------------------------------------------
     def reset(self, *, seed=None, options=None):
+        seed = checks.check_reset(seed, options)
         super().reset(seed=seed)
         tree = self.episode_tree()
         if self._automap is None or self._automap[0] is not tree:
@@ -107,6 +109,8 @@ class WallbspEnv(gym.Env):
     def step(self, action):
         if self.world is None:
             raise RuntimeError("step() before reset()")
+        if not (type(action) is int and 0 <= action < self._discrete_n):
+            checks.check_action(self.action_space, action)
         buttons = actions.buttons_of(self.action_kind, action)
         reward, terminated = 0.0, False
         for i in range(self.frame_skip):
@@ -213,17 +217,8 @@ class WallbspEnv(gym.Env):
                 "health": int(world.inventory.health), **self.episode_info()}
 
 
-def _size(size) -> tuple[int, int]:
-    try:
-        width, height = (int(v) for v in size)
-    except (TypeError, ValueError):
-        raise ValueError(f"size must be (width, height), not {size!r}") from None
-    if width < 1 or height < 1:
-        raise ValueError(f"size must be positive, not {size!r}")
-    return width, height
-
-
-def _positive(name: str, value) -> int:
-    if isinstance(value, bool) or int(value) != value or value < 1:
-        raise ValueError(f"{name} must be a positive integer, not {value!r}")
-    return int(value)
+def _fov(fov) -> float:
+    fov = checks.check_number("fov", fov, 0.0, 180.0)
+    if not 0.0 < fov < 180.0:
+        raise ValueError(f"options: fov must be between 0 and 180 degrees, not {fov}")
+    return fov

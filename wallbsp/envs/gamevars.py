@@ -27,6 +27,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from wallbsp.game.arguments import describe
 from wallbsp.game.playsim.structs import PST_DEAD
 from wallbsp.game.ticcmds import TicCmd, ticcmd
 from wallbsp.doom import info
@@ -60,16 +61,21 @@ VARIABLES = ("HEALTH", "ARMOR") + tuple(f"AMMO{i}" for i in range(10)) + tuple(
 
 
 def check_buttons(names) -> tuple:
-    names = tuple(names)
-    bad = [n for n in names if n not in BUTTONS]
+    given = names
+    names = tuple(names) if isinstance(names, (list, tuple)) else ()
+    bad = [n for n in names if not isinstance(n, str) or n not in BUTTONS]
     if bad or not names:
-        raise ValueError(f"buttons must be a non-empty list of {BUTTONS}, not {names!r}")
+        raise ValueError(f"options: buttons must be a non-empty list of ViZDoom's button "
+                         f"names (gamevars.BUTTONS), not {describe(given)}")
     return names
 
 
 def check_variables(names) -> tuple:
+    if not isinstance(names, (list, tuple)):
+        raise ValueError(f"options: variables must be a list of game variables, not "
+                         f"{describe(names)}")
     names = tuple(names)
-    bad = [n for n in names if n not in VARIABLES]
+    bad = [n for n in names if not isinstance(n, str) or n not in VARIABLES]
     if bad:
         raise ValueError(f"unknown game variables {bad} (known: {VARIABLES})")
     return names
@@ -283,6 +289,8 @@ class Variables:
         self._getters = tuple(_getter(name) for name in self.names)
 
     def read(self, world, events=None) -> list:
+        if events is not None:
+            events.read()                   # the play's log up to now into the counters
         k = self.player
         p = world.play.players[k]
         mo = p.mo

@@ -56,10 +56,11 @@ except ImportError as err:                 # the optional extra
 from gymnasium import spaces
 from gymnasium.utils import seeding
 
-from wallbsp.envs import gamevars
+from wallbsp.envs import checks, gamevars
 from wallbsp.envs.levels import given_tree
 from wallbsp.envs.observations import observation_space, pose_of, view_observation
 from wallbsp.envs.scenarios import installed_iwad, our_resources
+from wallbsp.game.arguments import describe
 from wallbsp.game.playsim.structs import BT_USE
 from wallbsp.game.world import TICRATE, World
 from wallbsp.render import render
@@ -110,34 +111,32 @@ class MultiAgentEnv(ParallelEnv):
                  max_tics: int = TICRATE * 120, frag_limit=None, respawn: bool = True,
                  frag_reward: float = 1.0, death_penalty: float = 1.0,
                  kill_reward: float = 1.0, exit_reward: float = 10.0, render_mode=None):
-        if mode not in MODES:
-            raise ValueError(f"mode must be one of {tuple(MODES)}, not {mode!r}")
-        if isinstance(players, bool) or players not in (2, 3, 4):
-            raise ValueError(f"players must be 2, 3 or 4, not {players!r}")
-        if action_space not in ACTION_KINDS:
-            raise ValueError(f"action_space must be one of {ACTION_KINDS}, not "
-                             f"{action_space!r}")
-        if render_mode not in (None, "rgb_array"):
-            raise ValueError(f"render_mode must be 'rgb_array' or None, not {render_mode!r}")
-        keys = (observations,) if isinstance(observations, str) else tuple(observations)
-        if not keys or any(k not in OBSERVATIONS for k in keys):
-            raise ValueError(f"observations must be a non-empty subset of {OBSERVATIONS}, "
-                             f"got {keys!r}")
-        self.keys = tuple(k for k in OBSERVATIONS if k in keys)
-        self.width, self.height = (int(v) for v in size)
-        self.frame_skip, self.max_tics = _positive("frame_skip", frame_skip), \
-            _positive("max_tics", max_tics)
-        self.fov, self.textures, self.skill = float(fov), bool(textures), int(skill)
+        checks.check_choice("mode", mode, tuple(MODES))
+        players = checks.check_count("players", players, 2, 4)
+        checks.check_choice("action_space", action_space, ACTION_KINDS)
+        if render_mode is not None:
+            checks.check_choice("render_mode", render_mode, ("rgb_array",))
+        self.keys = _keys(observations)
+        self.width, self.height = checks.check_size(size)
+        self.frame_skip = checks.check_count("frame_skip", frame_skip, 1, checks.MAX_FRAME_SKIP)
+        self.max_tics = checks.check_count("max_tics", max_tics)
+        self.fov = checks.check_number("fov", fov, 1e-3, 179.999)
+        self.textures = checks.check_flag("textures", textures)
+        self.skill = checks.check_count("skill", skill, *checks.SKILLS)
         self.mode, self.deathmatch = mode, MODES[mode]
-        self.frag_limit = None if frag_limit is None else _positive("frag_limit", frag_limit)
-        self.respawn = bool(respawn)
-        self.frag_reward, self.death_penalty = float(frag_reward), float(death_penalty)
-        self.kill_reward, self.exit_reward = float(kill_reward), float(exit_reward)
+        self.frag_limit = None if frag_limit is None else \
+            checks.check_count("frag_limit", frag_limit)
+        self.respawn = checks.check_flag("respawn", respawn)
+        self.frag_reward, self.death_penalty, self.kill_reward, self.exit_reward = (
+            checks.check_number(name, value) for name, value in
+            (("frag_reward", frag_reward), ("death_penalty", death_penalty),
+             ("kill_reward", kill_reward), ("exit_reward", exit_reward)))
         self.render_mode = render_mode
         self.buttons = gamevars.check_buttons(buttons)
         self.variables = gamevars.check_variables(variables)
         self.action_kind = action_space
-        self.tree = arena_tree() if level == "arena" else given_tree(level)
+        self.tree = arena_tree() if isinstance(level, str) and level == "arena" else \
+            given_tree(checks.check_level(level))
         self.possible_agents = [f"player_{k}" for k in range(players)]
         self.agents = []
         self._obs_space = self._make_observation_space()
@@ -170,8 +169,21 @@ class MultiAgentEnv(ParallelEnv):
             return np.zeros(len(self.buttons), np.float32)
         return gamevars.button_values(self.buttons, self.action_kind, action)
 
+    def _check_actions(self, actions) -> None:
+        """A dict of the agents' actions (one may be left out or None), each in its space."""
+        if not isinstance(actions, dict):
+            raise ValueError(f"step: actions must be a dict of agent names to actions, not "
+                             f"{describe(actions)}")
+        for agent, action in actions.items():
+            if agent not in self._action_spaces:
+                raise ValueError(f"step: {describe(agent)} is no agent of "
+                                 f"{self.possible_agents}")
+            if action is not None:
+                checks.check_action(self._action_spaces[agent], action, f"step: {agent}")
+
     # -- episodes -----------------------------------------------------------------------------
     def reset(self, seed=None, options=None):
+        seed = checks.check_reset(seed, options)
         if seed is not None or self._np_random is None:
             self._np_random, _ = seeding.np_random(seed)
             if seed is not None:
@@ -205,6 +217,7 @@ class MultiAgentEnv(ParallelEnv):
             raise RuntimeError("step() before reset()")
         world = self.world
         n = len(self.possible_agents)
+        self._check_actions(actions)
         values = [self._values(actions.get(a)) for a in self.possible_agents]
         turning = [any(v > 0.5 for b, v in zip(self.buttons, vals)
                        if b in ("TURN_LEFT", "TURN_RIGHT")) for vals in values]
@@ -312,7 +325,11 @@ class MultiAgentEnv(ParallelEnv):
         self.frames = None
 
 
-def _positive(name: str, value) -> int:
-    if isinstance(value, bool) or int(value) != value or value < 1:
-        raise ValueError(f"{name} must be a positive integer, not {value!r}")
-    return int(value)
+def _keys(observations) -> tuple:
+    """``observations=`` as a tuple in ``OBSERVATIONS``' order; one line for anything else."""
+    keys = (observations,) if isinstance(observations, str) else \
+        tuple(observations) if isinstance(observations, (list, tuple, set, frozenset)) else ()
+    if not keys or any(not isinstance(k, str) or k not in OBSERVATIONS for k in keys):
+        raise ValueError(f"options: observations must be a non-empty subset of "
+                         f"{OBSERVATIONS}, not {describe(observations)}")
+    return tuple(k for k in OBSERVATIONS if k in keys)

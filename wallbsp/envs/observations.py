@@ -22,6 +22,7 @@ from __future__ import annotations
 
 import numpy as np
 
+from wallbsp.game.arguments import describe
 from wallbsp.render.rows import rows_of
 
 __all__ = ["OBSERVATIONS", "VIEW_KEYS", "observation_space", "check_observations", "Automap",
@@ -35,11 +36,17 @@ INDEX_LIMIT = np.iinfo(np.int32).max
 
 def check_observations(keys) -> tuple[str, ...]:
     """``keys`` as a tuple in the table's order; ValueError for an unknown or empty set."""
-    keys = (keys,) if isinstance(keys, str) else tuple(keys)
-    unknown = [k for k in keys if k not in OBSERVATIONS]
+    given = keys
+    if isinstance(keys, str):
+        keys = (keys,)
+    elif isinstance(keys, (list, tuple, set, frozenset)):
+        keys = tuple(keys)
+    else:
+        keys = ()                           # None, a number, an array: no keys at all
+    unknown = [k for k in keys if not isinstance(k, str) or k not in OBSERVATIONS]
     if unknown or not keys:
-        raise ValueError(f"observations must be a non-empty subset of {OBSERVATIONS}, "
-                         f"got {keys!r}")
+        raise ValueError(f"options: observations must be a non-empty subset of "
+                         f"{OBSERVATIONS}, not {describe(given)}")
     return tuple(k for k in OBSERVATIONS if k in keys)
 
 

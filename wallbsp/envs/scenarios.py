@@ -28,9 +28,11 @@ from __future__ import annotations
 
 import numpy as np
 
-from wallbsp.envs import gamevars
+from wallbsp.envs import checks, gamevars
 from wallbsp.envs.base import WallbspEnv
 from wallbsp.envs.levels import given_tree
+from wallbsp.envs.observations import OBSERVATIONS
+from wallbsp.game.arguments import describe
 from wallbsp.envs.vizdoom_source import CONVERTED, converted_level
 from wallbsp.game.playsim.game import GA_COMPLETED, GA_VICTORY
 from wallbsp.game.scenario import SCENARIO_DIR
@@ -88,6 +90,16 @@ import os as _os                                                   # noqa: E402
 _os.register_at_fork(after_in_child=_forget)
 
 
+def _scenario_keys(observations) -> tuple:
+    """``observations=``: ``WallbspEnv``'s keys and ``"gamevars"``."""
+    if isinstance(observations, str):
+        return (observations,)
+    if isinstance(observations, (list, tuple, set, frozenset)) and observations:
+        return tuple(observations)
+    raise ValueError(f"options: observations must be a non-empty subset of "
+                     f"{OBSERVATIONS + ('gamevars',)}, not {describe(observations)}")
+
+
 class ScenarioEnv(WallbspEnv):
     """A scenario as an environment (module docstring)."""
 
@@ -96,10 +108,8 @@ class ScenarioEnv(WallbspEnv):
         self.scenario = scenario() if isinstance(scenario, type) else scenario
         sc = self.scenario
         self.default_max_tics = sc.start_tics + sc.timeout if sc.timeout else 10 ** 9
-        if action_space not in ACTION_KINDS:
-            raise ValueError(f"action_space must be one of {ACTION_KINDS}, not "
-                             f"{action_space!r}")
-        keys = (observations,) if isinstance(observations, str) else tuple(observations)
+        checks.check_choice("action_space", action_space, ACTION_KINDS)
+        keys = _scenario_keys(observations)
         self.with_gamevars = "gamevars" in keys
         view_keys = tuple(k for k in keys if k != "gamevars") or ("pose",)
         super().__init__(observations=view_keys, max_tics=max_tics,
@@ -110,6 +120,7 @@ class ScenarioEnv(WallbspEnv):
                                                   else variables)
         self.action_kind = action_space
         self.action_space = self._make_action_space()
+        self._discrete_n = int(self.action_space.n) if action_space == "discrete" else 0
         self.observation_space = self._make_observation_space()
         self.tree = scenario_tree(sc.level)
         self._turnheld = 0
@@ -132,6 +143,7 @@ class ScenarioEnv(WallbspEnv):
         return self.tree
 
     def reset(self, *, seed=None, options=None):
+        seed = checks.check_reset(seed, options)
         super(WallbspEnv, self).reset(seed=seed)
         rng = self.np_random
         self.world = World(self.tree, self.skill)
@@ -149,6 +161,8 @@ class ScenarioEnv(WallbspEnv):
     def step(self, action):
         if self.world is None:
             raise RuntimeError("step() before reset()")
+        if not (type(action) is int and 0 <= action < self._discrete_n):
+            checks.check_action(self.action_space, action)
         world, sc = self.world, self.scenario
         press = self._controls.pressed(self.action_kind, action)
         reward, terminated = 0.0, False

@@ -26,13 +26,16 @@ from __future__ import annotations
 
 import numpy as np
 
-from wallbsp.scene.queries import PLAYER_RADIUS
+from wallbsp.game.probe import PLAYER_RADIUS
 from wallbsp.envs.base import TICRATE, WallbspEnv
+from wallbsp.envs.checks import check_count, check_level, check_number
+from wallbsp.game.arguments import describe, is_integer
 from wallbsp.envs.levels import generated_tree, given_tree
 
 __all__ = ["ExitEnv", "ExploreEnv", "FindEnv"]
 
 SEED_RANGE = 2 ** 31
+MAX_WALLS = 20_000          # a generated level's walls (20,000: ~2 s to make and compile)
 
 
 class ExitEnv(WallbspEnv):
@@ -45,8 +48,8 @@ class ExitEnv(WallbspEnv):
             raise ValueError("wallbsp/Exit-v0 needs level= (a level file, a .wbsp tree or "
                              "WAD:MAP, e.g. level='freedoom1.wad:E1M1')")
         super().__init__(**options)
-        self.tree = given_tree(level)
-        self.tic_cost = float(tic_cost)
+        self.tic_cost = check_number("tic_cost", tic_cost)
+        self.tree = given_tree(check_level(level))
 
     def episode_tree(self):
         return self.tree
@@ -64,7 +67,7 @@ class _GeneratedEnv(WallbspEnv):
 
     def __init__(self, walls: int = 500, candidates=None, **options):
         super().__init__(**options)
-        self.walls = int(walls)
+        self.walls = check_count("walls", walls, 1, MAX_WALLS)
         self.candidates = _candidates(candidates)
         self.level_seed = None
         self.generated = None
@@ -85,15 +88,11 @@ class _GeneratedEnv(WallbspEnv):
 
 def _candidates(candidates):
     """``compile_level``'s ``candidates``, checked before the first reset needs it."""
-    if candidates is None or candidates == "all":
+    if candidates is None or (isinstance(candidates, str) and candidates == "all"):
         return candidates
-    try:
-        whole = not isinstance(candidates, bool) and int(candidates) == candidates >= 1
-    except (TypeError, ValueError):
-        whole = False
-    if not whole:
-        raise ValueError(f"candidates must be a positive integer, 'all' or None, not "
-                         f"{candidates!r}")
+    if not is_integer(candidates) or not 1 <= candidates <= MAX_WALLS:
+        raise ValueError(f"options: candidates must be an integer from 1 to {MAX_WALLS}, "
+                         f"'all' or None, not {describe(candidates)}")
     return int(candidates)
 
 
@@ -102,9 +101,8 @@ class ExploreEnv(_GeneratedEnv):
 
     def __init__(self, cell: float = 64.0, cell_reward: float = 0.01, **options):
         super().__init__(**options)
-        if not cell > 0:
-            raise ValueError(f"cell must be positive, not {cell!r}")
-        self.cell, self.cell_reward = float(cell), float(cell_reward)
+        self.cell = check_number("cell", cell, 1.0, 65536.0)
+        self.cell_reward = check_number("cell_reward", cell_reward)
         self.visited: set = set()
 
     def start_episode(self) -> None:
@@ -134,7 +132,7 @@ class FindEnv(_GeneratedEnv):
 
     def __init__(self, tic_cost: float = 1e-4, **options):
         super().__init__(**options)
-        self.tic_cost = float(tic_cost)
+        self.tic_cost = check_number("tic_cost", tic_cost)
         self.found = False
 
     def start_episode(self) -> None:

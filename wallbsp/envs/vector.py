@@ -35,11 +35,13 @@ from gymnasium.vector.utils import batch_space
 
 from wallbsp.envs.vecbuffers import (MAX_INFO_KEYS, OVERFLOW_BYTES, InfoSchema, Layout,
     add_info, assembler, leaf_array, leaves, read_overflow, values_at)
+from wallbsp.envs.checks import check_batch, check_count, check_reset
 from wallbsp.envs.vecpool import ProcessPool
 from wallbsp.envs.workers import BANK, LocalPool, WorkerError
 
 __all__ = ["make_vec", "WallbspVectorEnv", "WorkerError"]
 
+MAX_ENVS = 4096   # environments (and worker processes) of one vector env
 BANKS = 3        # copy=True: batches handed out in turn, each reused once nothing holds it
 
 
@@ -50,13 +52,10 @@ def make_vec(env_id, num_envs: int = 1, workers=None, batch_size=None, copy: boo
     ``workers`` processes (default: one per CPU, at most one per environment; 0: in this
     process).  ``batch_size`` (default ``num_envs``): how many environments ``recv()``
     returns.  ``context``: the multiprocessing start method (default: the platform's)."""
-    num_envs = int(num_envs)
-    if num_envs < 1:
-        raise ValueError(f"num_envs must be at least 1, not {num_envs}")
+    num_envs = check_count("num_envs", num_envs, 1, MAX_ENVS)
     if workers is None:
         workers = len(os.sched_getaffinity(0))
-    if isinstance(workers, bool) or int(workers) != workers or workers < 0:
-        raise ValueError(f"workers must be a whole number >= 0, not {workers!r}")
+    workers = check_count("workers", workers, 0, MAX_ENVS)
     return WallbspVectorEnv(env_id, num_envs, min(int(workers), num_envs), batch_size, copy,
                             context, options)
 
@@ -66,10 +65,8 @@ class WallbspVectorEnv(VectorEnv):
 
     def __init__(self, maker, num_envs, workers, batch_size, copy, context, options):
         self.num_envs, self.workers, self.copy = num_envs, workers, bool(copy)
-        self.batch_size = num_envs if batch_size is None else int(batch_size)
-        if not 1 <= self.batch_size <= num_envs:
-            raise ValueError(f"batch_size must be between 1 and num_envs={num_envs}, "
-                             f"not {batch_size!r}")
+        self.batch_size = num_envs if batch_size is None else \
+            check_count("batch_size", batch_size, 1, num_envs)
         self.closed = True                     # until the workers are up
         self.pool = (LocalPool(maker, dict(options), num_envs) if workers == 0 else
                      ProcessPool(maker, dict(options), num_envs, workers, context))
@@ -113,13 +110,17 @@ class WallbspVectorEnv(VectorEnv):
         self._usable()
         if seed is None:
             seeds = [None] * self.num_envs
-        elif isinstance(seed, (int, np.integer)):
+        elif isinstance(seed, (int, np.integer)) and not isinstance(seed, bool):
             seeds = [int(seed) + i for i in range(self.num_envs)]
-        else:
+        elif isinstance(seed, (list, tuple, np.ndarray)):
             seeds = list(seed)
+        else:
+            raise ValueError(f"reset: seed must be an integer, a list of them or None, not "
+                             f"{seed!r:.40}")
         if len(seeds) != self.num_envs:
             raise ValueError(f"If seeds are passed as a list the length must match "
                              f"num_envs={self.num_envs} but got length={len(seeds)}.")
+        seeds = [check_reset(one, options) for one in seeds]    # all before any is sent
         ids = self.all
         if options is not None and "reset_mask" in options:
             options = dict(options)
@@ -142,6 +143,7 @@ class WallbspVectorEnv(VectorEnv):
         if self.running:
             raise RuntimeError("step() while environments sent with send() are running: "
                                "recv() them first")
+        check_batch(self.single_action_space, actions, self.num_envs)   # before any is written
         if self.one_action:
             self.act_leaves[0][...] = actions
         else:
@@ -168,6 +170,7 @@ class WallbspVectorEnv(VectorEnv):
         if self.in_flight[ids].any():
             raise ValueError(f"env {int(ids[self.in_flight[ids]][0])} is already running: "
                              "recv() it before sending it again")
+        check_batch(self.single_action_space, actions, len(ids), "send")
         for leaf, value in zip(self.act_leaves, values_at(actions, self.act_paths)):
             leaf[ids] = value
         self.in_flight[ids] = True

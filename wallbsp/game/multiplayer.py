@@ -14,9 +14,11 @@ deathmatch=...)``), set on the play before its first level loads.
   Player 2 start missing", "Only 0 deathmatch spots, 4 required").  Here each missing start
   ``k`` is made near player 1's start (``added_starts``): the first of the spots 48, 96,
   144, 192 and 256 units away, to the start's left, right, back, the four diagonals and
-  front, in that order, that a player circle walks to in a straight line from start 1 (no
-  blocking wall, step or solid thing on the way: ``sim.queries.move``) and that is at least
-  40 units (a player's width and 8) from every other start, facing start 1's way.  A level
+  front, in that order, that a player walks to in a straight line from start 1 (no
+  blocking wall, step or solid thing on the way, by DOOM's own checks on the play's map:
+  ``game.probe.walk``) and that is at least 40 units (a player's width and 8) from every
+  other start, facing start 1's way.  They are found when the level's map has loaded,
+  before its things are spawned (the level's solid things are checked from its list).  A level
   with fewer than four deathmatch starts (DOOM needs four) gets its four player starts
   (found or made) as deathmatch starts as well.  No free spot: one ``LevelError`` line.
 - Starts made here are spawned before the level's own things (so a made player's mobj
@@ -29,12 +31,13 @@ import math
 
 import numpy as np
 
+from wallbsp.doom import info
 from wallbsp.files import LevelError
 from wallbsp.game.playsim.structs import MapThing
-from wallbsp.scene.queries import PLAYER_RADIUS, floor_z, move
+from wallbsp.game.probe import PLAYER_RADIUS, floor_z, walk
 
 __all__ = ["MAX_PLAYERS", "DEATHMATCH_MODES", "check_players", "check_deathmatch",
-           "join_players", "added_starts"]
+           "join_players", "make_extra_starts", "added_starts"]
 
 MAX_PLAYERS = 4
 DEATHMATCH_MODES = (0, 1, 2)
@@ -62,35 +65,47 @@ def check_deathmatch(mode) -> int:
     return int(mode)
 
 
-def join_players(play, level, tree, players: int, deathmatch: int) -> None:
+def join_players(play, level, players: int, deathmatch: int) -> None:
     """The net game of ``players`` players on ``play`` before its level loads (module
-    docstring); ``play.extra_starts``: the starts the level lacks, as THINGS entries."""
+    docstring); ``play.net_starts``: what the play needs to make the starts the level
+    lacks when its map has loaded (``extra_starts``, THINGS entries)."""
     play.playeringame = [k < players for k in range(MAX_PLAYERS)]
     play.consoleplayer = 0
     play.netgame = players > 1
     play.deathmatch = deathmatch
     if players > 1 or deathmatch:
-        play.extra_starts = [MapThing(x, y, angle, kind, ALL_SKILLS) for x, y, angle, kind
-                             in added_starts(level, tree, players, deathmatch)]
+        play.net_starts = (players, deathmatch, _first_start(level), str(level.source))
 
 
-def added_starts(level, tree, players: int, deathmatch: int) -> list:
+def make_extra_starts(play) -> None:
+    """``play.extra_starts`` of ``play.net_starts`` on the map just loaded (no thing
+    spawned yet): the starts the level lacks (module docstring)."""
+    if not getattr(play, "net_starts", None):
+        return
+    players, deathmatch, first, source = play.net_starts
+    play.extra_starts = [MapThing(x, y, angle, kind, ALL_SKILLS) for x, y, angle, kind
+                         in added_starts(play, players, deathmatch, first, source)]
+
+
+def added_starts(play, players: int, deathmatch: int, first, source="level") -> list:
     """``[(x, y, angle, type), ...]``: the player starts (types 2-4) and deathmatch starts
-    (type 11) the level lacks for this game (module docstring)."""
-    x0, y0, angle0 = _first_start(level)
-    found = {t.type: (int(t.x), int(t.y)) for t in level.things if 1 <= t.type <= 4}
+    (type 11) the level of ``play`` (its map loaded, ``level_things`` its things) lacks for
+    this game, player 1 starting at ``first`` ``(x, y, angle)`` (module docstring)."""
+    things = play.level_things
+    x0, y0, angle0 = first
+    found = {kind: (x, y) for x, y, kind, _ in things if 1 <= kind <= 4}
     found[1] = (x0, y0)
-    few_dm = sum(1 for t in level.things if t.type == DEATHMATCH_START) \
-        < MIN_DEATHMATCH_STARTS
+    few_dm = sum(1 for t in things if t[2] == DEATHMATCH_START) < MIN_DEATHMATCH_STARTS
     wanted = MAX_PLAYERS if deathmatch and few_dm else players
     added = []
     taken = list(found.values())
+    solids = _solid_things(things)
     for kind in range(2, wanted + 1):
         if kind in found:
             continue
-        spot = _free_spot(tree, x0, y0, angle0, taken)
+        spot = _free_spot(play, solids, x0, y0, angle0, taken)
         if spot is None:
-            raise LevelError(f"{level.source}: no free spot near player 1's start for "
+            raise LevelError(f"{source}: no free spot near player 1's start for "
                              f"player {kind}'s start")
         taken.append(spot)
         found[kind] = spot
@@ -111,20 +126,39 @@ def _first_start(level):
     return int(round(st.x)), int(round(st.y)), int(round(float(st.angle))) % 360
 
 
-def _free_spot(tree, x0, y0, angle0, taken):
+def _solid_things(things) -> list:
+    """``(x, y, reach)`` of the level's solid things: DOOM's PIT_CheckThing blocks a player
+    whose centre is within ``reach`` (both radii) of one along x and y."""
+    out = []
+    for x, y, kind, _ in things:
+        mt = info.DOOMEDNUM.get(kind)
+        if mt is not None and info.MOBJINFO[mt].flags & info.MF_SOLID and kind > 4:
+            out.append((x, y, info.MOBJINFO[mt].radius / 65536 + PLAYER_RADIUS))
+    return out
+
+
+def _blocked_by_things(solids, x0, y0, x, y) -> bool:
+    """Whether the straight way from (x0, y0) to (x, y) passes a solid thing (sampled at
+    a quarter of a player's radius: a thing's box is at least a radius wide)."""
+    steps = max(1, math.ceil(math.hypot(x - x0, y - y0) / (PLAYER_RADIUS / 4)))
+    for k in range(steps + 1):
+        px, py = x0 + (x - x0) * k / steps, y0 + (y - y0) * k / steps
+        if any(abs(px - tx) < reach and abs(py - ty) < reach for tx, ty, reach in solids):
+            return True
+    return False
+
+
+def _free_spot(play, solids, x0, y0, angle0, taken):
     """The first spot of the search (module docstring) a player walks to from start 1
     and no other start is near, or None."""
-    floor = floor_z(tree, x0, y0) or 0.0
+    floor = floor_z(play, x0, y0)
     for distance in SPOT_DISTANCES:
         for turn in SPOT_TURNS:
             a = math.radians(angle0 + turn)
             x, y = x0 + round(distance * math.cos(a)), y0 + round(distance * math.sin(a))
             if any(max(abs(x - tx), abs(y - ty)) < MIN_APART for tx, ty in taken):
                 continue
-            if tree.locate(x, y) is None:
-                continue
-            ex, ey = move(tree, x0, y0, x - x0, y - y0, floor)
-            if abs(ex - x) < 1e-6 and abs(ey - y) < 1e-6:
+            ex, ey, _ = walk(play, x0, y0, x - x0, y - y0, floor, slide=False)
+            if ex == x and ey == y and not _blocked_by_things(solids, x0, y0, x, y):
                 return x, y
     return None
-

@@ -17,13 +17,15 @@ position, type and flags, so things DOOM skips or leaves out keep their numbers)
 ``secret_exit_taken`` (whether the level was left by its secret exit: DOOM's own
 ``secretexit`` stays false in a Doom II game without MAP31, as with no WAD at all), and
 ``extra_starts`` (THINGS entries spawned before the map's own: the player and deathmatch
-starts a net game needs and the level lacks, ``game.multiplayer``).
+starts a net game needs and the level lacks, made from ``net_starts`` when the map has
+loaded, ``game.multiplayer``).
 """
 from __future__ import annotations
 
 import os
 import re
 
+from wallbsp.game.multiplayer import make_extra_starts
 from wallbsp.game.playsim.play import play_class
 
 __all__ = ["wad_map_of", "world_play_class", "map_numbers", "level_thing_keys"]
@@ -116,6 +118,7 @@ def world_play_class():
             level_things = ()
             secret_exit_taken = False
             extra_starts = ()
+            net_starts = None
 
             def p_load_things(self):
                 self.spawn_extra_starts()
@@ -126,6 +129,7 @@ def world_play_class():
                 return super().p_load_level_things(level)
 
             def spawn_extra_starts(self):
+                make_extra_starts(self)     # the map has loaded, no thing yet
                 for mthing in self.extra_starts:
                     self.p_spawn_map_thing(mthing)
 

@@ -1,4 +1,4 @@
-"""What the renderer and the queries read of DOOM's play simulation: a ``WorldState`` fed
+"""What the renderer reads of DOOM's play simulation: a ``WorldState`` fed
 from a ``Play`` once a tic (``PlayState.sync``), so the renderer draws the play without
 knowing it.
 
@@ -71,7 +71,7 @@ class PlayState(WorldState):
         super().__init__(tree, skill)
         self.play = play
         self._things = PlayThings(tree, capacity=len(tree.level.things))
-        self._things.place_static(tree.level, skill)
+        self._things.place_static(tree.level, skill, play.tables)
         self.walls = wall_lines(play)
         self._watched = []               # (wall, side number, Side, textures at load)
         self._scrolling = []             # (wall, Side, offset at load)

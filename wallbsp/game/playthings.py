@@ -22,7 +22,7 @@ import operator
 
 import numpy as np
 
-from wallbsp.doom import info
+from wallbsp.doom import tables as doom_tables
 from wallbsp.scene.things import Things, leaf_sectors, locate_leaves, walk_arrays
 from wallbsp.scene.things import spawned_at
 from wallbsp.scene.thingrows import ROW, write_rows
@@ -36,7 +36,8 @@ FF_FULLBRIGHT, FF_FRAMEMASK = 0x8000, 0x7FFF
 # what a mobj's picture and place depend on, read in one call per mobj
 _READ = operator.attrgetter("x", "y", "z", "angle", "state", "flags", "radius", "height")
 STATIC_CODE = 1 << 24                   # picture codes of the level's own types: + type
-DOOM_TYPES = frozenset(info.DOOMEDNUM) | {1, 2, 3, 4, 11}
+PLAYER_STARTS = frozenset((1, 2, 3, 4, 11))
+DOOM_TYPES = frozenset(doom_tables.DOOM.doomednum) | PLAYER_STARTS
 _READERS = itertools.count(1)            # a number for each PlayThings (Play.take_touched)
 
 
@@ -58,6 +59,7 @@ class PlayThings(Things):
         self.static = np.zeros(0, dtype=bool)   # a level's own type: no mobj
         self._read_of: dict = {}         # mobj -> its read (``_READ``) at the last sync
         self._reader = next(_READERS)    # who takes the play's touched list
+        self.tables = doom_tables.DOOM   # the synced play's object tables
         self.incremental = False         # the last sync read only what a tic touched
         self.movers: list = []           # the last sync's other thinkers (doors, lights, ...)
         self.hidden = None               # a mobj no view draws (``hide``)
@@ -102,6 +104,7 @@ class PlayThings(Things):
             for mo, i in slots.items():
                 self._slot[mo] = i
                 self.mobjs[i] = mo
+        self.tables = play.tables
         touched = play.take_touched(self._reader)
         self.incremental = touched is not None and not slots
         if self.incremental:
@@ -156,13 +159,15 @@ class PlayThings(Things):
         now = set(live)
         return live, [mo for mo in self._read_of if mo not in now]
 
-    def place_static(self, level, skill: int) -> None:
-        """The level's things of its own types (module docstring), at ``skill``."""
+    def place_static(self, level, skill: int, tables=doom_tables.DOOM) -> None:
+        """The level's things of its own types (module docstring), at ``skill``; a type
+        the play spawns (in its ``tables``) is the play's."""
         own = level.thing_types
         if not own:
             return
+        spawned = tables.doomednum
         placed = [(i, t) for i, t in enumerate(level.things)
-                  if t.type not in DOOM_TYPES and t.type in own]
+                  if t.type not in spawned and t.type not in PLAYER_STARTS and t.type in own]
         if not placed:
             return
         flags = np.array([t.flags for _, t in placed], dtype=np.int64)
@@ -200,13 +205,14 @@ class PlayThings(Things):
         code = picture_code(st.sprite, st.frame)
         flags = mo.flags
         self._pictures[code] = ThingInfo(
-            type=code, name=info.SPRNAMES[st.sprite], sprite=info.SPRNAMES[st.sprite],
+            type=code, name=self.tables.sprnames[st.sprite],
+            sprite=self.tables.sprnames[st.sprite],
             frame=chr(ord("A") + (st.frame & FF_FRAMEMASK)), radius=mo.radius >> 16,
             height=mo.height >> 16, flags=flags, bright=bool(st.frame & FF_FULLBRIGHT),
             rotates=True, monster=bool(flags & COUNTKILL))
 
     def _apply(self, changed, gone) -> bool:
-        slot_of, mobjs, states, pictures = self._slot, self.mobjs, info.STATES, self._pictures
+        slot_of, mobjs, states, pictures = self._slot, self.mobjs, self.tables.states, self._pictures
         rows = []
         for mo, (x, y, z, angle, state, flags, radius, height) in changed:
             i = slot_of.get(mo)
@@ -249,13 +255,9 @@ class PlayThings(Things):
             for i in ids[self.mobjtype[ids] < 0].tolist():
                 t = self.mobjs[i].type
                 self.mobjtype[i] = t
-                self.doomednum[i] = info.MOBJINFO[t].doomednum
-        if n_placed:
-            placed = self._found[n:n + n_placed]       # read at once, not kept
-            if shown:
-                self._changed(placed)
-            else:                            # none drawn, before or now: no frame changes
-                self._unlisted(placed)
+                self.doomednum[i] = self.tables.mobjinfo[t].doomednum
+        if n_placed and shown:               # none drawn, before or now: no frame changes
+            self._changed(self._found[n:n + n_placed])
         # a new frame, angle or height only: the renderer reads those arrays each frame
 
 

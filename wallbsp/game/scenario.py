@@ -19,13 +19,15 @@ A ``Scenario`` is a small class over a level::
                 reward += 106.0; self.exit(world)
             return reward
 
-``events`` (``Events``) are DOOM's own moments, recorded by hooks installed on the play of
-the world (``install_events``; the hooks wrap ``P_DamageMobj``, ``P_KillMobj``,
-``P_TouchSpecialThing`` and ``A_Look`` of that one play only and change nothing they do
-unless a scenario asks: damage factors, monsters that ignore the player): during a tic
-``self.events`` is that tic's list of ``Event(kind, target, source, amount, type)`` with
-kind ``"damage"``, ``"kill"``, ``"pickup"``, ``"shot"``.  The counters ViZDoom reports
-(damage dealt and taken, hits, hits taken) are kept beside them.
+``events`` (``Events``) are DOOM's own moments, read from the play's event log
+(``wallbsp.game.playsim.events``: ``P_DamageMobj``, ``P_KillMobj`` and
+``P_TouchSpecialThing`` record them; ``install_events`` makes the reader of one play):
+during a tic ``self.events`` is that tic's list of ``Event(kind, target, source, amount,
+type)`` with kind ``"damage"``, ``"kill"``, ``"pickup"``, ``"shot"``.  The counters ViZDoom
+reports (damage dealt and taken, hits, hits taken) are kept beside them.  What a scenario
+changes in the game (damage factors, monsters that ignore the player, its own pickups, no
+autoaim) are rules of the play itself (``Play.set_damage_factor``, ``keep_asleep``,
+``set_pickup_effect``, ``noautoaim``): no method of the play is replaced.
 
 Helpers (ACS → here): ``Spawn`` → ``spawn``; ``delay`` and timed spawns → ``later``;
 ``SetActorProperty(APROP_Speed/Health/DamageFactor)`` → ``set_speed``, ``set_health``,
@@ -42,6 +44,7 @@ from pathlib import Path
 from typing import NamedTuple
 
 from wallbsp.doom import info
+from wallbsp.game.playsim.events import Damaged, Killed, PickedUp
 
 __all__ = ["Scenario", "Event", "Events", "install_events", "THING_TYPES", "thing_type",
            "SCENARIO_DIR"]
@@ -92,78 +95,65 @@ class Event(NamedTuple):
 
 
 class Events:
-    """The hooks of one play and what they recorded (module docstring)."""
+    """What one play's event log said, as a scenario reads it (module docstring), and the
+    rules a scenario sets on that play."""
 
     def __init__(self, play):
         self.play = play
         self.events: list[Event] = []
+        # ViZDoom's counters of player 0 (DAMAGECOUNT, HITCOUNT, ...; current after read())
         self.damage_dealt = self.hits = self.damage_taken = self.hits_taken = 0
-        self.factors: dict = {}                  # mobj -> damage factor (ZDoom's)
-        self.ignoring: set = set()               # mobjs that never wake
-        self.custom: dict = {}                   # mobj -> its pickup's own effect
         self._ammo = sum(play.players[0].ammo)
-        damage, kill, touch = play.p_damage_mobj, play.p_kill_mobj, play.p_touch_special_thing
-        look = play.a_look
+        play.take_events()                  # what came before (the level's start) is not ours
 
-        def a_look(actor):
-            if actor not in self.ignoring:
-                look(actor)
+    # -- the play's rules (playsim: damage.py, monsters.py, interact.py, hitscan.py) --------
+    def set_factor(self, mo, factor) -> None:
+        self.play.set_damage_factor(mo, factor)
 
-        def p_damage_mobj(target, inflictor, source, amount):
-            factor = self.factors.get(target)
-            if factor is not None:
-                amount = int(amount * factor)
-                if amount <= 0:
-                    return
-            before, player = target.health, target.player
-            player_before = player.health if player is not None else 0
-            damage(target, inflictor, source, amount)
-            dealt = before - target.health
-            if dealt <= 0:
-                return
-            self.events.append(Event("damage", target, source, dealt, target.type))
-            me = play.players[0].mo
-            if source is me and target is not me:
-                self.damage_dealt += dealt
-                self.hits += 1
-            if player is not None and player is play.players[0]:
-                self.damage_taken += player_before - player.health
-                self.hits_taken += 1
+    def ignore(self, mo) -> None:
+        self.play.keep_asleep(mo)
 
-        def p_kill_mobj(source, target):
-            self.events.append(Event("kill", target, source, 0, target.type))
-            kill(source, target)
+    def on_pickup(self, mo, effect) -> None:
+        self.play.set_pickup_effect(mo, effect)
 
-        def p_touch_special_thing(special, toucher):
-            effect = self.custom.get(special)
-            if effect is not None:                 # DOOM's reach test, then the effect
-                delta = special.z - toucher.z
-                if delta > toucher.height or delta < -8 * FRAC or toucher.health <= 0:
-                    return
-                del self.custom[special]
-                effect(toucher.player)
-                play.p_remove_mobj(special)
-                self.events.append(Event("pickup", special, toucher, 0, special.type))
-                return
-            touch(special, toucher)
-            if special.func is None:
-                self.events.append(Event("pickup", special, toucher, 0, special.type))
+    @property
+    def noautoaim(self) -> bool:
+        return self.play.noautoaim
 
-        play.p_damage_mobj, play.p_kill_mobj = p_damage_mobj, p_kill_mobj
-        play.p_touch_special_thing = p_touch_special_thing
-        play.a_look = a_look
-        aim = play.p_aim_line_attack
-        self.noautoaim = False
+    @noautoaim.setter
+    def noautoaim(self, value) -> None:
+        self.play.noautoaim = bool(value)
 
-        def p_aim_line_attack(t1, angle, distance):
-            if self.noautoaim and t1.player is not None:
-                play.linetarget = None             # ZDoom's sv_noautoaim: straight ahead
-                return 0
-            return aim(t1, angle, distance)
-        play.p_aim_line_attack = p_aim_line_attack
+    # -- the log ------------------------------------------------------------------------
+    def read(self) -> None:
+        """Takes the play's log into ``events`` and the counters (the play is read by
+        this one reader: whatever else takes its log takes it from here)."""
+        log = self.play.take_events()
+        if not log:
+            return
+        me = self.play.players[0]
+        append = self.events.append
+        for e in log:
+            kind = type(e)
+            if kind is Damaged:
+                if e.amount <= 0:
+                    continue
+                target = e.target
+                append(Event("damage", target, e.source, e.amount, target.type))
+                if e.source is me.mo and target is not me.mo:
+                    self.damage_dealt += e.amount
+                    self.hits += 1
+                if target.player is me:     # the player's health stops at 0
+                    self.damage_taken += e.amount + min(0, e.health)
+                    self.hits_taken += 1
+            elif kind is Killed:
+                append(Event("kill", e.target, e.source, 0, e.target.type))
+            elif kind is PickedUp:
+                append(Event("pickup", e.item, e.toucher, 0, e.item.type))
 
     def after_tic(self) -> None:
-        """Records the rounds the player fired this tic (call after each tic)."""
+        """Reads the log and the rounds the player fired this tic (call after each tic)."""
+        self.read()
         ammo = sum(self.play.players[0].ammo)
         if ammo < self._ammo:
             self.events.append(Event("shot", None, self.play.players[0].mo,
@@ -171,13 +161,14 @@ class Events:
         self._ammo = ammo
 
     def take(self) -> list[Event]:
-        """This tic's events; the list starts again."""
+        """The events since the last take; the list starts again."""
+        self.read()
         events, self.events = self.events, []
         return events
 
 
 def install_events(world) -> Events:
-    """Hooks on ``world.play`` recording its events (module docstring)."""
+    """The reader of ``world.play``'s event log (module docstring)."""
     return Events(world.play)
 
 
@@ -284,7 +275,7 @@ class Scenario:
         """Picking ``mo`` up calls ``effect(player)`` (DOOM's ``player_t``) instead of
         DOOM's rule for its type, and always succeeds (a DECORATE item with
         ``INVENTORY.ALWAYSPICKUP``)."""
-        self.recorder.custom[mo] = effect
+        self.recorder.on_pickup(mo, effect)
 
     @staticmethod
     def remove(world, mo) -> None:
@@ -302,12 +293,12 @@ class Scenario:
 
     def set_damage_factor(self, mo, factor) -> None:
         """Damage to ``mo`` is multiplied by ``factor`` (ZDoom's APROP_DamageFactor)."""
-        self.recorder.factors[mo] = float(factor)
+        self.recorder.set_factor(mo, factor)
 
     def ignore_player(self, mo) -> None:
         """The thing never wakes (ViZDoom's ``Thing_Hate`` of a thing that is not there):
         its ``A_Look`` does nothing; shot, it still feels pain."""
-        self.recorder.ignoring.add(mo)
+        self.recorder.ignore(mo)
 
     @staticmethod
     def hate_player(world, mo) -> None:
@@ -375,7 +366,7 @@ class Scenario:
         play, p = world.play, world.play.players[0]
         play.p_setup_psprites(p)
         p.psprites[PS_WEAPON].sy = WEAPONTOP
-        play.p_set_psprite(p, PS_WEAPON, info.WEAPONINFO[p.readyweapon].readystate)
+        play.p_set_psprite(p, PS_WEAPON, play.weaponinfo[p.readyweapon].readystate)
 
     @staticmethod
     def damage(world, amount, target=None) -> None:

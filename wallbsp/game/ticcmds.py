@@ -19,37 +19,25 @@ from __future__ import annotations
 
 import math
 
-import numpy as np
-
+from wallbsp.game.arguments import describe, flag, integer, number
 from wallbsp.game.playsim.structs import (BT_ATTACK, BT_CHANGE, BT_USE, BT_WEAPONMASK,
                                           BT_WEAPONSHIFT, TicCmd)
 
 __all__ = ["TicCmd", "ticcmd", "as_ticcmd", "checked_number", "cmd_fields", "cmd_from_fields", "weapon_of",
-           "FORWARD_MOVE", "SIDE_MOVE", "MAX_TURN", "WEAPON_KEYS"]
+           "COMMAND_KEYWORDS", "FORWARD_MOVE", "SIDE_MOVE", "MAX_TURN", "WEAPON_KEYS"]
 
 FORWARD_MOVE = (25, 50)         # walking, running (g_game.c's forwardmove[])
 SIDE_MOVE = (24, 40)            # sidemove[]
 MAX_TURN = 360.0                # degrees a tic, either way
 WEAPON_KEYS = range(1, 9)
+COMMAND_KEYWORDS = ("forward", "strafe", "turn", "use", "run", "fire", "weapon")
 
 
 def checked_number(name, value, limit) -> float:
     """``value`` as a float within ±``limit``, or one ValueError line naming ``name``."""
     if type(value) is float and -limit <= value <= limit:
         return value
-    numeric = isinstance(value, (int, float, np.integer, np.floating)) \
-        and not isinstance(value, (bool, np.bool_))
-    number = float(value) if numeric else math.nan
-    if not -limit <= number <= limit:
-        raise ValueError(f"World: {name} must be a number within ±{limit:g}, not {value!r}")
-    return number
-
-
-def _flag(name, value) -> bool:
-    if isinstance(value, (bool, np.bool_)) or (isinstance(value, (int, np.integer))
-                                               and value in (0, 1)):
-        return bool(value)
-    raise ValueError(f"World: {name} must be true or false, not {value!r}")
+    return number("World", name, value, -limit, limit)
 
 
 def _round(value: float) -> int:
@@ -66,14 +54,12 @@ def ticcmd(forward=0.0, strafe=0.0, turn=0.0, use=False, run=False, fire=False,
     of range."""
     forward, strafe = checked_number("forward", forward, 1.0), checked_number("strafe", strafe, 1.0)
     turn = checked_number("turn", turn, MAX_TURN)
-    use, run, fire = _flag("use", use), _flag("run", run), _flag("fire", fire)
+    use, run = flag("World", "use", use), flag("World", "run", run)
+    fire = flag("World", "fire", fire)
     buttons = (BT_USE if use else 0) | (BT_ATTACK if fire else 0)
     if weapon is not None:
-        if isinstance(weapon, (bool, np.bool_)) or not isinstance(weapon, (int, np.integer)) \
-                or int(weapon) not in WEAPON_KEYS:
-            raise ValueError(f"World: weapon must be a weapon key 1 to 8 or None, "
-                             f"not {weapon!r}")
-        buttons |= BT_CHANGE | ((int(weapon) - 1) << BT_WEAPONSHIFT)
+        weapon = integer("World", "weapon (a weapon key, or None)", weapon, 1, 8)
+        buttons |= BT_CHANGE | ((weapon - 1) << BT_WEAPONSHIFT)
     speed = 1 if run else 0
     return TicCmd(forwardmove=_round(forward * FORWARD_MOVE[speed]),
                   sidemove=_round(strafe * SIDE_MOVE[speed]),
@@ -82,9 +68,10 @@ def ticcmd(forward=0.0, strafe=0.0, turn=0.0, use=False, run=False, fire=False,
 
 def as_ticcmd(cmd) -> TicCmd:
     """``cmd`` checked as a tic command: signed bytes for the moves, a signed 16-bit turn,
-    buttons a byte."""
+    buttons a byte; one of numpy's integers comes back as a new ``TicCmd`` of Python ints
+    (so none reaches the game's state), ``cmd`` itself otherwise."""
     if not isinstance(cmd, TicCmd):
-        raise TypeError(f"World: a tic command must be a TicCmd, not {type(cmd).__name__}")
+        raise ValueError(f"World: a tic command must be a TicCmd, not {describe(cmd)}")
     forwardmove, sidemove, angleturn, buttons = (cmd.forwardmove, cmd.sidemove,
                                                  cmd.angleturn, cmd.buttons)
     if (type(forwardmove) is int and type(sidemove) is int and type(angleturn) is int
@@ -92,14 +79,12 @@ def as_ticcmd(cmd) -> TicCmd:
             and -128 <= sidemove <= 127 and -32768 <= angleturn <= 32767
             and 0 <= buttons <= 255):
         return cmd                  # every command an environment makes: no more to see
-    for name, low, high in (("forwardmove", -128, 127), ("sidemove", -128, 127),
-                            ("angleturn", -32768, 32767), ("buttons", 0, 255)):
-        value = getattr(cmd, name)
-        if isinstance(value, bool) or not isinstance(value, (int, np.integer)) \
-                or not low <= value <= high:
-            raise ValueError(f"World: TicCmd.{name} must be an integer {low} to {high}, "
-                             f"not {value!r}")
-    return cmd
+    return TicCmd(*(integer("World", f"TicCmd.{name}", getattr(cmd, name), low, high)
+                    for name, low, high in _CMD_FIELDS))
+
+
+_CMD_FIELDS = (("forwardmove", -128, 127), ("sidemove", -128, 127),
+               ("angleturn", -32768, 32767), ("buttons", 0, 255))
 
 
 def cmd_fields(cmd: TicCmd) -> list:

@@ -18,11 +18,44 @@ from wallbsp.geometry import COORD_LIMIT
 # ---------------------------------------------------------------------------------------
 # Messages
 
-def conflict_warnings(segments, limit: int) -> list[tuple[int | None, str]]:
+# Walls that cross each other everywhere (random linedefs: 1,069 walls crossing 130,000
+# times) compile into a tree of 100 times as many segs as walls, and the tables a frame is
+# drawn from grow with the segs (~2 KB each: a 32x20 frame of such a map took 1 GB).  A
+# level's walls may cross at most this many times: a DOOM map's linedefs
+# never cross, and 60 walls crossing as a grid (900 times) are well within it.
+# docs/limits.md lists it with the other limits on what wallbsp reads.
+CROSSINGS_PER_WALL = 8
+CROSSINGS_SPARE = 4096
+
+
+def crossing_limit(walls: int) -> int:
+    """How many crossings a level of ``walls`` walls may have."""
+    return CROSSINGS_PER_WALL * walls + CROSSINGS_SPARE
+
+
+def seg_limit(walls: int) -> int:
+    """The segs a compiled tree of ``walls`` walls may have (a tree file is refused past
+    it): each crossing splits two walls, and the splitters' own splits are generously
+    counted (real levels: 1-2 segs a wall)."""
+    return 2 * crossing_limit(walls) + 16 * walls + CROSSINGS_SPARE
+
+
+def too_many_crossings(conflicts, walls: int):
+    """The one-line reason a level's crossings are refused, or None."""
+    count, limit = len(conflicts.crossings), crossing_limit(walls)
+    if count <= limit:
+        return None
+    return (f"the walls cross each other {count} times, more than a level may "
+            f"({CROSSINGS_PER_WALL} a wall + {CROSSINGS_SPARE} = {limit}): its tree would "
+            f"be some {2 * count + walls} segs")
+
+
+def conflict_warnings(segments, limit: int, conflicts=None) -> list[tuple[int | None, str]]:
     """``(wall index, what)`` for duplicates, overlaps and crossings, in that order and by
-    wall index, at most ``limit`` of each kind plus a ``(None, "... and N more ...")`` line."""
+    wall index, at most ``limit`` of each kind plus a ``(None, "... and N more ...")`` line
+    (``conflicts``: ``find_wall_conflicts(segments)`` when already found)."""
     seg = np.asarray(segments, dtype=np.int64).reshape(-1, 4)
-    conflicts = find_wall_conflicts(seg)
+    conflicts = find_wall_conflicts(seg) if conflicts is None else conflicts
     return (_capped([(j, f"duplicates walls[{i}] (same ends{_ends(seg, i)})")
                      for i, j in conflicts.duplicates.tolist()[:limit]],
                     "duplicate walls", len(conflicts.duplicates), limit)

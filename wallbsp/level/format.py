@@ -9,7 +9,7 @@ NO_TEXTURE = "-"             # DOOM's name for "no texture" on a side
 
 # the known keys of each kind of object; ..._2: those of version 2
 ROOT_KEYS = ("format", "version", "name", "vertices", "sectors", "walls", "start")
-ROOT_KEYS_2 = ROOT_KEYS + ("resources", "sky", "things", "thing_types")
+ROOT_KEYS_2 = ROOT_KEYS + ("resources", "sky", "things", "thing_types", "script")
 SECTOR_KEYS = ("floor", "ceiling", "light", "floor_color", "ceiling_color", "sky")
 SECTOR_KEYS_2 = SECTOR_KEYS + ("floor_texture", "ceiling_texture", "special", "tag")
 WALL_KEYS = ("v1", "v2", "front", "back", "color", "upper_color", "lower_color")

@@ -79,7 +79,7 @@ import os
 from pathlib import Path
 from typing import Any
 
-from wallbsp.level.conflicts import conflict_warnings
+from wallbsp.level.conflicts import conflict_warnings, find_wall_conflicts, too_many_crossings
 from wallbsp.files import STDIN, InputError, read_input, write_atomically
 from wallbsp.level.jsoncheck import ROOT, Checker, level_error
 from wallbsp.level.model import Level, LevelError
@@ -204,5 +204,10 @@ def _warn_suspicious(check: Checker, level: Level, check_conflicts: bool) -> Non
             check.warn(f"sectors[{i}].floor", f"floor {s.floor} is above ceiling {s.ceiling} "
                                               f"(drawn closed, like a shut door)")
     if check_conflicts and len(level.walls) > 1:
-        for wall, what in conflict_warnings(level.segments(), MAX_REPORTED):
+        segments = level.segments()
+        conflicts = find_wall_conflicts(segments)
+        refused = too_many_crossings(conflicts, len(level.walls))
+        if refused:
+            raise level_error(level.source, "walls", refused)
+        for wall, what in conflict_warnings(segments, MAX_REPORTED, conflicts):
             check.warn("walls" if wall is None else f"walls[{wall}]", what)

@@ -129,6 +129,7 @@ class Level:
     things: tuple[Thing, ...] = ()
     thing_types: dict[int, ThingType] = field(default_factory=dict)
     sky: str | None = None
+    script: str | None = None       # a Python file of level scripts, relative like resources
     # where a level came from and what was suspicious about it are not its content
     source: str = field(default="<level>", compare=False)   # the file name used in messages
     warnings: list[str] = field(default_factory=list, compare=False)
@@ -140,6 +141,12 @@ class Level:
         ends = np.fromiter((v for w in self.walls for v in (w.v1, w.v2)), np.int64,
                            2 * len(self.walls))
         return vertices[ends].reshape(-1, 4)
+
+    def script_path(self) -> Path | None:
+        """``script`` as a path (relative to the level file's folder), or None."""
+        if self.script is None:
+            return None
+        return (self.source_dir if self.source_dir is not None else Path()) / self.script
 
     def resource_paths(self) -> tuple[Path, ...]:
         """``resources`` as paths: relative ones from the level file's folder (the current

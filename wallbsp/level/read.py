@@ -225,6 +225,8 @@ def _read_extras(check: Checker, root: dict) -> dict[str, Any]:
                                                                         "resources")))
     if root.get("sky") is not None:
         extras["sky"] = check.name(root["sky"], "sky", "a sky texture name")
+    if root.get("script") is not None:
+        extras["script"] = _read_resource(check, root["script"], "script")
     if "things" in root:
         extras["things"] = tuple(_read_thing(check, item, f"things[{i}]")
                                  for i, item in enumerate(check.list(root["things"], "things")))

@@ -53,6 +53,8 @@ def _level_extras(level: Level) -> dict[str, Any]:
         extras["resources"] = list(level.resources)
     if level.sky is not None:
         extras["sky"] = level.sky
+    if level.script is not None:
+        extras["script"] = level.script
     if level.things:
         extras["things"] = [_thing_dict(t) for t in level.things]
     if level.thing_types:

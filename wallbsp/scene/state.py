@@ -1,7 +1,7 @@
 """Run-time state over a compiled tree that never changes: what moves lives here.
 
 The tree and the level are fixed; a door that opens changes ``WorldState.ceiling`` and
-nothing else.  Renderer and queries read the *current* heights from a ``WorldState``, and
+nothing else.  The renderer reads the *current* heights from a ``WorldState``, and
 whatever they derive from them (which two-sided walls are closed, the wall parts' heights)
 is cached against ``version``, which every change increments.
 

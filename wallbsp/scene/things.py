@@ -24,10 +24,8 @@ grouped by leaf that is rebuilt on first use after a change (one argsort), so mo
 things in a tic costs one vectorised locate (``locate_leaves``) and no regrouping until a
 frame asks.
 
-``overlapping`` and ``solid_boxes_near`` (asked by every move) read a blockmap,
-as DOOM's P_BlockThingsIterator does: the alive things with the asked flags by 128-unit
-cell, remade only after a thing with those flags is added, moved or removed.  A step near
-none of them costs one dictionary look-up, however many things the map has.
+What blocks a mover is the play simulation's (``game.playsim``: DOOM's blockmap and
+P_CheckPosition); these arrays are what the renderer draws.
 """
 from __future__ import annotations
 
@@ -35,11 +33,9 @@ import weakref
 
 import numpy as np
 
-from wallbsp.scene.blockmap import Blockmap
 from wallbsp.geometry import exact_side
-from wallbsp.scene.collision import box_sides
 from wallbsp.scene import leafwalk
-from wallbsp.scene.thingtypes import (DEATHMATCH_START, PLAYER_STARTS, SOLID, SPAWNCEILING,
+from wallbsp.scene.thingtypes import (DEATHMATCH_START, PLAYER_STARTS, SPAWNCEILING,
     thing_info)
 
 __all__ = ["Things", "level_things", "spawned_at", "locate_leaves", "leaf_sectors",
@@ -183,7 +179,6 @@ class Things:
         self._infos: dict = {}
         self._grouped = None             # (thing ids by leaf, start of each leaf)
         self._boxes = None               # (version, subtree_boxes)
-        self._blockmaps: dict = {}       # mobj flags -> Blockmap of the alive things with them
 
     def __len__(self) -> int:
         return len(self.x)
@@ -249,21 +244,11 @@ class Things:
         self._changed(i)
 
     def _changed(self, i):
-        """Things ``i`` changed: caches out of date, but blockmaps only for their flags."""
+        """Things ``i`` changed: the groups by leaf and the boxes are out of date."""
         self.version += 1
         self._grouped = None
-        self._unlisted(i)
 
-    def _unlisted(self, i):
-        """Things ``i``, none of them drawn before or now, changed: only the blockmaps of
-        their flags are out of date (the drawn things' groups and boxes, and ``version``
-        that keys what a frame keeps, are not)."""
-        if self._blockmaps:
-            flags = self.flags[i]
-            touched = int(np.bitwise_or.reduce(flags, axis=None)) if flags.size else 0
-            self._blockmaps = {k: v for k, v in self._blockmaps.items() if not k & touched}
-
-    # -- what the renderer and the rules read ---------------------------------------------
+    # -- what the renderer reads ---------------------------------------------
     def _groups(self):
         if self._grouped is None:
             linked = np.flatnonzero(self.alive & self.drawn)
@@ -308,49 +293,6 @@ class Things:
                                 self.y, reach, linked)
         self._boxes = (self.version, boxes)
         return boxes
-
-    def overlapping(self, x, y, radius, flags) -> np.ndarray:
-        """Alive things with any of DOOM's mobj ``flags`` (``thingtypes.SOLID``, ``SPECIAL``)
-        whose box meets a mover of ``radius`` at (x, y): DOOM's PIT_CheckThing test,
-        ``|dx| < r + radius`` and ``|dy| < r + radius`` (boxes, not circles)."""
-        near = self._blockmap(flags).near(float(x), float(y), float(radius))
-        return np.array(near, dtype=np.int64)
-
-    def _blockmap(self, flags) -> Blockmap:
-        flags = int(flags)
-        found = self._blockmaps.get(flags)
-        if found is None:
-            ids = np.flatnonzero(self.alive & ((self.flags & flags) != 0))
-            found = self._blockmaps[flags] = Blockmap(
-                ids, self.x[ids], self.y[ids], self.radius[ids])
-        return found
-
-    def box_sides(self, i) -> list:
-        """The four sides ``(x1, y1, x2, y2)`` of each thing's box (half-size its radius), as
-        a mover's blocking segments: a circle kept ``radius`` away from them stays out of
-        DOOM's blocking square but for its rounded corners (``segments.box_sides``)."""
-        i = np.atleast_1d(np.asarray(i, dtype=np.int64))
-        boxes = zip(self.x[i].tolist(), self.y[i].tolist(), self.radius[i].tolist())
-        return [side for box in boxes for side in box_sides(*box)]
-
-    def solid_boxes(self) -> np.ndarray:
-        """``(n, 3)`` float64: ``x, y, radius`` of every alive solid thing, by index (what
-        the compiled move tests each sub-step; remade when such a thing changes)."""
-        return (self._blockmaps.get(SOLID) or self._blockmap(SOLID)).boxes
-
-    def solid_boxes_near(self, x, y, reach) -> list:
-        """``[(x, y, radius), ...]`` of the alive solid things whose box meets a mover of
-        ``reach`` at (x, y) (``overlapping``'s test), by index.  DOOM blocks a solid thing
-        at every height (its thing collision ignores z; most decorations are 16 high in its
-        table), so z plays no part."""
-        blockmap = self._blockmaps.get(SOLID) or self._blockmap(SOLID)
-        near = blockmap.near(x, y, reach)
-        return [blockmap.box[i] for i in near] if near else []
-
-    def solid_sides(self, x, y, reach) -> list:
-        """``(x1, y1, x2, y2)`` sides of the boxes of the alive solid things that come within
-        ``reach`` of (x, y) (``solid_boxes_near``), as blocking segments for a mover's sweep."""
-        return [side for box in self.solid_boxes_near(x, y, reach) for side in box_sides(*box)]
 
     def feet(self, i, floor, ceiling) -> np.ndarray:
         """Feet heights of things ``i`` with sector heights ``floor``/``ceiling`` now: the

@@ -10,7 +10,7 @@ The numbers are DOOM's (linuxdoom-1.10 ``info.c``: ``mobjinfo`` and the spawn st
 ``p_inter.c``: what a pickup gives).  ``rotates`` says whether the spawn frame has eight
 rotations (lumps ``XXXXA1``..``A8``, some mirrored) or one (``XXXXA0``), as the sprite lumps
 of DOOM and Freedoom have it.  ``height`` is DOOM's: 16 for most decorations, which vanilla
-DOOM blocks at every height anyway (its thing collision ignores z).
+DOOM blocks at every height anyway (its PIT_CheckThing ignores z).
 """
 from __future__ import annotations
 

@@ -152,11 +152,11 @@ class OwnArt(_Art):
     as DOOM places weapons: centred, their bottom on the view's at the top of the raise."""
     paletted = False
 
-    def __init__(self, folder=OWN_ART):
+    def __init__(self, folder=OWN_ART, before=()):
         super().__init__()
         from wallbsp.assets.resources import ResourceSet
         self.folder = Path(folder)
-        self._set = ResourceSet([self.folder])
+        self._set = ResourceSet([*before, self.folder])
         self._placed: dict = {}
         self.colormap = None
         self.tints = blend_tints()
@@ -191,13 +191,17 @@ class OwnArt(_Art):
 
 
 def art_for(play):
-    """The art of ``play``'s WADs (cached per WAD files), or our own without a WAD."""
+    """The art of ``play``'s WADs (cached per WAD files), or our own without a WAD, after
+    the ``hud/`` folders of the level's resource folders (a game's own weapons)."""
     paths = ((play.wad_path,) + tuple(getattr(play, "wad_files", ()))
              if getattr(play, "wad_path", None) else ())
-    key = tuple((os.path.realpath(p), os.stat(p).st_mtime_ns) for p in paths)
+    source = getattr(play, "levelsource", None)
+    own = () if paths or not source else tuple(
+        p / "hud" for p in source[0].resource_paths() if (p / "hud").is_dir())
+    key = tuple((os.path.realpath(p), os.stat(p).st_mtime_ns) for p in paths + own)
     art = _CACHE.get(key)
     if art is None:
-        art = _CACHE[key] = WadArt(paths) if paths else OwnArt()
+        art = _CACHE[key] = WadArt(paths) if paths else OwnArt(before=own)
         while len(_CACHE) > _CACHE_SIZE:
             _CACHE.popitem(last=False)
     return art

@@ -115,7 +115,8 @@ class Hud:
         if self.invert_view and player.fixedcolormap == INVERSE:
             art.invert(frame[:vh])
         if self.weapon:
-            self.fuzz_pos = draw_psprites(frame, player, art, vw, vh, self.fuzz_pos)
+            self.fuzz_pos = draw_psprites(frame, player, art, vw, vh, self.fuzz_pos,
+                                          play.tables)
         if self.statusbar:
             frame[vh:] = self._scaled_bar(play, player, art, width, height - vh)
         if self.messages and self.message.on:

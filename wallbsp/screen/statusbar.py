@@ -195,7 +195,7 @@ def bar_patches(play, player, face_index: int, widths, index=None) -> list[tuple
         if neg:
             out.append(("STTMINUS", x - 8, y))
 
-    ammo = info.WEAPONINFO[player.readyweapon].ammo
+    ammo = play.tables.weaponinfo[player.readyweapon].ammo
     number(ST_AMMOX, ST_AMMOY, NO_AMMO if ammo == info.am_noammo else player.ammo[ammo],
            3, "STTNUM")
     for i in range(4):

@@ -22,6 +22,7 @@ import numpy as np
 
 from wallbsp.screen.remap import fuzz, paste
 from wallbsp.doom import info
+from wallbsp.doom.tables import DOOM
 from wallbsp.doom.fixed import FRACBITS, FRACUNIT, fixed_mul
 
 __all__ = ["draw_psprites", "psprite_columns", "sprite_level", "WEAPONTOP", "FF_FULLBRIGHT"]
@@ -83,16 +84,18 @@ def psprite_columns(sx, sy, picture, flipped, view_width, view_height):
     return vx1 + first, cols, int(inside[0]), rows[inside[0]:inside[-1] + 1]
 
 
-def draw_psprites(frame, player, art, view_width, view_height, fuzz_pos=0) -> int:
+def draw_psprites(frame, player, art, view_width, view_height, fuzz_pos=0,
+                  tables=DOOM) -> int:
     """R_DrawPlayerSprites into ``frame`` (``(height, width, 3)``, the view at its top left);
-    returns the fuzz position after (DOOM's ``fuzzpos`` runs on across frames)."""
+    returns the fuzz position after (DOOM's ``fuzzpos`` runs on across frames).
+    ``tables``: the play's object tables (``play.tables``)."""
     invisible = player.powers[info.pw_invisibility]
     shadow = invisible > 4 * 32 or invisible & 8
     for psp in player.psprites:
         if psp.state is None:
             continue
-        state = info.STATES[psp.state]
-        found = art.sprite(info.SPRNAMES[state.sprite],
+        state = tables.states[psp.state]
+        found = art.sprite(tables.sprnames[state.sprite],
                            chr(ord("A") + (state.frame & FF_FRAMEMASK)))
         if found is None:
             continue

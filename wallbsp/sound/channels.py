@@ -83,12 +83,14 @@ class Channel:
 
 class Channels:
     """The channel table of ``s_sound.c``.  ``device``: see the module docstring.
-    ``sfx_volume``: ``snd_SfxVolume`` (the menu's 0-15 times 8: 64 by default)."""
+    ``sfx_volume``: ``snd_SfxVolume`` (the menu's 0-15 times 8: 64 by default);
+    ``sfx_table``: the sounds by number (the heard play's ``tables.sfx``)."""
 
-    def __init__(self, device, sfx_volume=64, num_channels=NUM_CHANNELS):
+    def __init__(self, device, sfx_volume=64, num_channels=NUM_CHANNELS, sfx_table=info.SFX):
         if not 0 <= sfx_volume <= 127:
             raise ValueError(f"Attempt to set sfx volume at {sfx_volume}")
         self.device = device
+        self.sfx_table = sfx_table
         self.sfx_volume = sfx_volume
         self.channels = [Channel() for _ in range(num_channels)]
 
@@ -131,9 +133,9 @@ class Channels:
                 break
             cnum += 1
         if cnum == n:
-            priority = info.SFX[sfx_id].priority
+            priority = self.sfx_table[sfx_id].priority
             for cnum in range(n):
-                if info.SFX[channels[cnum].sfx].priority >= priority:
+                if self.sfx_table[channels[cnum].sfx].priority >= priority:
                     break
             else:
                 return -1
@@ -147,9 +149,9 @@ class Channels:
         """S_StartSound.  Returns ``(status, cnum, volume, sep, pitch)``: status "started"
         (``cnum`` the channel), "nochannel" (no channel of lower importance), "inaudible"
         (too far) or "quiet" (a linked sound's volume below 1)."""
-        if sfx_id < 1 or sfx_id > len(info.SFX):
+        if sfx_id < 1 or sfx_id > len(self.sfx_table):
             raise ValueError(f"Bad sfx #: {sfx_id}")
-        sfx = info.SFX[sfx_id]
+        sfx = self.sfx_table[sfx_id]
         volume = self.sfx_volume
         pitch = NORM_PITCH
         sep = NORM_SEP
@@ -192,7 +194,7 @@ class Channels:
                 self.stop_channel(cnum)
                 continue
             volume, sep = self.sfx_volume, NORM_SEP
-            sfx = info.SFX[c.sfx]
+            sfx = self.sfx_table[c.sfx]
             if sfx.link:
                 volume += sfx.volume
                 if volume < 1:

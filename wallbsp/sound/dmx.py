@@ -41,11 +41,23 @@ def decode(lump):
     return DmxSound(rate, data.copy())
 
 
-def lump_name(sfx_id):
-    """``"DS" + name`` of the sound ``sfx_id`` plays (its link's, if it has one)."""
-    sfx = info.SFX[sfx_id]
+def encode(rate, samples) -> bytes:
+    """A DMX lump of unsigned 8-bit mono ``samples`` at ``rate`` Hz (the padding DMX skips
+    repeats the first and last sample)."""
+    samples = np.asarray(samples, dtype=np.uint8)
+    if not len(samples):
+        samples = np.full(1, 128, np.uint8)
+    body = np.concatenate([np.repeat(samples[:1], PADDING), samples,
+                           np.repeat(samples[-1:], PADDING)])
+    return HEADER.pack(3, rate, len(body)) + body.tobytes()
+
+
+def lump_name(sfx_id, sfx_table=info.SFX):
+    """``"DS" + name`` of the sound ``sfx_id`` of ``sfx_table`` (a play's ``tables.sfx``;
+    DOOM's by default) plays (its link's, if it has one)."""
+    sfx = sfx_table[sfx_id]
     if sfx.link:
-        sfx = info.SFX[sfx.link]
+        sfx = sfx_table[sfx.link]
     return "DS" + sfx.name.upper()
 
 

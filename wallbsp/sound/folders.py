@@ -1,6 +1,7 @@
 """Sound effects from folders, for levels that name no WAD: a resource folder of a level
 (the PNG folders of SPEC §2b) may hold ``sounds/DSNAME.lmp`` files, DMX lumps as a WAD
-holds them (``dmx``), named as DOOM's ``DS*`` lumps.  The game level's own synthesised
+holds them (``dmx``), named as DOOM's ``DS*`` lumps, or ``sounds/DSNAME.wav`` files (PCM,
+8 or 16 bits, mono or stereo, made into DMX: mono, 8 bits, at most 44,100 Hz).  The game level's own synthesised
 sounds (``tools/make_game_sounds.py``) live in ``wallbsp/data/game/sounds``.
 
     folder_lumps(Path("wallbsp/data/game"))   # {"DSPISTOL": b"...", ...}
@@ -13,9 +14,15 @@ that sound then plays nothing, as a missing lump does.
 """
 from __future__ import annotations
 
+import io
+import wave
 from pathlib import Path
 
+import numpy as np
+
 from wallbsp.files import InputError, read_input
+
+from . import dmx
 
 __all__ = ["MAX_BYTES", "SOUND_FOLDER", "folder_lumps", "level_lumps", "play_lumps"]
 
@@ -33,13 +40,33 @@ def folder_lumps(folder) -> dict[str, bytes]:
     out = {}
     for entry in entries:
         name = entry.stem.upper()
-        if entry.suffix.lower() != ".lmp" or not name.startswith("DS") or name in out:
+        suffix = entry.suffix.lower()
+        if suffix not in (".lmp", ".wav") or not name.startswith("DS") or name in out:
             continue
         try:
-            out[name] = read_input(entry, MAX_BYTES)
-        except InputError:
+            data = read_input(entry, MAX_BYTES if suffix == ".lmp" else 8 * MAX_BYTES)
+            out[name] = data if suffix == ".lmp" else wav_lump(data)
+        except (InputError, ValueError):
             continue
     return out
+
+
+def wav_lump(data: bytes) -> bytes:
+    """A WAV file's sound as a DMX lump; ValueError for anything but PCM."""
+    try:
+        with wave.open(io.BytesIO(data)) as w:
+            width, channels, rate = w.getsampwidth(), w.getnchannels(), w.getframerate()
+            frames = w.readframes(w.getnframes())
+    except (wave.Error, EOFError) as e:
+        raise ValueError(f"not a WAV file: {e}") from None
+    if width not in (1, 2) or not 1 <= channels <= 2 or not 4000 <= rate <= 44100:
+        raise ValueError("not 8/16-bit PCM at 4-44.1 kHz")
+    if width == 1:
+        samples = np.frombuffer(frames, np.uint8).astype(np.int32) - 128
+    else:
+        samples = np.frombuffer(frames, "<i2").astype(np.int32) >> 8
+    samples = samples.reshape(-1, channels).mean(axis=1)
+    return dmx.encode(rate, np.clip(np.round(samples) + 128, 0, 255).astype(np.uint8))
 
 
 def level_lumps(level) -> dict[str, bytes]:

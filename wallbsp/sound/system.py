@@ -22,7 +22,6 @@ as ``I_StartSound`` failing does in Chocolate Doom.
 import sys
 from typing import NamedTuple, Optional
 
-from wallbsp.doom import info
 
 from . import dmx
 from .channels import Channels, NUM_CHANNELS
@@ -138,7 +137,7 @@ class SoundSystem:
 
     def sound_for(self, sfx_id):
         """The decoded ``DmxSound`` sfx ``sfx_id`` plays, or None (no lump, or not DMX)."""
-        name = dmx.lump_name(sfx_id)
+        name = dmx.lump_name(sfx_id, self.channels.sfx_table)
         if name not in self._sounds:
             self._sounds[name] = dmx.decode(self._read_lump(name))
         return self._sounds[name]
@@ -158,6 +157,11 @@ class SoundSystem:
         self.play = play
         play.sound = self
         self._level = None
+        sfx_table = play.tables.sfx
+        if self.channels.sfx_table is not sfx_table:     # a game's own sounds: ids anew
+            self.channels.sfx_table = sfx_table
+            if self.mixer is not None:
+                self.mixer.cache.clear()
         folder_lumps = play_lumps(play)
         if folder_lumps != self._folder_lumps:     # another level's sounds: decode anew
             self._folder_lumps = folder_lumps
@@ -170,7 +174,7 @@ class SoundSystem:
     def precache(self):
         """I_PrecacheSounds: decode (and for the mixer, resample) every sound now, so a
         tic never waits for it."""
-        for sfx_id in range(1, len(info.SFX)):
+        for sfx_id in range(1, len(self.channels.sfx_table)):
             if self.mixer is not None:
                 self.mixer.prepare(sfx_id)
             else:
@@ -219,9 +223,10 @@ class SoundSystem:
             seen = None if listener is None else \
                 (listener.x, listener.y, listener.angle & 0xFFFFFFFF)
             mapnum = play.gameepisode * 10 + play.gamemap
+            sfx = self.channels.sfx_table[sfx_id]
             self.events.append(SoundEvent(
-                play.gametic, play.leveltime, mapnum, sfx_id, info.SFX[sfx_id].name, kind,
-                ref, x, y, seen, status, cnum, volume, sep, pitch, info.SFX[sfx_id].priority))
+                play.gametic, play.leveltime, mapnum, sfx_id, sfx.name, kind,
+                ref, x, y, seen, status, cnum, volume, sep, pitch, sfx.priority))
 
     def _sector_of(self, soundorg):
         for sector in getattr(self.play, "sectors", ()):

@@ -18,7 +18,12 @@ How the port is organised (read this before adding to it):
   unsigned 32-bit ints; every random number from ``self.rng.p_random()`` in DOOM's order.
   C's 32-bit wrap-around is applied where DOOM relies on it (``fixed.wrap32``).
 - **Structures** are in ``structs.py`` with C's field names; a mobj's ``state`` is an index
-  into ``sim.info.STATES``; ``info`` is its ``MobjInfo`` record.
+  into the play's ``states``; ``info`` is its ``MobjInfo`` record.
+- **DOOM's tables are the play's own.**  ``self.tables`` (``doom.tables.Tables``) holds
+  ``info.py``'s tables, or a game's with its own actors added; ``set_tables`` binds
+  ``self.states``, ``self.mobjinfo``, ``self.weaponinfo`` and ``self.state_rows`` for the hot
+  paths.  Read them there, never ``info.STATES`` and its like: skill 5 and a game's actors
+  change the play's tables only, so plays of different skills or games share a process.
 """
 import re
 

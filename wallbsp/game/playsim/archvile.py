@@ -24,7 +24,7 @@ class ArchVile:
             return True                       # not lying still yet
         if thing.info.raisestate == info.S_NULL:
             return True                       # no raise state
-        maxdist = thing.info.radius + info.MOBJINFO[info.MT_VILE].radius
+        maxdist = thing.info.radius + self.mobjinfo[info.MT_VILE].radius
         if abs(thing.x - self.viletryx) > maxdist or abs(thing.y - self.viletryy) > maxdist:
             return True                       # not actually touching
         self.corpsehit = thing

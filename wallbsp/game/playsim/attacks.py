@@ -268,7 +268,7 @@ class MonsterAttacks:
             return                            # already 20 skulls on the level
         an = angle >> ANGLETOFINESHIFT
         prestep = 4 * FRACUNIT \
-            + 3 * (actor.info.radius + info.MOBJINFO[info.MT_SKULL].radius) // 2
+            + 3 * (actor.info.radius + self.mobjinfo[info.MT_SKULL].radius) // 2
         x = wrap32(actor.x + fixed_mul(prestep, FINECOSINE[an]))
         y = wrap32(actor.y + fixed_mul(prestep, FINESINE[an]))
         z = actor.z + 8 * FRACUNIT

@@ -83,7 +83,7 @@ class BossBrain:
         newmobj.target = targ
         # the cube flies until it reaches the spot's y
         newmobj.reactiontime = c_div(c_div(targ.y - mo.y, newmobj.momy),
-                                    info.STATES[newmobj.state].tics)
+                                    self.states[newmobj.state].tics)
         self.s_start_sound(None, info.sfx_bospit)
 
     def a_spawn_sound(self, mo):

@@ -3,7 +3,12 @@
 ``Damage`` is a mixin of ``Play`` with no per-level state of its own.  It reads
 ``self.players``, ``self.gameskill``, ``self.gameversion`` and ``self.netgame``, and calls
 ``p_spawn_mobj``, ``p_set_mobj_state`` and ``p_drop_weapon`` through ``self``.
+
+Beyond DOOM (unused by its content, so the demos are untouched): ZDoom's damage factor of
+one thing (``APROP_DamageFactor``), ``set_damage_factor(mobj, factor)``: what
+``P_DamageMobj`` is asked to do to it is multiplied first, and a blow of 0 does nothing.
 """
+from wallbsp.game.playsim.events import Damaged, Killed
 from wallbsp.game.playsim.structs import SK_BABY, PST_DEAD, EXE_DOOM_1_2, EXE_CHEX
 from wallbsp.doom import info
 from wallbsp.doom.fixed import FRACUNIT, ANG180, ANGLETOFINESHIFT, FINESINE, FINECOSINE, \
@@ -22,7 +27,15 @@ DROPS = {
 class Damage:
     """``p_inter.c``'s second half: damaging and killing."""
 
+    damage_factors = None               # mobj -> ZDoom's damage factor (module docstring)
+
+    def set_damage_factor(self, mobj, factor):
+        if self.damage_factors is None:
+            self.damage_factors = {}
+        self.damage_factors[mobj] = float(factor)
+
     def p_kill_mobj(self, source, target):
+        self.events.append(Killed(target, source))
         target.flags &= ~(info.MF_SHOOTABLE | info.MF_FLOAT | info.MF_SKULLFLY)
         if target.type != info.MT_SKULL:
             target.flags &= ~info.MF_NOGRAVITY
@@ -66,6 +79,10 @@ class Damage:
         """Damage an enemy or a player.  ``inflictor`` caused it (a creature or missile, or
         None: slime...); ``source`` is who to target after taking it (None: the
         environment)."""
+        if self.damage_factors is not None and target in self.damage_factors:
+            damage = int(damage * self.damage_factors[target])
+            if damage <= 0:
+                return
         if not (target.flags & info.MF_SHOOTABLE):
             return                          # shouldn't happen...
         if target.health <= 0:
@@ -87,6 +104,7 @@ class Damage:
                 return                      # god mode or invulnerable
         # do the damage
         target.health -= damage
+        self.events.append(Damaged(target, inflictor, source, damage, target.health))
         if target.health <= 0:
             self.p_kill_mobj(source, target)
             return

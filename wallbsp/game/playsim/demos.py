@@ -12,6 +12,7 @@ raises ``DemoError`` (a ``ValueError``) naming the source and the byte offset.
 """
 import os
 import struct
+from collections.abc import Sequence
 from dataclasses import dataclass, field
 
 from wallbsp.files import InputError, read_input
@@ -58,7 +59,8 @@ class Demo:
     nomonsters: bool = False
     consoleplayer: int = 0
     playeringame: list = field(default_factory=lambda: [True, False, False, False])
-    tics: list = field(default_factory=list)     # tics[n][player]: DemoTic (players in game)
+    tics: list = field(default_factory=list)     # tics[n][player]: DemoTic (players in game);
+    #                                              a DemoTics when read from a file
     source: str = "<demo>"
     version: int = DEMO_VERSION
 
@@ -78,7 +80,9 @@ def _signed16(v: int) -> int:
 
 
 def parse_demo(data: bytes, source: str = "<demo>") -> Demo:
-    """The demo in ``data``; ``source`` names it in messages."""
+    """The demo in ``data``; ``source`` names it in messages.  Its end marker is found
+    before any tic is made, and ``tics`` is a ``DemoTics``: each tic's commands made when
+    it is read, so a demo costs its bytes however long it is."""
     data = bytes(data)
     if len(data) < HEADER_SIZE:
         raise DemoError(f"{source}: byte {len(data)}: truncated header ({len(data)} bytes, a "
@@ -105,26 +109,62 @@ def parse_demo(data: bytes, source: str = "<demo>") -> Demo:
         raise DemoError(f"{source}: bytes 9-12: no player in the game; not a DOOM demo")
     if console >= MAXPLAYERS or not ingame[console]:
         raise DemoError(f"{source}: byte 8: console player {console} is not in the game")
-    demo = Demo(skill, episode, gamemap, deathmatch, bool(respawn), bool(fast),
-                bool(nomonsters), console, ingame, [], source)
     count = sum(ingame)
-    pos = HEADER_SIZE
-    while True:
-        if pos >= len(data):
-            raise DemoError(f"{source}: byte {pos}: truncated: the demo ends without its end "
-                            f"marker (0x80) after {len(demo.tics)} tics")
-        if data[pos] == DEMOMARKER:
-            break
-        if pos + TIC_SIZE * count > len(data):
-            raise DemoError(f"{source}: byte {pos}: truncated tic {len(demo.tics)} "
-                            f"({len(data) - pos} bytes left, a tic is {TIC_SIZE * count})")
+    tics = DemoTics(data, count, _tic_count(data, count, source))
+    return Demo(skill, episode, gamemap, deathmatch, bool(respawn), bool(fast),
+                bool(nomonsters), console, ingame, tics, source)
+
+
+def _tic_count(data: bytes, players: int, source: str) -> int:
+    """The tics before the end marker (``G_ReadDemoTiccmd`` stops at a tic whose first byte
+    is 0x80), found in the tics' first bytes alone."""
+    stride = TIC_SIZE * players
+    end = data.find(bytes([DEMOMARKER]), HEADER_SIZE) if stride == 1 else \
+        data[HEADER_SIZE::stride].find(bytes([DEMOMARKER]))
+    if end < 0:
+        whole = (len(data) - HEADER_SIZE) // stride
+        pos = HEADER_SIZE + whole * stride
+        if pos < len(data):
+            raise DemoError(f"{source}: byte {pos}: truncated tic {whole} "
+                            f"({len(data) - pos} bytes left, a tic is {stride})")
+        raise DemoError(f"{source}: byte {pos}: truncated: the demo ends without its end "
+                        f"marker (0x80) after {whole} tics")
+    return end
+
+
+class DemoTics(Sequence):
+    """A demo's tics as ``tics[n][player]`` (``DemoTic`` rows, the players in the game in
+    order), made from the demo's bytes when read."""
+
+    def __init__(self, data: bytes, players: int, count: int):
+        self.data, self.players, self.count = data, players, count
+
+    def __len__(self) -> int:
+        return self.count
+
+    def __getitem__(self, n):
+        if isinstance(n, slice):
+            return [self._row(k) for k in range(*n.indices(self.count))]
+        if not -self.count <= n < self.count:
+            raise IndexError(f"tic {n} of {self.count}")
+        return self._row(n % self.count)
+
+    def __iter__(self):
+        for n in range(self.count):
+            yield self._row(n)
+
+    def _row(self, n: int) -> list:
+        data, pos = self.data, HEADER_SIZE + n * TIC_SIZE * self.players
         row = []
-        for _ in range(count):
+        for _ in range(self.players):
             fwd, side, turn, buttons = data[pos:pos + TIC_SIZE]
             row.append(DemoTic(_signed8(fwd), _signed8(side), _signed16(turn << 8), buttons))
             pos += TIC_SIZE
-        demo.tics.append(row)
-    return demo
+        return row
+
+    def __eq__(self, other):
+        return list(self) == list(other) if isinstance(other, (list, Sequence)) \
+            else NotImplemented
 
 
 def read_demo(path) -> Demo:

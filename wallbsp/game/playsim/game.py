@@ -15,11 +15,12 @@ Sounds: ``s_start_sound``/``s_stop_sound`` count calls and forward them to ``sel
 """
 import os
 
-from wallbsp.doom import info
-from wallbsp.doom.fixed import FRACUNIT
+from wallbsp.doom import tables as doom_tables
 from wallbsp.doom.rng import Random
 
 from .demos import DemoError, wad_entries
+from .events import SoundStarted
+from .mobjs import state_rows
 from .structs import (BT_SPECIAL, COMMERCIAL, EXE_DOOM_1_9, EXE_FINAL, EXE_ULTIMATE, MAXPLAYERS,
                       PST_DEAD, PST_REBORN, REGISTERED, RETAIL, SHAREWARE, SK_BABY, SK_NIGHTMARE,
                       MapThing, Player)
@@ -31,28 +32,35 @@ GS_LEVEL, GS_INTERMISSION, GS_FINALE, GS_DEMOSCREEN = range(4)
 BTS_PAUSE, BTS_SAVEGAME, BTS_SPECIALMASK = 1, 2, 3
 
 
-_fast_monsters = False                    # whether info's tables hold the fast values now
+def bind_tables(play, tables):
+    """``play`` reads ``tables`` from now on.  The tables the hot paths index are bound
+    here once, as attributes, not looked up at every use."""
+    play.tables = tables
+    play.states, play.mobjinfo, play.weaponinfo = (
+        tables.states, tables.mobjinfo, tables.weaponinfo)
+    play.state_rows = state_rows(tables)
+    with_actions = game_class(type(play), tables)
+    if with_actions is not type(play):
+        play.__class__ = with_actions
+    for p in getattr(play, "players", ()):        # room for a game's own weapons
+        p.weaponowned += [0] * (len(tables.weaponinfo) - len(p.weaponowned))
 
 
-def set_fast_monsters(fast: bool) -> None:
-    """G_InitNew's fast monsters (skill 5 or -fast): demon states twice as quick and faster
-    fireballs.  DOOM changes its global tables, and so does this: info.STATES and
-    info.MOBJINFO are rebound for every Play of the process (the records themselves are
-    tuples).  Unlike vanilla, a second fast game does not halve the tics again."""
-    global _fast_monsters
-    if fast == _fast_monsters:
-        return
-    states = list(info.STATES)
-    for i in range(info.S_SARG_RUN1, info.S_SARG_PAIN2 + 1):
-        tics = states[i].tics
-        states[i] = states[i]._replace(tics=tics >> 1 if fast else tics << 1)
-    mobjinfo = list(info.MOBJINFO)
-    speeds = ((info.MT_BRUISERSHOT, 20, 15), (info.MT_HEADSHOT, 20, 10),
-              (info.MT_TROOPSHOT, 20, 10))
-    for mt, quick, normal in speeds:
-        mobjinfo[mt] = mobjinfo[mt]._replace(speed=(quick if fast else normal) * FRACUNIT)
-    info.STATES, info.MOBJINFO = tuple(states), tuple(mobjinfo)
-    _fast_monsters = fast
+def game_class(cls, tables):
+    """``cls`` (a ``Play`` class, or one made here) with ``tables.actions`` as methods: a
+    game's own actions (``wallbsp.content``) are found as DOOM's are, by name on the class.
+    No ``__getattr__`` on Play: it would slow every attribute of the play (CPython does
+    not specialise attribute loads on such classes; 22 % slower demo playback).  Made once
+    per class and tables; DOOM's tables (no actions) give the plain class back."""
+    base = cls.__dict__.get("GAME_BASE", cls)
+    if not tables.actions:
+        return base
+    made = tables.derived.setdefault("classes", {})
+    if base not in made:
+        made[base] = type(base.__name__, (base,), {
+            **tables.actions, "GAME_BASE": base, "__module__": base.__module__,
+            "__doc__": f"{base.__name__} with a game's own actions (wallbsp.content)."})
+    return made[base]
 
 
 def game_mode(names, iwad_name="") -> tuple:
@@ -96,6 +104,7 @@ class Game:
         self.gamemode, self.gameversion = game_mode(iwad_names if wad_path is not None
                                                     else (), wad_path or "")
         self.rng = Random()
+        self.set_tables(doom_tables.DOOM)
         self.players = [Player() for _ in range(MAXPLAYERS)]
         self.playeringame = [False] * MAXPLAYERS
         self.consoleplayer = 0
@@ -121,10 +130,17 @@ class Game:
         self.playerstartsingame = [False] * MAXPLAYERS
         self.wminfo = None
         self.sounds_started = self.sounds_stopped = 0
+        self.events = []                    # the event log (events.py): not per level
         self._texture_heights = None
         self.flatnames = self._flat_names()
         self.init_intermission()
         self.init_level_modules()
+
+
+    def set_tables(self, tables):
+        """Read DOOM's object tables from ``tables`` (a ``doom.tables.Tables``: ``DOOM`` by
+        default, a game's own with its actors added) from now on (``bind_tables``)."""
+        bind_tables(self, tables)
 
     def init_level_modules(self):
         """Every mixin's ``init_<module>()``: per-level state, reset before a level loads."""
@@ -138,6 +154,7 @@ class Game:
 
     def s_start_sound(self, origin, sfx_id):
         self.sounds_started += 1
+        self.events.append(SoundStarted(origin, sfx_id))
         if self.sound is not None:
             self.sound.start_sound(origin, sfx_id)
 
@@ -158,7 +175,15 @@ class Game:
         self.playeringame = list(demo.playeringame)
         if self.playeringame[1]:
             self.netgame = self.netdemo = True
-        self.g_init_new(demo.skill, demo.episode, demo.map)
+        try:
+            self.g_init_new(demo.skill, demo.episode, demo.map)
+        except DemoError:
+            if getattr(self, "levelsource", None) is None and self.mapname not in self.wad_dir:
+                where = "byte 3" if self.gamemode == COMMERCIAL else "bytes 2-3"
+                raise DemoError(f"{demo.source}: {where}: the demo's header names the map "
+                                f"{self.mapname}, which {os.path.basename(str(self.wad_path))}"
+                                f" does not have") from None
+            raise
         self.demoplayback = True
 
     def g_init_new(self, skill, episode, gamemap):
@@ -176,7 +201,8 @@ class Game:
             gamemap = 9
         self.rng.clear()
         self.respawnmonsters = skill == SK_NIGHTMARE or self.respawnparm
-        set_fast_monsters(self.fastparm or skill == SK_NIGHTMARE)
+        # G_InitNew's fast monsters, in this play's own tables (DOOM changes its globals)
+        self.set_tables(self.tables.fast_monsters(self.fastparm or skill == SK_NIGHTMARE))
         for p in self.players:
             p.playerstate = PST_REBORN
         self.demoplayback = False

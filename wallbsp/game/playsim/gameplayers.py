@@ -51,6 +51,7 @@ class GamePlayers:
         p.playerstate = PST_LIVE
         p.health = INITIAL_HEALTH
         p.readyweapon = p.pendingweapon = info.wp_pistol
+        p.weaponowned += [0] * (len(self.weaponinfo) - len(p.weaponowned))   # a game's own
         p.weaponowned[info.wp_fist] = True
         p.weaponowned[info.wp_pistol] = True
         p.ammo[info.am_clip] = INITIAL_BULLETS

@@ -6,6 +6,9 @@ C's globals of this part are attributes of ``self`` with C's names (``linetarget
 ``bottomslope`` (shared with ``p_sight.c`` as in C), ``usething``, ``bombsource``,
 ``bombspot``, ``bombdamage``); their class defaults are C's zero initialisation: like C's,
 they keep their values from one level to the next.
+
+Beyond DOOM (False for its content): ``noautoaim``, ZDoom's ``sv_noautoaim``: a player's
+``P_AimLineAttack`` finds no target and aims straight ahead (slope 0).
 """
 from wallbsp.doom import info
 from wallbsp.doom.fixed import c_div, FRACUNIT, ANGLETOFINESHIFT, FINESINE, FINECOSINE, \
@@ -31,6 +34,7 @@ class Hitscan:
     bombsource = None
     bombspot = None
     bombdamage = 0
+    noautoaim = False           # module docstring
 
     def ptr_aim_traverse(self, in_):
         """Set linetarget and aimslope when a target can be aimed at."""
@@ -146,6 +150,9 @@ class Hitscan:
     def p_aim_line_attack(self, t1, angle, distance):
         """The slope to aim at the first shootable thing along ``angle`` within
         ``distance`` (0 if none); sets linetarget."""
+        if self.noautoaim and t1 is not None and t1.player is not None:
+            self.linetarget = None
+            return 0
         t1 = self.p_subst_null_mobj(t1)
         angle >>= ANGLETOFINESHIFT
         self.shootthing = t1

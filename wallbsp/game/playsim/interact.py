@@ -6,7 +6,13 @@ It reads ``self.players``, ``self.gameskill``, ``self.gamemode``, ``self.gamever
 ``self.netgame``, ``self.deathmatch`` and ``self.consoleplayer`` (0 if absent: it only
 decides who hears a pickup), and calls ``p_remove_mobj`` and ``s_start_sound`` through
 ``self``.
+
+Beyond DOOM (unused by its content): ``set_pickup_effect(mobj, effect)``: touching that
+item calls ``effect(player)`` (a ``Player``) instead of DOOM's rule for its sprite and
+always takes it (a DECORATE item with ``INVENTORY.ALWAYSPICKUP``); the item is removed
+without DOOM's sound, message or bonus flash, and a ``PickedUp`` is recorded.
 """
+from wallbsp.game.playsim.events import PickedUp
 from wallbsp.game.playsim.structs import SK_BABY, SK_NIGHTMARE, NUMAMMO, COMMERCIAL, EXE_DOOM_1_2
 from wallbsp.doom import info
 from wallbsp.doom.fixed import FRACUNIT
@@ -76,6 +82,13 @@ WEAPONS = {
 class Interact:
     """``p_inter.c``'s first half: giving things to the player, touching items."""
 
+    pickup_effects = None               # mobj -> its effect(player) (module docstring)
+
+    def set_pickup_effect(self, mobj, effect):
+        if self.pickup_effects is None:
+            self.pickup_effects = {}
+        self.pickup_effects[mobj] = effect
+
     # --- giving ----------------------------------------------------------------------------
 
     def p_give_ammo(self, player, ammo, num):
@@ -115,7 +128,7 @@ class Interact:
         return True
 
     def p_give_weapon(self, player, weapon, dropped):
-        ammo = info.WEAPONINFO[weapon].ammo
+        ammo = self.weaponinfo[weapon].ammo
         if self.netgame and self.deathmatch != 2 and not dropped:
             # leave placed weapons forever in net games
             if player.weaponowned[weapon]:
@@ -201,9 +214,18 @@ class Interact:
         # a dead thing touching: can happen with a sliding player corpse
         if toucher.health <= 0:
             return
+        if self.pickup_effects is not None and special in self.pickup_effects:
+            self.pickup_effects.pop(special)(player)
+            self.p_remove_mobj(special)
+            self.events.append(PickedUp(special, toucher))
+            return
         sprite = special.sprite
         key = KEYS.get(sprite)
-        if key is not None:
+        if special.type >= info.NUMMOBJTYPES:       # a game's own item (wallbsp.content)
+            sound = self.tables.pickups[special.type](self, player, special)
+            if sound is None:
+                return
+        elif key is not None:
             card, message = key
             if not player.cards[card]:
                 player.message = message
@@ -217,6 +239,7 @@ class Interact:
                 return
         if special.flags & info.MF_COUNTITEM:
             player.itemcount += 1
+        self.events.append(PickedUp(special, toucher))
         self.p_remove_mobj(special)
         player.bonuscount += BONUSADD
         if self._is_console_player(player):

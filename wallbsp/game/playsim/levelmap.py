@@ -44,7 +44,6 @@ to 45°).  If it holds one, the things alone place the player, as in DOOM.
 """
 from __future__ import annotations
 
-from wallbsp.doom import info
 from wallbsp.doom.fixed import FRACBITS, FRACUNIT
 from wallbsp.doom.info import ML_BLOCKING, ML_DONTPEGBOTTOM, ML_DONTPEGTOP, ML_TWOSIDED, NF_SUBSECTOR
 
@@ -58,7 +57,7 @@ __all__ = ["LevelMap", "LevelMapError", "start_level", "ML_BLOCKING", "ML_TWOSID
 SKY_FLAT = "F_SKY1"
 MAX_COORD = 32767                   # DOOM's map units: a fixed_t holds ±32768
 MAXPLAYERS = 4
-_KNOWN_TYPES = frozenset(info.DOOMEDNUM) | {1, 2, 3, 4, 11}
+PLAYER_STARTS = frozenset((1, 2, 3, 4, 11))
 
 
 class LevelMap:
@@ -185,7 +184,7 @@ class LevelMap:
             if mo is not None:
                 mo.angle = round(float(st.angle) % 360.0 * (1 << 32) / 360.0) & 0xFFFFFFFF
         for t in level.things:
-            if t.type not in _KNOWN_TYPES:
+            if t.type not in self.tables.doomednum and t.type not in PLAYER_STARTS:
                 continue
             self.p_spawn_map_thing(MapThing(int(t.x), int(t.y), int(t.angle) % 360,
                                             int(t.type), int(t.flags)))

@@ -13,6 +13,7 @@ from .spectypes import (BLAZEDWUS, BUILD8, CRUSHANDRAISE, DOWNWAITUPSTAY, FASTCR
                         SILENTCRUSHANDRAISE, TURBO16, TURBOLOWER, VLD_BLAZECLOSE,
                         VLD_BLAZEOPEN, VLD_BLAZERAISE, VLD_CLOSE, VLD_CLOSE30THENOPEN,
                         VLD_NORMAL, VLD_OPEN)
+from .events import CROSSED, SHOT, LineActivated
 from .structs import EXE_DOOM_1_2
 
 # walk-over lines: special -> the calls it makes, as (method, arguments after the line);
@@ -110,6 +111,7 @@ class LineSpecials:
             return
 
         special = line.special
+        self.events.append(LineActivated(line, thing, CROSSED, side, special))
         calls = _W_ONCE.get(special)
         if calls is not None:
             self._cross_calls(calls, line, side, thing)
@@ -143,6 +145,7 @@ class LineSpecials:
         if thing.player is None and line.special != 46:
             return                                  # only the door opens for monsters
         special = line.special
+        self.events.append(LineActivated(line, thing, SHOT, -1, special))
         if special == 24:                           # raise floor
             self.ev_do_floor(line, RAISEFLOOR)
             self.p_change_switch_texture(line, 0)

@@ -7,7 +7,9 @@ State (``init_maputil``, set once: C never resets these globals between levels):
 ``opentop``, ``openbottom``, ``openrange``, ``lowfloor`` (P_LineOpening's results).
 """
 from wallbsp.doom.fixed import FRACBITS, aprox_distance, fixed_div, fixed_mul, wrap32
-from wallbsp.doom.info import MAPBLOCKSHIFT
+from wallbsp.doom.info import MAPBLOCKSHIFT, MF_SHOOTABLE
+
+from .events import SectorEntered
 
 
 BOXTOP, BOXBOTTOM, BOXLEFT, BOXRIGHT = range(4)
@@ -164,6 +166,9 @@ class MapUtil:
     def p_set_thing_position(self, thing):
         """Links a thing into the subsector (and sector list) and block of its x, y."""
         ss = self.r_point_in_subsector(thing.x, thing.y)
+        old = thing.subsector
+        if old is not None and old.sector is not ss.sector and thing.flags & MF_SHOOTABLE:
+            self.events.append(SectorEntered(ss.sector, thing))
         thing.subsector = ss
         self.touched.append(thing)
         if not thing.flags & MF_NOSECTOR:

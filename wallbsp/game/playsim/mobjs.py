@@ -22,19 +22,18 @@ MOBJ_CYCLE_LIMIT = 1000000     # Chocolate Doom's guard against endless zero-tic
 SKYFLATNAME = "F_SKY1"         # skyflatnum: flats are held by name
 S_NULL, MF_SKULLFLY, MF_COUNTKILL = info.S_NULL, info.MF_SKULLFLY, info.MF_COUNTKILL
 
-# Each state as (tics, sprite, frame, nextstate, its action's method name or None): the
-# names resolved by cname once, not at every state change.  Remade when info.STATES is
-# rebound (game.set_fast_monsters).
-_STATE_ROWS = [None, ()]
 
 
-def _state_rows():
-    if _STATE_ROWS[0] is not info.STATES:
-        _STATE_ROWS[1] = tuple((st.tics, st.sprite, st.frame, st.nextstate,
-                                cname(st.action) if st.action else None)
-                               for st in info.STATES)
-        _STATE_ROWS[0] = info.STATES
-    return _STATE_ROWS[1]
+def state_rows(tables):
+    """Each state of ``tables`` (a ``doom.tables.Tables``) as (tics, sprite, frame,
+    nextstate, its action's method name or None): the names resolved by cname once per
+    tables, not at every state change."""
+    rows = tables.derived.get("state_rows")
+    if rows is None:
+        rows = tables.derived["state_rows"] = tuple(
+            (st.tics, st.sprite, st.frame, st.nextstate, cname(st.action) if st.action else None)
+            for st in tables.states)
+    return rows
 
 
 class Mobjs(MobjSpawn):
@@ -42,7 +41,7 @@ class Mobjs(MobjSpawn):
     def p_set_mobj_state(self, mobj, state):
         """Enter ``state`` and every zero-tic state after it, calling each one's action;
         False when the mobj removed itself (reached S_NULL)."""
-        rows = _state_rows()
+        rows = self.state_rows
         self.touched.append(mobj)
         cycles = 0
         while True:
@@ -66,7 +65,7 @@ class Mobjs(MobjSpawn):
 
     def p_explode_missile(self, mo):
         mo.momx = mo.momy = mo.momz = 0
-        self.p_set_mobj_state(mo, info.MOBJINFO[mo.type].deathstate)
+        self.p_set_mobj_state(mo, self.mobjinfo[mo.type].deathstate)
         mo.tics -= self.rng.p_random() & 3
         if mo.tics < 1:
             mo.tics = 1
@@ -231,7 +230,7 @@ class Mobjs(MobjSpawn):
         if mobj.tics != -1:
             mobj.tics -= 1
             if not mobj.tics:
-                self.p_set_mobj_state(mobj, _state_rows()[mobj.state][3])
+                self.p_set_mobj_state(mobj, self.state_rows[mobj.state][3])
             return
         # check for nightmare respawn
         if not (mobj.flags & MF_COUNTKILL):

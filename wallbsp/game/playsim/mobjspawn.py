@@ -18,12 +18,6 @@ MTF_AMBUSH = 8                  # doomdata.h's mapthing option bits
 MTF_NOTSINGLE = 16
 
 
-def _mobj_type_of(doomednum):
-    """The mobj type a map thing's editor number spawns (C's linear search finds the
-    first), or None."""
-    return info.DOOMEDNUM.get(doomednum)
-
-
 def _spawn_angle(mthing):
     """``ANG45 * (mthing->angle/45)``: a map thing's facing, snapped to 45 degrees."""
     return (ANG45 * c_div(mthing.angle, 45)) & 0xFFFFFFFF
@@ -48,7 +42,7 @@ class MobjSpawn:
         return MapThing(mt.x, mt.y, mt.angle, mt.type, mt.options)
 
     def p_spawn_mobj(self, x, y, z, mtype):
-        mobjinfo = info.MOBJINFO[mtype]
+        mobjinfo = self.mobjinfo[mtype]
         mobj = Mobj()
         mobj.type = mtype
         mobj.info = mobjinfo
@@ -62,7 +56,7 @@ class MobjSpawn:
             mobj.reactiontime = mobjinfo.reactiontime
         mobj.lastlook = self.rng.p_random() % MAXPLAYERS
         # not P_SetMobjState: action routines can not be called yet
-        st = info.STATES[mobjinfo.spawnstate]
+        st = self.states[mobjinfo.spawnstate]
         mobj.state = mobjinfo.spawnstate
         mobj.tics = st.tics
         mobj.sprite = st.sprite
@@ -108,11 +102,11 @@ class MobjSpawn:
         ss = self.r_point_in_subsector(x, y)
         mo = self.p_spawn_mobj(x, y, ss.sector.floorheight, info.MT_IFOG)
         self.s_start_sound(mo, info.sfx_itmbk)
-        i = _mobj_type_of(mthing.type)
+        i = self.tables.doomednum.get(mthing.type)
         if i is None:
             raise RuntimeError("P_RespawnSpecials: Failed to find mobj type with "
                                "doomednum %d when respawning thing" % mthing.type)
-        z = ONCEILINGZ if info.MOBJINFO[i].flags & info.MF_SPAWNCEILING else ONFLOORZ
+        z = ONCEILINGZ if self.mobjinfo[i].flags & info.MF_SPAWNCEILING else ONFLOORZ
         mo = self.p_spawn_mobj(x, y, z, i)
         mo.spawnpoint = self._copy_mapthing(mthing)
         mo.angle = _spawn_angle(mthing)
@@ -172,11 +166,11 @@ class MobjSpawn:
             bit = 1 << ((self.gameskill - 1) & 0x1F)   # doom.exe reduced the shift mod 32
         if not (mthing.options & bit):
             return
-        i = _mobj_type_of(mthing.type)
+        i = self.tables.doomednum.get(mthing.type)
         if i is None:
             raise RuntimeError("P_SpawnMapThing: Unknown type %i at (%i, %i)"
                                % (mthing.type, mthing.x, mthing.y))
-        flags = info.MOBJINFO[i].flags
+        flags = self.mobjinfo[i].flags
         if self.deathmatch and flags & info.MF_NOTDMATCH:
             return                      # no keycards in deathmatch
         if self.nomonsters and (i == info.MT_SKULL or flags & info.MF_COUNTKILL):

@@ -12,9 +12,14 @@ scratch and the boss brain's targets) at each level start.  C sets them only whe
 program starts; every one but A_BrainSpit's static ``easy`` is written before it is read in
 a level, so resetting them is harmless, and ``easy`` (``brainspit_easy``) is kept across
 levels as C keeps it.
+
+Beyond DOOM (unused by its content): ``keep_asleep(mobj)`` makes a monster's ``A_Look``
+do nothing, so it never wakes by itself (ViZDoom's monsters that ignore the player); a
+blow still hurts it and may set it chasing.
 """
 from wallbsp.doom import info
 from wallbsp.doom.fixed import FRACBITS, FRACUNIT, ANG90, ANG270, point_to_angle2, wrap32
+from wallbsp.game.playsim.events import Woke
 from wallbsp.game.playsim.structs import SK_NIGHTMARE, EXE_DOOM_1_2
 from wallbsp.doom.info import FLOATSPEED, MELEERANGE
 
@@ -33,6 +38,13 @@ YSPEED = (0, 47000, FRACUNIT, 47000, 0, -47000, -FRACUNIT, -47000)
 
 class Monsters:
     """Monster movement and decisions (``p_enemy.c``); see the module docstring."""
+
+    asleep = None                             # mobj -> True: its A_Look does nothing
+
+    def keep_asleep(self, mobj):
+        if self.asleep is None:
+            self.asleep = {}
+        self.asleep[mobj] = True
 
     def init_monsters(self):
         """``p_enemy.c``'s globals, before a level loads."""
@@ -225,6 +237,8 @@ class Monsters:
 
     def a_look(self, actor):
         """Stay in the spawn state until a player is heard or seen."""
+        if self.asleep is not None and actor in self.asleep:
+            return
         actor.threshold = 0                   # any shot will wake up
         targ = actor.subsector.sector.soundtarget
         seen = False
@@ -233,6 +247,7 @@ class Monsters:
             seen = not actor.flags & info.MF_AMBUSH or self.p_check_sight(actor, targ)
         if not seen and not self.p_look_for_players(actor, False):
             return
+        self.events.append(Woke(actor, actor.target))
         # go into the chase state
         seesound = actor.info.seesound
         if seesound:

@@ -140,6 +140,7 @@ class PlayerThink:
     def _weapon_change(self, player, newweapon):
         """Ask for a weapon: the psprite code changes it when the gun can (not in the
         middle of an attack)."""
+        key = newweapon
         if newweapon == info.wp_fist and player.weaponowned[info.wp_chainsaw] \
                 and not (player.readyweapon == info.wp_chainsaw
                          and player.powers[info.pw_strength]):
@@ -148,11 +149,24 @@ class PlayerThink:
                 and player.weaponowned[info.wp_supershotgun] \
                 and player.readyweapon != info.wp_supershotgun:
             newweapon = info.wp_supershotgun
+        if self.tables.weapon_slots:                # a game's own weapons (wallbsp.content)
+            newweapon = self._game_weapon(player, newweapon, key)
         if player.weaponowned[newweapon] and newweapon != player.readyweapon:
             # no plasma or BFG in shareware, even if cheated
             if (newweapon != info.wp_plasma and newweapon != info.wp_bfg) \
                     or self.gamemode != SHAREWARE:
                 player.pendingweapon = newweapon
+
+    def _game_weapon(self, player, weapon, key):
+        """The weapon key ``key`` (0-7) asks for when the game has weapons of its own: the
+        next one owned on that key after the one in hand, DOOM's ``weapon`` first."""
+        on_key = [weapon] + list(self.tables.weapon_slots.get(key, ()))
+        owned = [w for w in on_key if player.weaponowned[w]]
+        if not owned:
+            return weapon
+        if player.readyweapon in owned:
+            return owned[(owned.index(player.readyweapon) + 1) % len(owned)]
+        return owned[0]
 
     def _count_powers(self, player):
         """Time-dependent power-ups, the screen flashes' counters and the colormap."""

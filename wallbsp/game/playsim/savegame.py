@@ -27,8 +27,8 @@ save of another WAD or map, a save from another version of the structures, is on
 or ``save.wsg: body: thinkers[12].target: no thinker 9000`` — and nothing is changed.
 Loading makes a new ``Play`` (``cls``: the class to make, e.g. the World's), loads the
 map's geometry from the WAD as ``P_SetupLevel`` does (or from ``level=(level, tree)`` for
-one of our levels), then writes the saved state over it; the one process-wide effect is
-the one ``G_InitNew`` has, the fast-monster tables of the saved game.
+one of our levels), then writes the saved state over it, with the fast-monster tables of
+the saved game (the new play's own: nothing process-wide changes).
 
 Saving needs a level (``SaveError`` before the first one loads); it works in any game
 state after that (level, intermission, finale), as the level's state is kept until the
@@ -45,6 +45,7 @@ from array import array
 from wallbsp.files import InputError, read_input, write_atomically
 
 from . import game as _game
+from .savelimits import MAX_BODY_BYTES, MAX_HEADER_BYTES, MAX_PARSED_BYTES, parsed_size_bound
 from .saverestore import Decoder
 from .savestate import Encoder, SaveError
 from .structs import COMMERCIAL, EXE_DOOM_1_9
@@ -57,7 +58,6 @@ FORMAT_VERSION = 1
 _PREFIX = struct.Struct("<8sIII")
 DIGEST_SIZE = 32
 MAX_SAVE_BYTES = 256 << 20
-MAX_BODY_BYTES = 1 << 30
 
 
 # -- identities ----------------------------------------------------------------------------
@@ -125,7 +125,7 @@ def save_game(play, description=""):
               "map": play.mapname, "level": level, "episode": play.gameepisode,
               "gamemap": play.gamemap, "skill": play.gameskill,
               "gamestate": play.gamestate, "gametic": play.gametic,
-              "leveltime": play.leveltime, "fast": bool(_game._fast_monsters),
+              "leveltime": play.leveltime, "fast": bool(play.tables.fast),
               "geometry": map_fingerprint(play), "description": str(description)}
     body = Encoder(play).state()
     head = json.dumps(header, separators=(",", ":")).encode()
@@ -166,6 +166,9 @@ def read_header(data, source="<save>"):
                                         f"bytes, the file has {len(data)}")
     if hashlib.sha256(data[:end]).digest() != data[end:]:
         raise fail(end, "damaged: the sha256 of the save does not match")
+    if head_len > MAX_HEADER_BYTES:
+        raise fail(12, f"a header of {head_len} bytes; a save's is at most "
+                       f"{MAX_HEADER_BYTES}")
     try:
         header = json.loads(data[_PREFIX.size:_PREFIX.size + head_len])
     except (ValueError, RecursionError) as e:
@@ -180,10 +183,12 @@ def read_header(data, source="<save>"):
     return header, data[_PREFIX.size + head_len:end]
 
 
-def load_game(data, wad_path, files=(), *, source="<save>", cls=None, level=None):
+def load_game(data, wad_path, files=(), *, source="<save>", cls=None, level=None,
+              tables=None):
     """A new ``Play`` in the state ``data`` (``save_game``'s bytes) holds, on the WAD
     ``wad_path`` and PWADs ``files`` the save was made with (``level=(level, tree)``: a
-    save of one of our levels).  ``SaveError`` for anything else, nothing changed."""
+    save of one of our levels; ``tables``: the game's object tables, ``doom.tables.DOOM``
+    by default).  ``SaveError`` for anything else, nothing changed."""
     header, packed = read_header(data, source)
     files = tuple(files)
     _check_wads(header, wad_path, files, source)
@@ -191,14 +196,7 @@ def load_game(data, wad_path, files=(), *, source="<save>", cls=None, level=None
         raise SaveError(f"{source}: header.level: the save is of "
                         + (f"our level {header['level']!r}: pass it as level=(level, tree)"
                            if level is None else f"the WAD map {header['map']}, not a level"))
-    try:
-        inflater = zlib.decompressobj()
-        raw = inflater.decompress(packed, MAX_BODY_BYTES)
-        if inflater.unconsumed_tail or not inflater.eof:
-            raise ValueError("larger than a save can be, or cut short")
-        body = json.loads(raw)
-    except (zlib.error, ValueError, RecursionError) as e:
-        raise SaveError(f"{source}: body: not a compressed JSON state: {e}") from None
+    body = _body(packed, source)
     if cls is None:
         from .play import play_class
         cls = play_class()
@@ -213,17 +211,40 @@ def load_game(data, wad_path, files=(), *, source="<save>", cls=None, level=None
                         f"{header['gamemode']}/{header['gameversion']}, the WAD's is "
                         f"{play.gamemode}/{play.gameversion}")
     _load_map(play, header, level, source)
-    old_fast = _game._fast_monsters
-    _game.set_fast_monsters(header["fast"])
+    play.set_tables((tables or play.tables).fast_monsters(header["fast"]))
     try:
         Decoder(play, body).apply()
     except SaveError as e:
-        _game.set_fast_monsters(old_fast)
         raise SaveError(f"{source}: body: {e}") from None
     except Exception as e:      # a body this version never writes: still one line
-        _game.set_fast_monsters(old_fast)
         raise SaveError(f"{source}: body: {type(e).__name__}: {e}") from None
     return play
+
+
+def _body(packed, source):
+    """The body's JSON, its memory bounded before it is made (``savelimits``): inflated
+    to at most ``MAX_BODY_BYTES`` (zlib makes no more), parsed only when what parsing
+    makes is bounded by ``MAX_PARSED_BYTES``; NaN and infinities are no JSON of a save."""
+    try:
+        inflater = zlib.decompressobj()
+        raw = inflater.decompress(packed, MAX_BODY_BYTES + 1)
+        if len(raw) > MAX_BODY_BYTES:
+            raise ValueError(f"it inflates to more than {MAX_BODY_BYTES} bytes, more than "
+                             f"a save holds")
+        if inflater.unconsumed_tail or not inflater.eof:
+            raise ValueError("cut short, or followed by other bytes")
+        del inflater
+        bound = parsed_size_bound(raw)
+        if bound > MAX_PARSED_BYTES:
+            raise ValueError(f"its {len(raw)} bytes of JSON would take up to {bound} bytes "
+                             f"parsed, more than a save's state ({MAX_PARSED_BYTES})")
+        return json.loads(raw, parse_constant=_no_constant)
+    except (zlib.error, ValueError, RecursionError) as e:
+        raise SaveError(f"{source}: body: not a compressed JSON state: {e}") from None
+
+
+def _no_constant(name):
+    raise ValueError(f"{name} is not a number a save holds")
 
 
 def load_game_file(path, wad_path, files=(), **kwargs):

@@ -4,13 +4,14 @@ the same state, every attribute followed through every object with the same shar
 tests' and tools/check_savegame.py's proof that a load is exact).
 """
 import base64
+import math
 import types
 
-from wallbsp.doom import info
-
-from .savestate import (CACHES, STATIC, UNSET_MARK, References, SaveError, Unset, derived_names,
-                        dynamic_fields, map_tables, resolve_class, saved_fields, saved_value,
-                        slots_of)
+from .savestate import (CACHES, STATIC, TRANSIENT, UNSET_MARK, WATCHERS, References, SaveError,
+                        Unset, derived_names, dynamic_fields, map_tables, resolve_class,
+                        saved_fields, saved_value, slots_of)
+from .savelimits import (INT_HIGH, INT_LOW, check_loaded, check_map_counts,
+                         check_thinker_count)
 from .structs import Player, Thinker
 
 
@@ -31,6 +32,7 @@ class Decoder:
                         enumerate(_list(body, "classes"))]
         self.shared = _list(body, "shared")
         rows = _list(body, "thinkers")
+        check_thinker_count(rows, body.get("listed"), play)
         self.thinkers = []
         for i, row in enumerate(rows):
             cls, _ = self._row_class(row, f"thinkers[{i}]")
@@ -54,7 +56,10 @@ class Decoder:
         if not isinstance(saved, dict):
             raise SaveError("globals: missing")
         static = derived_names(play)
+        check_map_counts(saved, vars(play))
         for name, value in saved.items():
+            if name in WATCHERS:
+                continue                    # written by saves before they were left out
             if name in static or not name.isidentifier() or name.startswith("__") \
                     or callable(getattr(self.cls, name, None)):
                 raise SaveError(f"globals.{name}: not a saved attribute")
@@ -64,6 +69,7 @@ class Decoder:
             if name not in static and name not in saved:
                 delattr(play, name)         # the class's default, as in the saved game
         self._check_ring(body.get("listed"))
+        check_loaded(play, self.thinkers)
 
     def _at(self, where, fn):
         """``fn()``, its errors as a ``SaveError`` naming the innermost place."""
@@ -127,7 +133,15 @@ class Decoder:
 
     def dec(self, v):
         t = type(v)
-        if t is int or t is str or t is bool or v is None or t is float:
+        if t is int:
+            if not INT_LOW <= v <= INT_HIGH:
+                raise SaveError(f"{_short(v)} is beyond DOOM's 32-bit numbers")
+            return v
+        if t is str or t is bool or v is None:
+            return v
+        if t is float:
+            if not math.isfinite(v):
+                raise SaveError(f"{v} is not a finite number")
             return v
         if t is list:
             return [self.dec(x) for x in v]
@@ -147,7 +161,7 @@ class Decoder:
                 raise SaveError(f"no function {x!r}")
             return fn
         if tag == "mi":
-            return _pick(info.MOBJINFO, x, "mobj type")
+            return _pick(self.play.mobjinfo, x, "mobj type")
         if tag == "t":
             return tuple(self.dec(y) for y in _typed(x, list))
         if tag == "d":
@@ -192,6 +206,10 @@ class Decoder:
         return out
 
 
+def _short(v):
+    return f"an integer of {v.bit_length()} bits" if abs(v) >= 1 << 64 else str(v)
+
+
 def _raise(e):
     raise e
 
@@ -228,7 +246,7 @@ def first_difference(a, b):
     and dict, with the same sharing (two references to one object in ``a`` are two to one
     object in ``b``) — else the path of the first difference found and what differs."""
     seen, back = {id(a): b}, {id(b): a}
-    skip = CACHES | ((derived_names(a) | derived_names(b)) - STATIC)
+    skip = CACHES | TRANSIENT | WATCHERS | ((derived_names(a) | derived_names(b)) - STATIC)
     stack = [(f"play.{n}", getattr(a, n, Unset), getattr(b, n, Unset))
              for n in sorted(set(vars(a)) | set(vars(b)), reverse=True) if n not in skip]
     while stack:

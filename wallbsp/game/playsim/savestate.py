@@ -21,7 +21,7 @@ Values: ints, bools, strings, floats and ``None`` as JSON's; a list as a JSON ar
 other value is a one-key JSON object: ``{"t": [...]}`` a tuple, ``{"d": [[k, v], ...]}`` a
 dict, ``{"y": base64}`` bytes, ``{"o": [class, field values...]}`` an object of one of the
 package's structures (``classes`` names them and their fields), ``{"n": [class, ...]}`` a
-named tuple, ``{"mi": type}`` the ``info.MOBJINFO`` record of a type, ``{"fn": name}`` a
+named tuple, ``{"mi": type}`` the play's ``mobjinfo`` record of a type, ``{"fn": name}`` a
 ``Play`` method (a thinker's ``func``), ``{"th": i}`` thinker ``i``, ``{"cap": 0}`` the
 list's head, ``{"sec"|"line"|"side"|"ss"|"seg"|"node"|"vx"|"pl"|"so": i}`` sector, line,
 side, subsector, seg, node, vertex, player ``i`` or sector ``i``'s sound origin,
@@ -34,13 +34,14 @@ import base64
 import importlib
 import types
 
-from wallbsp.doom import info
 
 from .structs import (DegenMobj, Line, Node, Player, Sector, Seg, Side, Subsector,
                       Thinker, Vertex)
 
 # tables built from the map or the WAD on first use
 CACHES = frozenset(("_texture_heights", "sightarrays", "nodearray"))
+# what happened since a caller last looked, not the game's state: never saved or compared
+TRANSIENT = frozenset(("events",))      # the event log (events.py)
 # rebuilt by loading the map (or checked against the header): never saved
 STATIC = frozenset((
     "wad_path", "wad_files", "wad_entries", "wad_entry_files", "wad_dir", "flatnames",
@@ -48,7 +49,14 @@ STATIC = frozenset((
     "vertexes", "sectors", "sides", "lines", "subsectors", "nodes", "segs", "null_sector",
     "blockmaplump", "rejectmatrix", "thinkercap", "levelsource",
     "sound",            # the sound system the caller attached (wallbsp.sound): not the game's
-)) | CACHES
+    # the object tables (doom.tables) and their bindings: the save's header says which
+    "tables", "states", "mobjinfo", "weaponinfo", "state_rows",
+)) | CACHES | TRANSIENT
+# a watcher's bookkeeping (Ticker.take_touched: which PlayThings took the list last, by a
+# process-wide number): not the game's, and it made two equal games save different bytes;
+# a loaded play starts with none (its first watcher reads every thing)
+WATCHERS = frozenset(("touched", "touched_reader"))
+STATIC = STATIC | WATCHERS
 # the structure of the map: the rest of these classes' slots is saved
 SECTOR_FIXED = frozenset(("id", "blockbox", "soundorg", "linecount", "lines"))
 LINE_FIXED = frozenset(("id", "v1", "v2", "dx", "dy", "sidenum", "bbox", "slopetype",
@@ -207,7 +215,7 @@ class Encoder:
         self.play = play
         self.cls = type(play)
         self.refs = References(play)
-        self.mobjinfo = {id(rec): i for i, rec in enumerate(info.MOBJINFO)}
+        self.mobjinfo = {id(rec): i for i, rec in enumerate(play.mobjinfo)}
         self.thinkers, self.thinker_index = [], {}
         cap = play.thinkercap
         th = cap.next

@@ -15,6 +15,7 @@ from .spectypes import (BLAZEDWUS, BOTTOM, BUILD8, BUTTONTIME, CRUSHANDRAISE, DO
                         RAISEFLOORTONEAREST, RAISEFLOORTURBO, RAISETONEARESTANDCHANGE, TOP,
                         TURBO16, TURBOLOWER, VLD_BLAZECLOSE, VLD_BLAZEOPEN, VLD_BLAZERAISE,
                         VLD_CLOSE, VLD_NORMAL, VLD_OPEN, button_t)
+from .events import USED, LineActivated
 from .structs import COMMERCIAL, REGISTERED, RETAIL
 
 # alphSwitchList: (off, on, the first "episode" that has it: 1 shareware, 2 registered and
@@ -184,6 +185,7 @@ class Switches:
                 return False
 
         special = line.special
+        self.events.append(LineActivated(line, thing, USED, side, special))
         if special in _MANUAL_DOORS:
             self.ev_vertical_door(line, thing)
         elif special in _SWITCHES:

@@ -24,6 +24,7 @@ watcher took it, or it grew past ``TOUCHED_LIMIT`` with nobody taking it).
 """
 from wallbsp.doom import info
 
+from .events import EVENTS_LIMIT
 from .structs import Thinker
 
 MF_SKULLFLY, MF_COUNTKILL = info.MF_SKULLFLY, info.MF_COUNTKILL
@@ -51,6 +52,11 @@ class Ticker:
         touched, complete = self.touched, self.touched_reader == reader
         self.touched, self.touched_reader = [], reader
         return touched if complete else None
+
+    def take_events(self) -> list:
+        """The event log since the last take (``events.py``); a new one goes on."""
+        events, self.events = self.events, []
+        return events
 
     def p_add_thinker(self, thinker):
         """Appends ``thinker`` at the end of the list (it runs after every thinker there)."""
@@ -95,7 +101,7 @@ class Ticker:
                 if current.tics != -1:
                     current.tics -= 1
                     if not current.tics:
-                        self.p_set_mobj_state(current, info.STATES[current.state].nextstate)
+                        self.p_set_mobj_state(current, self.states[current.state].nextstate)
                 elif current.flags & MF_COUNTKILL and self.respawnmonsters:
                     func(self, current)         # the nightmare respawn's count
             elif func:
@@ -112,6 +118,8 @@ class Ticker:
             return False
         if len(self.touched) > TOUCHED_LIMIT:       # nobody takes it: start again
             self.touched, self.touched_reader = [], None
+        if len(self.events) > EVENTS_LIMIT:         # nobody reads the log
+            self.events = []
         for i, player in enumerate(self.players):
             if self.playeringame[i]:
                 self.p_player_think(player)

@@ -22,7 +22,7 @@ from wallbsp.doom import fnv
 
 from .demos import DemoError, load_demo
 from .mapload import MapLoadError
-from .play import play_class
+from .play import Play
 
 FIELDS = ("map", "leveltime", "x", "y", "z", "angle", "momx", "momy", "health", "armor",
           "prndindex", "mobjs", "kills", "items", "secrets", "hash")
@@ -57,21 +57,24 @@ def trace_line(play):
         p.killcount, p.itemcount, p.secretcount, h)
 
 
-def start_demo(wad, demo, files=(), partial=False):
+def start_demo(wad, demo, files=(), tables=None):
     """``(play, demo)``: a ``Play`` on the WAD (and PWADs ``files``) with ``demo`` (a
-    ``Demo``, a lump name of ``wad`` or a .lmp path) started (G_DoPlayDemo).  Each of
-    ``demo.tics`` is then one ``play.g_ticker(commands)``, True when the play ran."""
+    ``Demo``, a lump name of ``wad`` or a .lmp path) started (G_DoPlayDemo); ``tables``: a
+    game's own (``wallbsp.content.game_tables``).  Each of ``demo.tics`` is then one
+    ``play.g_ticker(commands)``, True when the play ran."""
     if not hasattr(demo, "tics"):
         demo = load_demo(wad, demo)
-    play = play_class(partial)(wad, files)
+    play = Play(wad, files)
+    if tables is not None:
+        play.set_tables(tables)
     play.g_do_play_demo(demo)
     return play, demo
 
 
-def play_demo(wad, demo, tics=None, partial=False, files=()):
+def play_demo(wad, demo, tics=None, files=(), tables=None):
     """Plays ``demo`` (see ``start_demo``) and yields the trace line of every tic that ran
     the play ticker (at most ``tics`` tics of the demo)."""
-    play, demo = start_demo(wad, demo, files, partial)
+    play, demo = start_demo(wad, demo, files, tables)
     for commands in itertools.islice(demo.tics, tics):
         if play.g_ticker(commands):
             line = trace_line(play)
@@ -113,11 +116,9 @@ def main(argv=None):
     parser.add_argument("--file", action="append", default=[], metavar="PWAD",
                         help="a PWAD loaded after the WAD (as Chocolate Doom's -file)")
     parser.add_argument("--tics", type=int, default=None, help="play at most N tics")
-    parser.add_argument("--partial", action="store_true",
-                        help="compose Play from the modules that exist")
     args = parser.parse_args(argv)
     try:
-        lines = play_demo(args.wad, args.demo, args.tics, args.partial, args.file)
+        lines = play_demo(args.wad, args.demo, args.tics, args.file)
         reference = None
         if args.against:
             with open(args.against) as f:

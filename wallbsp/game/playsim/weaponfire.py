@@ -52,16 +52,16 @@ class WeaponFire:
         mo.flags |= info.MF_JUSTATTACKED
 
     def a_fire_missile(self, player, psp):
-        decrease_ammo(player, info.WEAPONINFO[player.readyweapon].ammo, 1)
+        decrease_ammo(player, self.weaponinfo[player.readyweapon].ammo, 1)
         self.p_spawn_player_missile(player.mo, info.MT_ROCKET)
 
     def a_fire_bfg(self, player, psp):
-        decrease_ammo(player, info.WEAPONINFO[player.readyweapon].ammo,
+        decrease_ammo(player, self.weaponinfo[player.readyweapon].ammo,
                        DEH_BFG_CELLS_PER_SHOT)
         self.p_spawn_player_missile(player.mo, info.MT_BFG)
 
     def a_fire_plasma(self, player, psp):
-        weapon = info.WEAPONINFO[player.readyweapon]
+        weapon = self.weaponinfo[player.readyweapon]
         decrease_ammo(player, weapon.ammo, 1)
         self.p_set_psprite(player, PS_FLASH, weapon.flashstate + (self.rng.p_random() & 1))
         self.p_spawn_player_missile(player.mo, info.MT_PLASMA)
@@ -89,7 +89,7 @@ class WeaponFire:
         """What the pistol, shotgun and super shotgun do before their bullets."""
         self.s_start_sound(player.mo, sound)
         self.p_set_mobj_state(player.mo, info.S_PLAY_ATK2)
-        weapon = info.WEAPONINFO[player.readyweapon]
+        weapon = self.weaponinfo[player.readyweapon]
         decrease_ammo(player, weapon.ammo, ammo_used)
         self.p_set_psprite(player, PS_FLASH, weapon.flashstate)
         self.p_bullet_slope(player.mo)
@@ -114,7 +114,7 @@ class WeaponFire:
 
     def a_fire_c_gun(self, player, psp):
         self.s_start_sound(player.mo, info.sfx_pistol)
-        weapon = info.WEAPONINFO[player.readyweapon]
+        weapon = self.weaponinfo[player.readyweapon]
         if not ammo_at(player, weapon.ammo):
             return
         self.p_set_mobj_state(player.mo, info.S_PLAY_ATK2)

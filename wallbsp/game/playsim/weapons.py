@@ -13,7 +13,7 @@ Method names are exactly ``cname`` of the C names, however they read (``A_BFGsou
 ``a_bf_gsound``, ``A_FireCGun`` → ``a_fire_c_gun``, ``A_Light0`` → ``a_light_0``).
 """
 from wallbsp.game.playsim import cname
-from wallbsp.game.playsim.structs import BT_ATTACK, NUMAMMO, NUMPSPRITES, PST_DEAD, \
+from wallbsp.game.playsim.structs import BT_ATTACK, NUMAMMO, NUMPSPRITES, NUMWEAPONS, PST_DEAD, \
     SHAREWARE, COMMERCIAL
 from wallbsp.doom import info
 from wallbsp.doom.fixed import FRACBITS, FRACUNIT, ANG90, FINEANGLES, FINEMASK, FINESINE, \
@@ -64,7 +64,7 @@ class Weapons:
                 # object removed itself
                 psp.state = None
                 break
-            state = info.STATES[stnum]
+            state = self.states[stnum]
             psp.state = stnum
             psp.tics = state.tics           # could be 0
             if state.misc1:
@@ -76,7 +76,7 @@ class Weapons:
                 if psp.state is None:
                     break
             # the action may have moved this overlay to another state
-            stnum = info.STATES[psp.state].nextstate
+            stnum = self.states[psp.state].nextstate
             if psp.tics:
                 break
 
@@ -93,7 +93,7 @@ class Weapons:
             player.pendingweapon = player.readyweapon
         if player.pendingweapon == info.wp_chainsaw:
             self.s_start_sound(player.mo, info.sfx_sawup)
-        newstate = info.WEAPONINFO[player.pendingweapon].upstate
+        newstate = self.weaponinfo[player.pendingweapon].upstate
         player.pendingweapon = info.wp_nochange
         player.psprites[PS_WEAPON].sy = WEAPONBOTTOM
         self.p_set_psprite(player, PS_WEAPON, newstate)
@@ -101,31 +101,33 @@ class Weapons:
     def p_check_ammo(self, player):
         """True if there is ammunition for one shot; if not, pick the weapon to change to
         (DOOM's fixed preferences) and start lowering the current one."""
-        ammo = info.WEAPONINFO[player.readyweapon].ammo
+        ammo = self.weaponinfo[player.readyweapon].ammo
         if player.readyweapon == info.wp_bfg:
             count = DEH_BFG_CELLS_PER_SHOT
         elif player.readyweapon == info.wp_supershotgun:
             count = 2                       # double barrel
+        elif player.readyweapon >= NUMWEAPONS:   # a game's own weapon (wallbsp.content)
+            count = self.tables.ammo_use[player.readyweapon]
         else:
             count = 1
         if ammo == info.am_noammo or ammo_at(player, ammo) >= count:
             return True
         player.pendingweapon = fallback_weapon(player, self.gamemode)
         self.p_set_psprite(player, PS_WEAPON,
-                           info.WEAPONINFO[player.readyweapon].downstate)
+                           self.weaponinfo[player.readyweapon].downstate)
         return False
 
     def p_fire_weapon(self, player):
         if not self.p_check_ammo(player):
             return
         self.p_set_mobj_state(player.mo, info.S_PLAY_ATK1)
-        newstate = info.WEAPONINFO[player.readyweapon].atkstate
+        newstate = self.weaponinfo[player.readyweapon].atkstate
         self.p_set_psprite(player, PS_WEAPON, newstate)
         self.p_noise_alert(player.mo, player.mo)
 
     def p_drop_weapon(self, player):
         """The player died: put the weapon away."""
-        self.p_set_psprite(player, PS_WEAPON, info.WEAPONINFO[player.readyweapon].downstate)
+        self.p_set_psprite(player, PS_WEAPON, self.weaponinfo[player.readyweapon].downstate)
 
     def p_setup_psprites(self, player):
         """At the start of a level: clear the overlays and raise the ready weapon."""
@@ -142,7 +144,7 @@ class Weapons:
             if psp.state is not None and psp.tics != -1:
                 psp.tics -= 1
                 if not psp.tics:
-                    self.p_set_psprite(player, i, info.STATES[psp.state].nextstate)
+                    self.p_set_psprite(player, i, self.states[psp.state].nextstate)
         weapon, flash = player.psprites[PS_WEAPON], player.psprites[PS_FLASH]
         flash.sx = weapon.sx
         flash.sy = weapon.sy
@@ -160,7 +162,7 @@ class Weapons:
         # change weapon; if the player is dead, put the weapon away
         if player.pendingweapon != info.wp_nochange or not player.health:
             self.p_set_psprite(player, PS_WEAPON,
-                               info.WEAPONINFO[player.readyweapon].downstate)
+                               self.weaponinfo[player.readyweapon].downstate)
             return
         # fire; the missile launcher and the BFG do not auto fire
         if player.cmd.buttons & BT_ATTACK:
@@ -212,11 +214,11 @@ class Weapons:
             return
         psp.sy = WEAPONTOP
         # raised all the way: ready
-        self.p_set_psprite(player, PS_WEAPON, info.WEAPONINFO[player.readyweapon].readystate)
+        self.p_set_psprite(player, PS_WEAPON, self.weaponinfo[player.readyweapon].readystate)
 
     def a_gun_flash(self, player, psp):
         self.p_set_mobj_state(player.mo, info.S_PLAY_ATK2)
-        self.p_set_psprite(player, PS_FLASH, info.WEAPONINFO[player.readyweapon].flashstate)
+        self.p_set_psprite(player, PS_FLASH, self.weaponinfo[player.readyweapon].flashstate)
 
     def a_light_0(self, player, psp):
         player.extralight = 0

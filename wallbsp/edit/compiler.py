@@ -1,0 +1,111 @@
+"""Compiling beside the window: the newest level is compiled in a worker thread while the
+editor goes on; the caller asks for the newest tree when it draws and is never blocked.
+
+``Compiler.submit(level, version)`` hands over a level (a newer one replaces one still
+waiting: only the newest is worth compiling); ``latest()`` is the newest finished
+``Compiled`` (its ``version``, ``tree`` or the one-line ``error``, ``problems``, seconds and
+the tree's ``overlay``, partitions clipped)
+or None.  ``compile_now(level, version)`` does the same work in the caller's thread (for
+scripts and tests).  The compile is ``wallbsp.compile_level`` (numpy; most of its time is
+spent outside the interpreter lock, so the window keeps drawing).
+"""
+from __future__ import annotations
+
+import threading
+import time
+from typing import NamedTuple
+
+from wallbsp.bsp.build import compile_level
+from wallbsp.edit.overlay import TreeOverlay
+from wallbsp.edit.problems import problems
+
+__all__ = ["Compiler", "Compiled", "compile_now"]
+
+
+class Compiled(NamedTuple):
+    version: int
+    tree: object            # a BSPTree, or None when the compile failed
+    error: str | None
+    problems: list
+    seconds: float
+    overlay: TreeOverlay | None   # its partition lines already clipped
+
+
+def compile_now(level, version: int = 0, candidates=None, seed: int = 0) -> Compiled:
+    """Compile ``level`` and find its problems, here and now."""
+    start = time.perf_counter()
+    try:
+        tree, error = compile_level(level, candidates=candidates, seed=seed), None
+    except ValueError as err:
+        tree, error = None, str(err).splitlines()[0]
+    found = problems(level, tree)
+    overlay = None
+    if tree is not None:
+        overlay = TreeOverlay(tree)
+        overlay.partitions()
+    return Compiled(version, tree, error, found, time.perf_counter() - start, overlay)
+
+
+class Compiler:
+    """A worker thread that compiles the newest submitted level."""
+
+    def __init__(self, candidates=None, seed: int = 0):
+        self.candidates, self.seed = candidates, seed
+        self._lock = threading.Condition()
+        self._waiting = None          # (level, version) not started yet
+        self._latest: Compiled | None = None
+        self._busy = False
+        self._closed = False
+        self._thread = threading.Thread(target=self._run, name="wallbsp-edit-compiler",
+                                        daemon=True)
+        self._thread.start()
+
+    def submit(self, level, version: int) -> None:
+        with self._lock:
+            self._waiting = (level, version)
+            self._lock.notify_all()
+
+    def latest(self) -> Compiled | None:
+        """The newest finished compile (of the newest version submitted so far, once it is
+        done), or None before the first."""
+        with self._lock:
+            return self._latest
+
+    def idle(self) -> bool:
+        """Nothing waiting and nothing being compiled."""
+        with self._lock:
+            return self._waiting is None and not self._busy
+
+    def wait(self, version: int, timeout: float | None = None) -> Compiled | None:
+        """Block until ``version`` (or a newer one) is compiled; for scripts and tests."""
+        with self._lock:
+            self._lock.wait_for(lambda: self._latest is not None
+                                and self._latest.version >= version, timeout)
+            return self._latest
+
+    def close(self) -> None:
+        with self._lock:
+            self._closed = True
+            self._lock.notify_all()
+        self._thread.join()
+
+    def __enter__(self):
+        return self
+
+    def __exit__(self, *exc):
+        self.close()
+
+    def _run(self) -> None:
+        while True:
+            with self._lock:
+                self._lock.wait_for(lambda: self._waiting is not None or self._closed)
+                if self._closed:
+                    return
+                (level, version), self._waiting = self._waiting, None
+                self._busy = True
+            done = compile_now(level, version, self.candidates, self.seed)
+            with self._lock:
+                if self._latest is None or done.version >= self._latest.version:
+                    self._latest = done
+                self._busy = False
+                self._lock.notify_all()

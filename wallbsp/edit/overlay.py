@@ -1,0 +1,171 @@
+"""The tree as something to draw over the map (issue 29's "visual tool"): the partition
+lines clipped to the convex cells they split, the segs with the depth of their node, the
+leaf under a point with its cell, the front-to-back order from a camera and the tree's
+statistics.  Numbers only: the window draws them.
+
+``TreeOverlay(tree, bounds)``, ``bounds`` ``(x0, y0, x1, y1)`` the box the root cell is
+(the level's, with a margin, by default); everything is computed once, when first asked.
+"""
+from __future__ import annotations
+
+import numpy as np
+
+__all__ = ["TreeOverlay", "clip_convex", "chord"]
+
+
+def clip_convex(poly: list, line, keep: int) -> list:
+    """The part of a convex polygon where ``keep * (a*x + b*y + c) >= 0``."""
+    a, b, c = (float(v) for v in line)
+    out = []
+    for i, p in enumerate(poly):
+        q = poly[(i + 1) % len(poly)]
+        sp = keep * (a * p[0] + b * p[1] + c)
+        sq = keep * (a * q[0] + b * q[1] + c)
+        if sp >= 0:
+            out.append(p)
+        if (sp > 0 > sq) or (sp < 0 < sq):
+            t = sp / (sp - sq)
+            out.append((p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])))
+    return out
+
+
+def chord(poly: list, line):
+    """The piece of the line inside a convex polygon, or None (the reference the fast
+    ``TreeOverlay.partitions`` is tested against)."""
+    a, b, c = (float(v) for v in line)
+    hits = []
+    for i, p in enumerate(poly):
+        q = poly[(i + 1) % len(poly)]
+        sp, sq = a * p[0] + b * p[1] + c, a * q[0] + b * q[1] + c
+        if sp == 0:
+            hits.append(p)
+        elif sp * sq < 0:
+            t = sp / (sp - sq)
+            hits.append((p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])))
+    if len(hits) < 2:
+        return None
+    hits.sort(key=lambda h: h[0] * b - h[1] * a)        # along the line's direction (b, -a)
+    return hits[0], hits[-1]
+
+
+class TreeOverlay:
+    """Drawing data of one compiled tree."""
+
+    def __init__(self, tree, bounds=None):
+        self.tree = tree
+        self.bounds = bounds if bounds is not None else _bounds(tree)
+        self._pieces = None
+        self._depth = None
+
+    @property
+    def node_depth(self) -> np.ndarray:
+        """Each node's depth (the root 0)."""
+        if self._depth is None:
+            depth = np.zeros(self.tree.node_count, dtype=np.int32)
+            for node, kids in enumerate(self.tree.node_child.tolist()):
+                for kid in kids:
+                    if kid >= 0:
+                        depth[kid] = depth[node] + 1
+            self._depth = depth
+        return self._depth
+
+    def partitions(self) -> list:
+        """``[(node, depth, (x1, y1), (x2, y2)), ...]``: each node's partition line within
+        its cell (the box ``bounds`` cut by every ancestor's line on the node's side)."""
+        if self._pieces is None:
+            self._pieces = self._chords()
+        return self._pieces
+
+    def _chords(self) -> list:
+        # Each line as P0 + t * (b, -a); the box and then every ancestor's half-plane cut
+        # the range of t: one numpy step per level of the tree for all nodes together.
+        tree = self.tree
+        n = tree.node_count
+        if not n:
+            return []
+        line = tree.node_line.astype(np.float64)
+        a, b, c = line[:, 0], line[:, 1], line[:, 2]
+        norm = a * a + b * b
+        px, py, dx, dy = -a * c / norm, -b * c / norm, b, -a
+        lo, hi = self._box_range(px, py, dx, dy)
+        parent, keep = np.full(n, -1), np.zeros(n)
+        for node, kids in enumerate(tree.node_child.tolist()):
+            for k, kid in enumerate(kids):
+                if kid >= 0:
+                    parent[kid], keep[kid] = node, (-1.0 if k == 0 else 1.0)
+        current = np.arange(n)
+        while True:
+            up = parent[current]
+            alive = up >= 0
+            if not alive.any():
+                break
+            idx = np.flatnonzero(alive)
+            m, sign = up[idx], keep[current[idx]]
+            s0 = (line[m, 0] * px[idx] + line[m, 1] * py[idx] + line[m, 2]) * sign
+            s1 = (line[m, 0] * dx[idx] + line[m, 1] * dy[idx]) * sign
+            with np.errstate(divide="ignore", invalid="ignore"):
+                t = -s0 / s1
+            lo[idx] = np.where(s1 > 0, np.maximum(lo[idx], t), lo[idx])
+            hi[idx] = np.where(s1 < 0, np.minimum(hi[idx], t), hi[idx])
+            hi[idx] = np.where((s1 == 0) & (s0 < 0), -np.inf, hi[idx])
+            current = np.where(alive, up, current)
+        depth = self.node_depth
+        keep_nodes = np.flatnonzero(hi > lo)
+        x1, y1 = px + lo * dx, py + lo * dy
+        x2, y2 = px + hi * dx, py + hi * dy
+        return [(int(k), int(depth[k]), (float(x1[k]), float(y1[k])), (float(x2[k]), float(y2[k])))
+                for k in keep_nodes.tolist()]
+
+    def _box_range(self, px, py, dx, dy):
+        x0, y0, x1, y1 = self.bounds
+        lo, hi = np.full(len(px), -np.inf), np.full(len(px), np.inf)
+        for p, d, low, high in ((px, dx, x0, x1), (py, dy, y0, y1)):
+            with np.errstate(divide="ignore", invalid="ignore"):
+                ta, tb = (low - p) / d, (high - p) / d
+            moving = d != 0
+            lo = np.where(moving, np.maximum(lo, np.minimum(ta, tb)), lo)
+            hi = np.where(moving, np.minimum(hi, np.maximum(ta, tb)), hi)
+            outside = ~moving & ((p < low) | (p > high))
+            hi = np.where(outside, -np.inf, hi)
+        return lo, hi
+
+    def segs(self):
+        """``(xy, depth, wall)``: every seg's ends ``(S, 4)``, its node's depth and its
+        wall, for colouring segs by depth."""
+        tree = self.tree
+        depth = np.zeros(tree.seg_count, dtype=np.int32)
+        for node, (start, stop) in enumerate(tree.node_segs.tolist()):
+            depth[start:stop] = self.node_depth[node]
+        return tree.seg_xy, depth, tree.seg_wall
+
+    def leaf_at(self, x, y):
+        """``(leaf, sector, cell)`` under (x, y): the leaf's index, its sector (None
+        outside the map) and its convex cell as a polygon (within ``bounds``)."""
+        tree = self.tree
+        x0, y0, x1, y1 = self.bounds
+        cell = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
+        node = tree.root
+        while node >= 0:
+            a, b, c = (int(v) for v in tree.node_line[node])
+            front = a * x + b * y + c <= 0
+            cell = clip_convex(cell, (a, b, c), -1 if front else 1)
+            node = int(tree.node_child[node][0 if front else 1])
+        leaf = ~node
+        sector = int(tree.leaf_sector[leaf])
+        return leaf, (None if sector < 0 else sector), cell
+
+    def order(self, x, y) -> list:
+        """Seg ids nearest first from (x, y) (the renderer's front-to-back order)."""
+        return self.tree.front_to_back(x, y)
+
+    def stats(self) -> dict:
+        return self.tree.stats()
+
+
+def _bounds(tree):
+    v = np.array(tree.level.vertices, dtype=np.float64).reshape(-1, 2)
+    if not len(v):
+        return (0.0, 0.0, 1.0, 1.0)
+    lo, hi = v.min(axis=0), v.max(axis=0)
+    pad = 0.05 * float(max(hi - lo)) + 16
+    return (lo[0] - pad, lo[1] - pad, hi[0] + pad, hi[1] + pad)
