@@ -149,7 +149,8 @@ def test_properties_one_or_many_and_bad_values():
     refused(ed, ed.set_sector, [west], light=300, match="light")
     refused(ed, ed.set_sector, [west], ceiling=math.nan)
     refused(ed, ed.set_sector, [west], floor=200, match="above its ceiling")
-    refused(ed, ed.set_line, [0], secret=True, match="secret")
+    ed.set_line([0], secret=True, blocks_sound=True, hidden=True)
+    assert ed.level.walls[0].line_bits == 32 | 64 | 128
     refused(ed, ed.set_line, [0], two_sided=True, match="no sector behind")
     refused(ed, ed.set_line, [0], back_side={"middle": "X"}, match="one-sided")
     refused(ed, ed.set_sector, [], light=1, match="no sector")

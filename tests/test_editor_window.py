@@ -357,3 +357,48 @@ def test_a_sectors_leaf_cells_fill_exactly_its_area(session):
     assert sum(map(_area, overlay.cells[outer])) == pytest.approx(512 ** 2 - 128 ** 2)
     assert sum(map(_area, overlay.cells[inner])) == pytest.approx(128 ** 2)
     session.compiler.close()
+
+
+def test_shift_enter_ends_an_open_line_that_splits_the_sector(session):
+    rectangle(session, 0, 0, 256, 256)
+    session.view.grid = 32
+    move(at(session, 128, 0))
+    step(session)
+    key(pygame.K_SPACE)
+    step(session)
+    press(at(session, 128, 256))
+    release(at(session, 128, 256))
+    step(session)
+    key(pygame.K_RETURN, pygame.KMOD_SHIFT)
+    step(session)
+    assert not session.refused, session.status
+    assert len(session.level.sectors) == 2 and session.draft is None
+    assert sum(w.back is not None for w in session.level.walls) == 1
+
+
+def test_ctrl_e_exports_a_wad_beside_the_level(session, tmp_path, monkeypatch):
+    from wallbsp.level.wadmap import load_wad_level
+    monkeypatch.chdir(tmp_path)
+    rectangle(session, 0, 0, 256, 256)
+    key(pygame.K_e, pygame.KMOD_CTRL)
+    step(session)
+    assert session.status.startswith("exported untitled.wad"), session.status
+    assert len(load_wad_level(tmp_path / "untitled.wad", "MAP01").walls) == 4
+
+
+def test_the_live_tree_after_an_edit_is_a_quick_tree_that_agrees_with_the_default(session):
+    import random
+    from wallbsp import compile_level
+    from wallbsp.editor.treeview import LIVE_CANDIDATES, LiveTree
+    rectangle(session, 0, 0, 512, 512)
+    rectangle(session, 128, 128, 256, 256)
+    rectangle(session, 512, 64, 768, 320)
+    session.compiler = LiveTree(session.editor)
+    overlay = session.compiler.wait()
+    session.compiler.close()
+    assert overlay.stats["candidates"] == LIVE_CANDIDATES
+    full = compile_level(session.level)
+    rng = random.Random(3)
+    for _ in range(300):
+        x, y = rng.uniform(-50, 800), rng.uniform(-50, 560)
+        assert overlay.tree.locate(x, y) == full.locate(x, y), (x, y)

@@ -221,8 +221,8 @@ def test_a_slow_environment_does_not_hold_the_batch(no_leak):
 class SlowEnv(gym.Env):
     """A tiny environment; the one reset with seed ``slow_seed`` says it is in a step
     (``entered.set()``) and waits there until ``gate`` opens, the one with ``bad_seed``
-    raises on its second step, ``exit_seed`` dies there, ``hang_seed`` never returns from
-    it.  ``gate`` and ``entered``: multiprocessing events, shared with forked workers."""
+    raises on its second step, ``exit_seed`` dies there, ``hang_seed`` says it is there
+    (``entered``) and never returns from it.  ``gate`` and ``entered``: multiprocessing events, shared with forked workers."""
 
     observation_space = gym.spaces.Box(0, 1, (2,), np.float32)
     action_space = gym.spaces.Discrete(2)
@@ -252,6 +252,8 @@ class SlowEnv(gym.Env):
         if self.t == 2 and self.seed_ == self.exit_seed:
             os._exit(3)
         if self.t == 2 and self.seed_ == self.hang_seed:
+            if self.entered is not None:
+                self.entered.set()
             multiprocessing.Event().wait()           # nobody sets it: hangs
         return np.full(2, self.t / 10, np.float32), 1.0, False, False, {"t": self.t}
 
@@ -298,11 +300,13 @@ def test_a_killed_worker_is_reported_and_the_others_shut_down(no_leak):
 
 def test_close_returns_when_a_worker_hangs(monkeypatch, no_leak):
     monkeypatch.setattr(vecpool, "CLOSE_S", 0.3)
-    envs = make_vec(SlowEnv, 2, workers=2, hang_seed=1)
+    entered = multiprocessing.Event()
+    envs = make_vec(SlowEnv, 2, workers=2, hang_seed=1, slow_seed=None, entered=entered)
     envs.reset(seed=0)
     envs.step(np.zeros(2, np.int64))
     envs.send(np.zeros(2, np.int64))                 # env 1 never comes back
-    envs.close()
+    assert entered.wait(600)                         # it is in that step (a bound only
+    envs.close()                                     # for a broken pool)
     assert all(p.exitcode is not None for p in envs.processes)
     assert envs.processes[1].exitcode < 0            # stopped by a signal: not waited for
 

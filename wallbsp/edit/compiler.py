@@ -4,7 +4,7 @@ editor goes on; the caller asks for the newest tree when it draws and is never b
 ``Compiler.submit(level, version)`` hands over a level (a newer one replaces one still
 waiting: only the newest is worth compiling); ``latest()`` is the newest finished
 ``Compiled`` (its ``version``, ``tree`` or the one-line ``error``, ``problems``, seconds and
-the tree's ``overlay``, partitions clipped)
+the tree's ``overlay``, its partitions clipped when first asked)
 or None.  ``compile_now(level, version)`` does the same work in the caller's thread (for
 scripts and tests).  The compile is ``wallbsp.compile_level`` (numpy; most of its time is
 spent outside the interpreter lock, so the window keeps drawing).
@@ -28,7 +28,7 @@ class Compiled(NamedTuple):
     error: str | None
     problems: list
     seconds: float
-    overlay: TreeOverlay | None   # its partition lines already clipped
+    overlay: TreeOverlay | None   # its partition lines clipped when first asked
 
 
 def compile_now(level, version: int = 0, candidates=None, seed: int = 0) -> Compiled:
@@ -39,10 +39,7 @@ def compile_now(level, version: int = 0, candidates=None, seed: int = 0) -> Comp
     except ValueError as err:
         tree, error = None, str(err).splitlines()[0]
     found = problems(level, tree)
-    overlay = None
-    if tree is not None:
-        overlay = TreeOverlay(tree)
-        overlay.partitions()
+    overlay = TreeOverlay(tree) if tree is not None else None
     return Compiled(version, tree, error, found, time.perf_counter() - start, overlay)
 
 

@@ -9,7 +9,7 @@ import re
 from wallbsp.edit.draft import EditError
 from wallbsp.edit.selection import Selection
 from wallbsp.geometry import COORD_LIMIT
-from wallbsp.level.format import MAX_LIGHT, MAX_NUMBER
+from wallbsp.level.format import MAX_LIGHT, MAX_NUMBER, WALL_FLAGS
 from wallbsp.level.model import Sector, Side, Start, Thing, Wall
 
 __all__ = ["Properties", "SKILL_BITS", "AMBUSH", "MULTIPLAYER"]
@@ -18,12 +18,8 @@ SKILL_BITS = (1, 2, 4)           # DOOM's THINGS flags: skills 1-2, 3, 4-5
 AMBUSH, MULTIPLAYER = 8, 16
 _COLOR = re.compile(r"#[0-9a-fA-F]{6}")
 SECTOR_FIELDS = {f.name for f in dataclasses.fields(Sector)}
-WALL_FIELDS = {"color", "upper_color", "lower_color", "upper_unpegged", "lower_unpegged",
-               "blocks", "special", "tag"}
+WALL_FIELDS = {"color", "upper_color", "lower_color", *WALL_FLAGS, "special", "tag"}
 SIDE_FIELDS = {f.name for f in dataclasses.fields(Side)}
-# DOOM's line flags the level format does not hold yet (SPEC §2b): refused by name
-_UNHELD_FLAGS = {"secret": "secret", "sound_blocking": "sound-blocking",
-                 "hidden": "hidden on the automap"}
 
 
 def _number(value, what: str, lo=-COORD_LIMIT, hi=COORD_LIMIT):
@@ -92,8 +88,6 @@ def _side(old: Side | None, change) -> Side | None:
 def _wall_fields(w: Wall, index: int, fields: dict) -> Wall:
     out = {}
     for key, value in fields.items():
-        if key in _UNHELD_FLAGS:
-            raise EditError(f"the level format has no {_UNHELD_FLAGS[key]} flag yet")
         if key == "two_sided":
             if _flag(value, key) != (w.back is not None):
                 raise EditError(f"walls[{index}] {'has no sector behind it' if value else 'has a sector on each side'}: "
@@ -165,7 +159,8 @@ class Properties:
         self.commit(level, label="sector properties")
 
     def set_line(self, lines=None, **fields) -> None:
-        """Set flags (``blocks``, ``upper_unpegged``, ``lower_unpegged``), ``special``,
+        """Set flags (``blocks``, ``upper_unpegged``, ``lower_unpegged``, ``secret``,
+        ``blocks_sound``, ``hidden``), ``special``,
         ``tag``, colours and sides (``front_side``/``back_side``: a dict of the fields to
         change, e.g. ``{"middle": "STARTAN3", "x_offset": 8}``) of lines (default: the
         selected ones)."""

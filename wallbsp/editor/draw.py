@@ -54,6 +54,18 @@ def close_shape(session):
     session.run(f"drew a shape of {len(points)} points", session.editor.draw_shape, points)
 
 
+def end_line(session):
+    """The draft as an open line from wall to wall across one sector, which it splits in
+    two (``Editor.draw_line``)."""
+    points = session.draft
+    if points is None or len(points) < 2:
+        session.say("a line needs two points", refused=True)
+        return
+    session.draft = None
+    session.run(f"split the sector along a line of {len(points)} points",
+                session.editor.draw_line, points)
+
+
 def undo_point(session):
     if session.draft:
         session.draft.pop()

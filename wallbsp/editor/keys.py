@@ -77,6 +77,18 @@ def _save(s):
         s.say(f"saved {path}")
 
 
+def _export(s):
+    """Export a DOOM WAD beside the level's file (``E1M1.json``: ``E1M1.wad``), or for a
+    level with none under its name in the current folder; the model's notes (texture names
+    replaced, things left out) on the status line."""
+    from pathlib import Path
+    path = getattr(s.editor, "path", None)
+    target = (Path(path) if path is not None else free_name(s.level.name)).with_suffix(".wad")
+    notes = s.command("export", "", target)
+    if notes is not None:
+        s.say(f"exported {target}" + "".join(f"; {note}" for note in notes))
+
+
 def free_name(name):
     from pathlib import Path
     name = (name or "untitled").split(" (")[0]       # "E1M1 (freedoom1.wad)": E1M1
@@ -248,6 +260,8 @@ KEYS = {
     ("z", (CTRL,)): ("undo", _undo), ("y", (CTRL,)): ("redo", _redo),
     ("z", (CTRL, SHIFT)): ("redo", _redo),
     ("s", (CTRL,)): ("save", _save),
+    ("e", (CTRL,)): ("export a DOOM WAD beside the level", _export),
+    ("return", (SHIFT,)): ("while drawing: end an open line that splits the sector", None),
     ("c", (CTRL,)): ("copy", lambda s: s.command("copy", f"copied {len(selected(s))} {s.mode}")),
     ("v", (CTRL,)): ("paste at the mouse", _paste),
     ("a", (CTRL,)): ("select all", _select_all),
@@ -311,6 +325,9 @@ def _drawing_key(session, name, mods) -> bool:
     if name == "escape":
         if not draw.cancel(session) and selected(session):
             _unselect(session)
+        return True
+    if session.draft is not None and name in ("return", "enter") and mods == (SHIFT,):
+        draw.end_line(session)
         return True
     if mods:
         return False

@@ -1,10 +1,14 @@
 """The tree, live: the level compiled beside the window after each edit, and drawn.
 
 ``LiveTree`` compiles (the model's ``compile_now``: the tree and the problems) on a worker
-thread whenever the model's ``version`` moves on, and hands the window a ``TreeOverlay`` (the tree, each partition line clipped to its convex
-cell, each seg's colour by the depth of its node, the problems) when it is done: the
-window never waits.  An edit made while a compile runs is compiled next; the ones between
-are skipped.  The overlays (``n``: partitions and segs by depth; always, with the tree:
+thread whenever the model's ``version`` moves on, and hands the window a ``TreeOverlay`` (the
+tree, each partition line clipped to its convex cell by the model's overlay, each seg's
+colour by the depth of its node, the problems) when it is done: the window never waits.
+An edit made while a compile runs is compiled next; the ones between are skipped.  The
+tree after an edit is a quick one (``LIVE_CANDIDATES`` candidate partitions per node, about
+a third of the default's time: fresh within 0.5 s on Freedoom MAP12); once no edit has come
+for ``FULL_AFTER`` seconds the compiler's default tree (the one ``compile`` and the export
+make) replaces it.  The overlays (``n``: partitions and segs by depth; always, with the tree:
 the leaf under the mouse, the statistics; ``o``: the front-to-back order from the camera,
 animated) are Abrash's "visual tool" for the compiler (S004).
 """
@@ -17,8 +21,9 @@ import time
 import numpy as np
 import pygame
 
-from wallbsp.app.mapview import clip_polygon, depth_color, node_depths, partition_pieces
+from wallbsp.app.mapview import clip_polygon, depth_color, node_depths
 from wallbsp.edit.compiler import compile_now
+from wallbsp.edit.overlay import TreeOverlay as PartitionOverlay
 from wallbsp.editor.mapdraw import COLORS, visible_segments
 
 __all__ = ["LiveTree", "TreeOverlay", "draw_tree_overlays", "leaf_cell", "leaf_cells",
@@ -28,6 +33,8 @@ PARTITION = (70, 140, 230)
 LEAF = (60, 200, 220)
 ORDER_SECONDS = 4.0          # the front-to-back animation shows every seg in this long
 PROBLEM = (255, 60, 200)
+LIVE_CANDIDATES = 4          # the quick tree's candidate partitions per node
+FULL_AFTER = 1.0             # seconds without an edit before the default tree is compiled
 _AT = re.compile(r"\((-?\d+(?:\.\d+)?), (-?\d+(?:\.\d+)?)\)")
 
 
@@ -42,8 +49,9 @@ class TreeOverlay:
         lo, hi = (v.min(axis=0), v.max(axis=0)) if len(v) else (np.zeros(2), np.ones(2))
         pad = 0.03 * float(max(hi - lo)) + 64
         self.bounds = (lo[0] - pad, lo[1] - pad, hi[0] + pad, hi[1] + pad)
-        pieces = partition_pieces(tree, self.bounds)
-        self.partitions = np.array([(*p, *q) for _, p, q in pieces], np.float64).reshape(-1, 4)
+        pieces = PartitionOverlay(tree, self.bounds).partitions()
+        self.partitions = np.array([(*p, *q) for *_, p, q in pieces],
+                                   np.float64).reshape(-1, 4)
         depth = node_depths(tree)
         levels = max(depth, default=0) + 1
         seg_depth = np.zeros(tree.seg_count, np.int64)
@@ -51,9 +59,20 @@ class TreeOverlay:
             seg_depth[start:stop] = depth[node]
         palette = np.array([depth_color(d, levels) for d in range(levels)], np.int64)
         self.seg_colors = palette[seg_depth] if tree.seg_count else np.zeros((0, 3), np.int64)
-        self.stats = tree.stats()
-        self.cells = leaf_cells(tree, self.bounds)
+        # the numbers the corner shows (tree.stats() also hashes the level: 0.2 s on MAP12)
+        self.stats = {"walls": len(level.walls), "segs": tree.seg_count,
+                      "splits": tree.seg_count - len(level.walls), "nodes": tree.node_count,
+                      "max_depth": tree.max_depth, "candidates": tree.candidates}
+        self._cells = None
         self._points = None
+
+    @property
+    def cells(self) -> dict:
+        """``leaf_cells`` of the tree, made when first asked (the worker makes them just
+        after handing the overlay over, so the window rarely does)."""
+        if self._cells is None:
+            self._cells = leaf_cells(self.tree, self.bounds)
+        return self._cells
 
     def problem_points(self):
         """``[(map point, message)]`` of the problems that have a place (made once)."""
@@ -67,8 +86,9 @@ class TreeOverlay:
 class LiveTree:
     """The background compile of ``editor``'s level; ``poll()`` picks up a finished one."""
 
-    def __init__(self, editor, problems=True):
+    def __init__(self, editor, problems=True, quick=LIVE_CANDIDATES):
         self.editor = editor
+        self.quick = quick             # the quick tree's candidates; None: the default only
         self.overlay = None            # the newest finished TreeOverlay
         self.error = None              # the last compile's failure, one line
         self.stamp = None              # changes when a new overlay arrives (layers redraw)
@@ -127,16 +147,31 @@ class LiveTree:
                     return
                 (version, level), self._wanted = self._wanted, None
                 self.busy = True
-            result = self._compile(version, level)
-            with self._lock:
-                self._done = result
-                self.busy = False
+            self._hand_over(self._compile(version, level, self.quick))
+            if self.quick is not None and self._quiet_for(FULL_AFTER):
+                self._hand_over(self._compile(version, level, None))
 
-    def _compile(self, version, level):
+    def _hand_over(self, result):
+        with self._lock:
+            # the quick tree always (the window waits for nothing else); the default one
+            # only if no newer edit waits for its own quick tree
+            if self.busy or self._wanted is None:
+                self._done = result
+            self.busy = False
+        if not isinstance(result, str):
+            _ = result.cells                        # made here, not in the window
+
+    def _quiet_for(self, seconds) -> bool:
+        """Whether no edit comes (and no close) within ``seconds``."""
+        with self._lock:
+            self._lock.wait_for(lambda: self._wanted is not None or self._closed, seconds)
+            return self._wanted is None and not self._closed
+
+    def _compile(self, version, level, candidates=None):
         """The model's compile and problems (``edit.compiler.compile_now``), then what the
         overlays draw, all on this thread."""
         try:
-            compiled = compile_now(level, version)
+            compiled = compile_now(level, version, candidates)
         except Exception as err:            # noqa: BLE001 - the worker must outlive any
             return f"not compiled: {type(err).__name__}: {err}"    # level; the window says why
         if compiled.tree is None:
@@ -336,7 +371,7 @@ def _stats(session, surface, overlay, live):
     fresh = overlay.version == session.editor.version
     lines = [f"tree: {s['walls']} walls, {s['segs']} segs ({s['splits']} splits), "
              f"{s['nodes']} nodes, depth {s['max_depth']}",
-             f"compiled in {1000 * overlay.seconds:.0f} ms"
+             f"compiled in {1000 * overlay.seconds:.0f} ms, {s['candidates']} candidates a node"
              + ("" if fresh else "  (compiling the newest edit...)"),
              f"{len(overlay.problems)} problems" + (f"; {live.error}" if live.error else "")]
     for i, text in enumerate(lines):

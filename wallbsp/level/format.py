@@ -13,7 +13,9 @@ ROOT_KEYS_2 = ROOT_KEYS + ("resources", "sky", "things", "thing_types", "script"
 SECTOR_KEYS = ("floor", "ceiling", "light", "floor_color", "ceiling_color", "sky")
 SECTOR_KEYS_2 = SECTOR_KEYS + ("floor_texture", "ceiling_texture", "special", "tag")
 WALL_KEYS = ("v1", "v2", "front", "back", "color", "upper_color", "lower_color")
-WALL_FLAGS = ("upper_unpegged", "lower_unpegged", "blocks")
+WALL_FLAGS = ("upper_unpegged", "lower_unpegged", "blocks", "secret", "blocks_sound", "hidden")
+# the wall flags that are DOOM's linedef bits as they are (the others depend on the sides)
+WALL_LINE_BITS = {"secret": 32, "blocks_sound": 64, "hidden": 128}  # ML_SECRET, ML_SOUNDBLOCK, ML_DONTDRAW
 WALL_KEYS_2 = WALL_KEYS + ("front_side", "back_side") + WALL_FLAGS + ("special", "tag")
 SIDE_KEYS = ("upper", "middle", "lower", "x_offset", "y_offset")
 START_KEYS = ("x", "y", "angle")

@@ -43,7 +43,8 @@ Version 2 (each optional; a version-1 file warns about them as unknown keys)
                            ``middle``, ``lower`` are names (``"-"``, ``null`` or missing: no
                            texture), ``x_offset``, ``y_offset`` integers (0).  A one-sided
                            wall has no ``back_side``.
-    wall ``upper_unpegged``, ``lower_unpegged``, ``blocks``   ``false``
+    wall ``upper_unpegged``, ``lower_unpegged``, ``blocks``, ``secret``,
+                           ``blocks_sound``, ``hidden``   ``false`` (written only when true)
     wall and sector ``special``, ``tag``   ``0`` (integers 0..65535, DOOM's numbering)
     sector ``floor_texture``, ``ceiling_texture``   ``null`` (``"-"`` too)
 

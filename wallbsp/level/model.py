@@ -17,7 +17,7 @@ from pathlib import Path
 import numpy as np
 
 from wallbsp.files import LevelError
-from wallbsp.level.format import NO_TEXTURE
+from wallbsp.level.format import NO_TEXTURE, WALL_LINE_BITS
 
 SKY_FLAT = "F_SKY1"      # DOOM's ceiling flat that means "open sky"
 
@@ -80,6 +80,14 @@ class Wall:
     blocks: bool = False             # a two-sided wall that nothing walks through
     special: int = 0
     tag: int = 0
+    secret: bool = False             # DOOM's ML_SECRET: one-sided on the automap
+    blocks_sound: bool = False       # DOOM's ML_SOUNDBLOCK: the second one stops a sound
+    hidden: bool = False             # DOOM's ML_DONTDRAW: never on the automap
+
+    @property
+    def line_bits(self) -> int:
+        """DOOM's linedef bits of ``secret``, ``blocks_sound`` and ``hidden``."""
+        return sum(bit for key, bit in WALL_LINE_BITS.items() if getattr(self, key))
 
     @property
     def drawn_upper_color(self) -> str:

@@ -58,8 +58,7 @@ def _is_number(value) -> bool:
 
 def _flags_ok(values: dict) -> bool:
     """Whether a wall's flags, special and tag are good."""
-    return (type(values["upper_unpegged"]) is bool and type(values["lower_unpegged"]) is bool
-            and type(values["blocks"]) is bool
+    return (all(type(values[key]) is bool for key in WALL_FLAGS)
             and _is_number(values["special"]) and _is_number(values["tag"]))
 
 

@@ -20,7 +20,8 @@ How a map becomes a version-2 level (DOOM's numbering is kept, SPEC §2b):
   with only a left sidedef is turned round (v1 and v2 swapped) so that its one side is the front.
   Each side's textures and offsets are ``front_side``/``back_side``; the flags ML_DONTPEGTOP (8)
   and ML_DONTPEGBOTTOM (16) are ``upper_unpegged``/``lower_unpegged``, ML_BLOCKING (1) on a
-  two-sided line is ``blocks``; ``special`` and ``tag`` are the linedef's.
+  two-sided line is ``blocks``; ML_SECRET (32), ML_SOUNDBLOCK (64) and ML_DONTDRAW (128) are
+  ``secret``, ``blocks_sound`` and ``hidden``; ``special`` and ``tag`` are the linedef's.
 - Vertices are the ends of the kept walls, deduplicated by coordinate and numbered in order of
   first use (the node builder's extra vertices at the end of VERTEXES are dropped).
 - Sectors are SECTORS, all of them, in order (sector ``i`` is DOOM's sector ``i``): floor,
@@ -50,7 +51,7 @@ import re
 import numpy as np
 
 from wallbsp.level.model import Level, LevelError, Sector
-from wallbsp.level.format import FORMAT
+from wallbsp.level.format import FORMAT, WALL_LINE_BITS
 from wallbsp.level.io import level_from_dict
 from wallbsp.level import udmfmap
 from wallbsp.assets.wad import Wad, lump_name, open_wad
@@ -344,6 +345,7 @@ def _add_wall_fields(wall_dicts: list[dict], walls: dict, lines: np.ndarray,
         wall.update(upper_unpegged=bool(fl & ML_DONTPEGTOP),
                     lower_unpegged=bool(fl & ML_DONTPEGBOTTOM),
                     blocks=bool(fl & ML_BLOCKING) and k >= 0, special=special, tag=tag)
+        wall.update({key: True for key, bit in WALL_LINE_BITS.items() if fl & bit})
 
 
 def _side_dicts(sides: np.ndarray) -> list[dict]:

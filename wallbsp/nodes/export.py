@@ -6,7 +6,8 @@ node builder runs), ``udmf_text(level) -> str``.
 
 How a level becomes a map: vertices are VERTEXES (integers, within -32768..32767, else a
 ``LevelError``); each wall a linedef (v1, v2; a one-sided wall ``ML_BLOCKING``, a two-sided
-one ``ML_TWOSIDED`` and ``ML_BLOCKING`` if it ``blocks``; the unpegged flags; special and
+one ``ML_TWOSIDED`` and ``ML_BLOCKING`` if it ``blocks``; the unpegged, secret, sound-blocking
+and hidden flags; special and
 tag) with a sidedef per side (offsets, texture names, ``-`` for none; a one-sided wall with no
 middle texture gets ``DEFAULT_WALL``); sectors keep heights (rounded), light, flats (a sky
 sector's ceiling is ``F_SKY1``, a missing flat ``DEFAULT_FLAT``), special and tag; things
@@ -58,7 +59,7 @@ def level_map_lumps(level: Level, map_name: str = "MAP01") -> dict:
         two = w.back is not None
         flags = (ML_TWOSIDED if two else ML_BLOCKING) | (ML_BLOCKING if two and w.blocks else 0)
         flags |= (ML_DONTPEGTOP if w.upper_unpegged else 0) | \
-            (ML_DONTPEGBOTTOM if w.lower_unpegged else 0)
+            (ML_DONTPEGBOTTOM if w.lower_unpegged else 0) | w.line_bits
         lines[i] = (w.v1, w.v2, flags, w.special, w.tag, len(sides),
                     len(sides) + 1 if two else 0xFFFF)
         sides.append(_side(w.front_side, not two) + (w.front,))
@@ -119,7 +120,8 @@ def udmf_text(level: Level, lumps: dict) -> str:
     for ld in np.frombuffer(lumps["LINEDEFS"], LINEDEF):
         back = "" if ld["left"] == 0xFFFF else f" sideback = {ld['left']};"
         flags = "".join(f" {k} = true;" for bit, k in ((1, "blocking"), (4, "twosided"),
-                        (8, "dontpegtop"), (16, "dontpegbottom")) if ld["flags"] & bit)
+                        (8, "dontpegtop"), (16, "dontpegbottom"), (32, "secret"),
+                        (64, "blocksound"), (128, "dontdraw")) if ld["flags"] & bit)
         out.append(f"linedef {{ v1 = {ld['v1']}; v2 = {ld['v2']}; sidefront = {ld['right']};"
                    f"{back}{flags} special = {ld['special']}; id = {ld['tag']}; }}")
     for s in np.frombuffer(lumps["SIDEDEFS"], SIDEDEF):

@@ -27,7 +27,8 @@ How a level becomes a DOOM map:
   is the front side and ``sidenum[1]`` the back (-1 for a one-sided wall).  Flags:
   ML_TWOSIDED for a wall with a ``back``; ML_BLOCKING for ``blocks`` and, as map editors
   set it, for every one-sided wall; ML_DONTPEGTOP/ML_DONTPEGBOTTOM for
-  ``upper_unpegged``/``lower_unpegged``.  ``special`` and ``tag`` are the wall's.
+  ``upper_unpegged``/``lower_unpegged``; ML_SECRET, ML_SOUNDBLOCK, ML_DONTDRAW for ``secret``,
+  ``blocks_sound``, ``hidden``.  ``special`` and ``tag`` are the wall's.
 - **Sides**: wall ``i``'s front side, then its back side if it has one, in wall order; the
   textures (upper → top, middle → mid, lower → bottom) in upper case, ``"-"`` where the
   level names none (every version-1 wall); offsets × 65536.
@@ -153,6 +154,7 @@ class LevelMap:
                 flags |= ML_DONTPEGTOP
             if wall.lower_unpegged:
                 flags |= ML_DONTPEGBOTTOM
+            flags |= wall.line_bits
             ld.flags, ld.special, ld.tag = flags, int(wall.special), int(wall.tag)
             set_line_ends(ld, vertexes[wall.v1], vertexes[wall.v2])    # as P_LoadLineDefs
             ld.sidenum = list(self._wall_sides[i])
