@@ -64,6 +64,9 @@ def parse(argv=None):
                         "the runners evenly over them")
     p.add_argument("--sample-rounds", type=int, default=0,
                    help="measure sampling alone (no learning) over this many rounds, then stop")
+    p.add_argument("--evaluate", type=Path, default=None, metavar="CHECKPOINT",
+                   help="play --episodes greedy episodes with a checkpoint's policy, no Ray")
+    p.add_argument("--episodes", type=int, default=50)
     p.add_argument("--threads", type=int, default=1,
                    help="BLAS and torch threads in each process (driver, learner, runners)")
     p.add_argument("--cpus", type=int, default=None, help="CPUs Ray may count (per node)")
@@ -111,7 +114,8 @@ def build(args):
     envs = 1 if several else args.envs        # RLlib's multi-agent runners step one env
     fragment = max(args.batch // max(args.runners, 1) // envs, 1)
     runners = dict(num_env_runners=args.runners, num_envs_per_env_runner=envs,
-                   rollout_fragment_length=fragment, num_cpus_per_env_runner=1)
+                   rollout_fragment_length=fragment,
+                   num_cpus_per_env_runner=max(1, args.env_workers))
     if not several:
         runners["gym_env_vectorize_mode"] = "vector_entry_point"    # make_vec per runner
     if args.nodes:
@@ -183,10 +187,7 @@ def summary(result, args, iteration, started, names) -> dict:
             "return_max": _unscaled(runners.get("episode_return_max"), args.reward_scale),
             "episode_len_mean": _rounded(runners.get("episode_len_mean")),
             "episodes": _whole(runners.get("num_episodes")),
-            **({"agent_return_mean": {a: round(float(v), 2) for a, v in
-                                      runners["agent_episode_return_mean"].items()}}
-               if args.scenario == DEATHMATCH and runners.get("agent_episode_return_mean")
-               else {}),
+            **agent_returns(runners, args),
             "wall_s": round(time.perf_counter() - started, 1),
             "iter_s": round(seconds, 2),
             "sample_s": _rounded(result.get("timers", {}).get("env_runner_sampling_timer"), 2),
@@ -197,6 +198,14 @@ def summary(result, args, iteration, started, names) -> dict:
     if seconds:
         line["steps_per_s_node"] = {k: round(v / seconds, 1) for k, v in per_node.items()}
     return line
+
+
+def agent_returns(runners, args) -> dict:
+    """Deathmatch: each agent's mean return (RLlib's multi-agent runners' key)."""
+    per_agent = runners.get("agent_episode_returns_mean") or {}
+    if args.scenario != DEATHMATCH or not per_agent:
+        return {}
+    return {"agent_return_mean": {a: round(float(v), 2) for a, v in per_agent.items()}}
 
 
 def learner_stats(result) -> dict:
@@ -291,6 +300,37 @@ def train(args) -> list:
     return lines
 
 
+def evaluate(args) -> dict:
+    """The checkpoint's policy, greedy (the most likely action), on ``--episodes``
+    episodes seeded ``seed * 1000 + i`` of the scenario (wallbsp's or, with
+    ``--vizdoom``, ViZDoom's: a policy can be played on the other source)."""
+    import numpy as np
+    import torch
+    from ray.rllib.core.rl_module.rl_module import RLModule
+    from wallbsp.envs.rllib import make_env
+    torch.set_num_threads(args.threads)
+    path = args.evaluate.resolve() / "learner_group" / "learner" / "rl_module" / "default_policy"
+    module = RLModule.from_checkpoint(str(path))
+    env = make_env(env_config(args))
+    returns, lengths = [], []
+    for episode in range(args.episodes):
+        obs, _ = env.reset(seed=args.seed * 1000 + episode)
+        total, steps, done = 0.0, 0, False
+        while not done:
+            with torch.no_grad():
+                out = module.forward_inference({"obs": torch.from_numpy(obs[None])})
+            action = int(out["action_dist_inputs"][0].argmax())
+            obs, reward, terminated, truncated, _ = env.step(action)
+            total, steps, done = total + reward, steps + 1, terminated or truncated
+        returns.append(total / args.reward_scale)
+        lengths.append(steps)
+    env.close()
+    return {"evaluate": str(args.evaluate), "on": "vizdoom" if args.vizdoom else "wallbsp",
+            "episodes": args.episodes, "return_mean": round(float(np.mean(returns)), 2),
+            "return_std": round(float(np.std(returns)), 2),
+            "episode_len_mean": round(float(np.mean(lengths)), 2)}
+
+
 def main(argv=None) -> int:
     args = parse(argv)
     if args.scenario == DEATHMATCH:
@@ -304,7 +344,10 @@ def main(argv=None) -> int:
         print(f'tools/train.py: needs Ray RLlib and torch ({err}): pip install -e ".[rl]"',
               file=sys.stderr)
         return 2
-    train(args)
+    if args.evaluate:
+        print(json.dumps(evaluate(args)), flush=True)
+    else:
+        train(args)
     return 0
 
 
