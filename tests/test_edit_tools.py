@@ -8,7 +8,8 @@ import pytest
 import wallbsp
 from wallbsp.edit import Editor, EditError
 from wallbsp.edit.compiler import Compiler, compile_now
-from wallbsp.edit.overlay import TreeOverlay, chord, clip_convex
+from wallbsp.bsp.cells import partition_pieces
+from wallbsp.edit.overlay import TreeOverlay
 
 FREEDOOM2 = "/usr/share/games/doom/freedoom2.wad"
 
@@ -102,18 +103,7 @@ def small_tree():
 def test_overlay_partitions_match_clipping_each_cell():
     tree = small_tree()
     overlay = TreeOverlay(tree)
-    x0, y0, x1, y1 = overlay.bounds
-    want, stack = {}, [(tree.root, [(x0, y0), (x1, y0), (x1, y1), (x0, y1)])]
-    while stack:
-        node, cell = stack.pop()
-        if node < 0 or len(cell) < 3:
-            continue
-        piece = chord(cell, tree.node_line[node])
-        if piece:
-            want[node] = piece
-        front, back = tree.node_child[node].tolist()
-        stack += [(front, clip_convex(cell, tree.node_line[node], -1)),
-                  (back, clip_convex(cell, tree.node_line[node], 1))]
+    want = {node: (p, q) for node, p, q in partition_pieces(tree, overlay.bounds)}
     got = {node: (p, q) for node, _, p, q in overlay.partitions()}
     assert set(got) == set(want)
     for node, (p, q) in got.items():

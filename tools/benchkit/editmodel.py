@@ -198,20 +198,9 @@ def _grid_points(level):
 
 
 def _per_cell(tree):
-    from wallbsp.edit.overlay import TreeOverlay, chord, clip_convex
-    x0, y0, x1, y1 = TreeOverlay(tree).bounds
-    pieces, stack = [], [(tree.root, [(x0, y0), (x1, y0), (x1, y1), (x0, y1)])]
-    while stack:
-        node, cell = stack.pop()
-        if node < 0 or len(cell) < 3:
-            continue
-        piece = chord(cell, tree.node_line[node])
-        if piece:
-            pieces.append(piece)
-        front, back = tree.node_child[node].tolist()
-        stack += [(front, clip_convex(cell, tree.node_line[node], -1)),
-                  (back, clip_convex(cell, tree.node_line[node], 1))]
-    return pieces
+    from wallbsp.bsp.cells import partition_pieces
+    from wallbsp.edit.overlay import TreeOverlay
+    return [(p, q) for _node, p, q in partition_pieces(tree, TreeOverlay(tree).bounds)]
 
 
 def section(result: dict) -> str:

@@ -14,9 +14,10 @@ import math
 
 import numpy as np
 
+from wallbsp.bsp.cells import partition_pieces
 from wallbsp.image import save_png
 
-__all__ = ["MapView", "level_bounds", "node_depths", "depth_color", "clip_polygon",
+__all__ = ["MapView", "level_bounds", "node_depths", "depth_color",
            "partition_pieces", "draw_segs_by_depth", "draw_partition", "automap_layer",
            "draw_marker"]
 
@@ -85,60 +86,6 @@ def depth_color(depth: int, max_depth: int):
     """Shallow nodes red, deep ones violet: the tree's shape at a glance."""
     hue = 0.8 * depth / max(1, max_depth - 1)
     return tuple(int(255 * c) for c in colorsys.hsv_to_rgb(hue, 0.85, 1.0))
-
-
-def clip_polygon(poly, line, keep_sign):
-    """The part of a convex polygon where ``sign(a*x + b*y + c) != -keep_sign``."""
-    a, b, c = line
-    out = []
-    for i, p in enumerate(poly):
-        q = poly[(i + 1) % len(poly)]
-        sp = keep_sign * (a * p[0] + b * p[1] + c)
-        sq = keep_sign * (a * q[0] + b * q[1] + c)
-        if sp >= 0:
-            out.append(p)
-        if (sp > 0 > sq) or (sp < 0 < sq):
-            t = sp / (sp - sq)
-            out.append((p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])))
-    return out
-
-
-def _line_in_cell(poly, line):
-    """The piece of a line inside a convex polygon, or None."""
-    a, b, c = (float(v) for v in line)
-    hits = []
-    for i, p in enumerate(poly):
-        q = poly[(i + 1) % len(poly)]
-        sp, sq = a * p[0] + b * p[1] + c, a * q[0] + b * q[1] + c
-        if sp == 0:
-            hits.append(p)
-        elif sp * sq < 0:
-            t = sp / (sp - sq)
-            hits.append((p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])))
-    if len(hits) < 2:
-        return None
-    direction = (b, -a)
-    hits.sort(key=lambda h: h[0] * direction[0] + h[1] * direction[1])
-    return hits[0], hits[-1]
-
-
-def partition_pieces(tree, bounds):
-    """Each node's partition line clipped to its cell: ``[(node, p, q), ...]``."""
-    x0, y0, x1, y1 = bounds
-    pieces = []
-    stack = [(tree.root, [(x0, y0), (x1, y0), (x1, y1), (x0, y1)])] if tree.node_count else []
-    while stack:
-        node, cell = stack.pop()
-        if node < 0 or len(cell) < 3:
-            continue
-        line = tuple(int(v) for v in tree.node_line[node])
-        piece = _line_in_cell(cell, line)
-        if piece:
-            pieces.append((node, *piece))
-        front, back = tree.node_child[node].tolist()
-        stack.append((front, clip_polygon(cell, line, -1)))
-        stack.append((back, clip_polygon(cell, line, 1)))
-    return pieces
 
 
 def draw_segs_by_depth(surface, tree, view, widths=(2, 2)):

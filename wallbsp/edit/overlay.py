@@ -10,42 +10,9 @@ from __future__ import annotations
 
 import numpy as np
 
-__all__ = ["TreeOverlay", "clip_convex", "chord"]
+from wallbsp.bsp.cells import leaf_cell
 
-
-def clip_convex(poly: list, line, keep: int) -> list:
-    """The part of a convex polygon where ``keep * (a*x + b*y + c) >= 0``."""
-    a, b, c = (float(v) for v in line)
-    out = []
-    for i, p in enumerate(poly):
-        q = poly[(i + 1) % len(poly)]
-        sp = keep * (a * p[0] + b * p[1] + c)
-        sq = keep * (a * q[0] + b * q[1] + c)
-        if sp >= 0:
-            out.append(p)
-        if (sp > 0 > sq) or (sp < 0 < sq):
-            t = sp / (sp - sq)
-            out.append((p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])))
-    return out
-
-
-def chord(poly: list, line):
-    """The piece of the line inside a convex polygon, or None (the reference the fast
-    ``TreeOverlay.partitions`` is tested against)."""
-    a, b, c = (float(v) for v in line)
-    hits = []
-    for i, p in enumerate(poly):
-        q = poly[(i + 1) % len(poly)]
-        sp, sq = a * p[0] + b * p[1] + c, a * q[0] + b * q[1] + c
-        if sp == 0:
-            hits.append(p)
-        elif sp * sq < 0:
-            t = sp / (sp - sq)
-            hits.append((p[0] + t * (q[0] - p[0]), p[1] + t * (q[1] - p[1])))
-    if len(hits) < 2:
-        return None
-    hits.sort(key=lambda h: h[0] * b - h[1] * a)        # along the line's direction (b, -a)
-    return hits[0], hits[-1]
+__all__ = ["TreeOverlay"]
 
 
 class TreeOverlay:
@@ -142,15 +109,7 @@ class TreeOverlay:
         """``(leaf, sector, cell)`` under (x, y): the leaf's index, its sector (None
         outside the map) and its convex cell as a polygon (within ``bounds``)."""
         tree = self.tree
-        x0, y0, x1, y1 = self.bounds
-        cell = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
-        node = tree.root
-        while node >= 0:
-            a, b, c = (int(v) for v in tree.node_line[node])
-            front = a * x + b * y + c <= 0
-            cell = clip_convex(cell, (a, b, c), -1 if front else 1)
-            node = int(tree.node_child[node][0 if front else 1])
-        leaf = ~node
+        leaf, cell = leaf_cell(tree, self.bounds, x, y)
         sector = int(tree.leaf_sector[leaf])
         return leaf, (None if sector < 0 else sector), cell
 

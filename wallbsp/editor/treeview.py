@@ -21,7 +21,8 @@ import time
 import numpy as np
 import pygame
 
-from wallbsp.app.mapview import clip_polygon, depth_color, node_depths
+from wallbsp.app.mapview import depth_color, node_depths
+from wallbsp.bsp.cells import clip_convex, leaf_cell as cell_of_leaf
 from wallbsp.edit.compiler import compile_now
 from wallbsp.edit.overlay import TreeOverlay as PartitionOverlay
 from wallbsp.editor.mapdraw import COLORS, visible_segments
@@ -217,8 +218,8 @@ def leaf_cells(tree, bounds) -> dict:
             continue
         line = tuple(float(v) for v in lines[node])
         front, back = (int(c) for c in child[node])
-        stack.append((front, clip_polygon(cell, line, -1)))
-        stack.append((back, clip_polygon(cell, line, 1)))
+        stack.append((front, clip_convex(cell, line, -1)))
+        stack.append((back, clip_convex(cell, line, 1)))
     return cells
 
 
@@ -249,16 +250,7 @@ def fill_sectors(session, surface, sectors, color, alpha=48, limit=3000):
 def leaf_cell(tree, bounds, x, y):
     """``(leaf, sector, polygon)``: the convex cell of the leaf holding (x, y), clipped to
     ``bounds``, found by walking down from the root and cutting at each node."""
-    x0, y0, x1, y1 = bounds
-    cell = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
-    node = tree.root
-    lines, child = tree.node_line, tree.node_child
-    while node >= 0:
-        a, b, c = (float(v) for v in lines[node])
-        front = a * x + b * y + c <= 0
-        cell = clip_polygon(cell, (a, b, c), -1 if front else 1)
-        node = int(child[node][0 if front else 1])
-    leaf = ~node
+    leaf, cell = cell_of_leaf(tree, bounds, x, y)
     return leaf, int(tree.leaf_sector[leaf]), cell
 
 
