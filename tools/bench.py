@@ -33,6 +33,7 @@ BENCHMARKS = {
     "multiagent": ("multiagent", "several agents in one world: steps/s for 2 and 4 agents"),
     "hud": ("hud", "the status bar, weapon, messages and flashes: CPU ms a frame and a tic"),
     "game": ("game", "the walkthrough as a game on E1M1 under X: frames/s, HUD and sound ms"),
+    "envstep": ("env_baseline", "an env step (E1M1 and basic, 160x120) against the wave's start, one process"),
     "checks": ("input_checks", "env steps/s with issue 34's input checks against a baseline, one process"),
     "newcomer": ("newcomer", "a scripted newcomer on the bundled level 1: runs alive at skill 2"),
     "startup": ("startup", "wallbsp walk WAD from a cold kernel cache: seconds to window, to play"),

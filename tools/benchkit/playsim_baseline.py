@@ -3,7 +3,11 @@
 time in alternating order, so that load from elsewhere on the machine falls on both alike
 to the second (separate processes on a loaded machine differ by 2x between runs).
 
-    python tools/bench.py playsim_baseline --baseline DIR [--rounds N]
+    python tools/bench.py playsim_baseline --baseline DIR [--rounds N] [--drawn]
+
+With ``--drawn`` each level tic is followed, on both sides, by the renderer's state read
+from the play and one 320x200 textured frame from the console player's eye (the drawn-every-
+tic benchmark of ``playsim``), still timed 35 tics a turn.
 
 DIR is another checkout (e.g. ``git archive COMMIT | tar -x -C DIR``).  Both packages are
 named ``wallbsp``: the baseline's is imported first and its modules moved aside under
@@ -37,22 +41,47 @@ def warm(trace):
     for c in demo.tics[:300]:
         play.g_ticker(c)
     trace.trace_line(play)
-old = load(sys.argv[1]); warm(old)
+DRAWN = sys.argv[3] == "drawn"
+def modules():
+    if not DRAWN:
+        return None
+    names = ["app.vanilla", "bsp.build", "camera", "game.playstate", "level.wadmap", "render"]
+    return {n: importlib.import_module("wallbsp." + n) for n in names}
+def drawer(m, play, s):
+    """One 320x200 textured frame from the console player's eye after each level tic, the
+    renderer's state read from the play first (tools/benchkit/playsim.py's drawn_rate)."""
+    if m is None:
+        return None
+    level = m["level.wadmap"].load_wad_level(W[s[0]], m["app.vanilla"].map_name(play))
+    state = m["game.playstate"].PlayState(m["bsp.build"].compile_level(level), play,
+                                         play.gameskill + 1)
+    player = play.players[play.consoleplayer]
+    def frame():
+        mo = player.mo
+        state.sync()
+        m["render"].render(state, m["camera"].Camera(mo.x / 65536, mo.y / 65536,
+                           player.viewz / 65536, (mo.angle & 0xFFFFFFFF) * 360 / 2**32), 320, 200)
+    frame()
+    return frame
+old = load(sys.argv[1]); warm(old); old_mods = modules()
 for k in [k for k in sys.modules if k == "wallbsp" or k.startswith("wallbsp.")]:
     sys.modules["old_" + k] = sys.modules.pop(k)
-new = load(sys.argv[2]); warm(new)
+new = load(sys.argv[2]); warm(new); new_mods = modules()
 times = {"baseline": {}, "this": {}}
 same = True
-for s in sys.argv[3:]:
+for s in sys.argv[4:]:
     (po, demo), (pn, _) = old.start_demo(W[s[0]], f"DEMO{s[2]}"), new.start_demo(W[s[0]], f"DEMO{s[2]}")
     t = {"baseline": 0.0, "this": 0.0}
+    draw = {"baseline": drawer(old_mods, po, s), "this": drawer(new_mods, pn, s)}
     for k, i in enumerate(range(0, len(demo.tics), 35)):
         part = demo.tics[i:i + 35]
         pair = [("baseline", po), ("this", pn)]
         for name, play in (pair if k % 2 == 0 else pair[::-1]):
+            frame = draw[name]
             start = time.perf_counter()
             for c in part:
-                play.g_ticker(c)
+                if play.g_ticker(c) and frame is not None and play.gamestate == 0:
+                    frame()
             t[name] += time.perf_counter() - start
         same = same and old.trace_line(po) == new.trace_line(pn)
     for name in t:
@@ -61,8 +90,13 @@ print(json.dumps({"times": times, "traces_equal": same}))
 '''
 
 
-def run_round(baseline: Path) -> dict:
-    out = subprocess.run([sys.executable, "-c", CHILD, str(baseline), str(ROOT), *DEMOS],
+def run_round(baseline: Path, drawn: bool = False) -> dict:
+    mode = "drawn" if drawn else "headless"
+    for stale in baseline.glob("wallbsp/game/__pycache__/playthings*.nb[ic]"):
+        # before ee97f12's successors, playthings compiled a generated kernel that numba
+        # caches but cannot load back ("No module named '<dynamic>'"): compile it afresh
+        stale.unlink()
+    out = subprocess.run([sys.executable, "-c", CHILD, str(baseline), str(ROOT), mode, *DEMOS],
                          check=True, capture_output=True, text=True, cwd="/tmp").stdout
     data = json.loads(out.strip().splitlines()[-1])
     times = data["times"]
@@ -78,8 +112,10 @@ def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--baseline", type=Path, required=True)
     parser.add_argument("--rounds", type=int, default=3)
+    parser.add_argument("--drawn", action="store_true",
+                        help="a 320x200 textured frame drawn after every level tic, both sides")
     args = parser.parse_args(argv)
-    rounds = [run_round(args.baseline.resolve()) for _ in range(args.rounds)]
+    rounds = [run_round(args.baseline.resolve(), args.drawn) for _ in range(args.rounds)]
     print(json.dumps({"rounds": rounds,
                       "median_ratio_total": statistics.median(r["ratio_total"] for r in rounds),
                       "traces_equal": all(r["traces_equal"] for r in rounds)}, indent=1))
