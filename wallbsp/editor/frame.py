@@ -57,7 +57,7 @@ def static_layer(session, arrays):
         from wallbsp.editor.treeview import draw_partitions, draw_segs_by_depth
         under = lambda surface, view: draw_partitions(surface, view, overlay)      # noqa: E731
         over = lambda surface, view: draw_segs_by_depth(surface, view, overlay)    # noqa: E731
-    extra = (session.show_tree, overlay.version if overlay is not None else None)
+    extra = (session.show_tree, id(live.latest) if overlay is not None else None)
     return session.layer.surface(session.view, arrays, session.mode, session.display, extra,
                                  under, over)
 
