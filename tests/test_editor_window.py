@@ -394,7 +394,7 @@ def test_the_live_tree_after_an_edit_is_updated_and_agrees_with_a_fresh_compile(
     rectangle(session, 128, 128, 256, 256)
     session.compiler = LiveTree(session.editor, whole_after=None)
     first = session.compiler.wait()
-    rectangle(session, 512, 64, 768, 320)                 # against the first room
+    session.editor.draw_rectangle(512, 64, 768, 320)      # against the first room
     done = session.compiler.wait()
     session.compiler.close()
     assert first.kept == 0 and 0 < done.kept <= done.tree.node_count
