@@ -53,6 +53,7 @@ class LiveTree:
         self.busy = False
         self.with_problems = problems
         self._wanted = None             # (version, level) to compile next
+        self._asked = None              # the version last asked for
         self._done = None
         self._points = (None, [])
         self._lock = threading.Condition()
@@ -74,14 +75,14 @@ class LiveTree:
     def request(self):
         with self._lock:
             self._wanted = (self.editor.version, self.editor.level)
+            self._asked = self.editor.version
             self._lock.notify()
 
     def poll(self):
         """Ask for a compile when the level changed; take a finished one.  True when the
         tree is up to date with the level."""
-        if self._wanted is None or self._wanted[0] != self.editor.version:
-            if not self.current():
-                self.request()
+        if self._asked != self.editor.version and not self.current():
+            self.request()          # once a version: not again while it is compiling
         with self._lock:
             done, self._done = self._done, None
         if done is not None:
