@@ -50,6 +50,13 @@ class LevelArrays:
         self.thing_dim = [tuple(int(c * DIM) for c in k.color) for k in kinds]
         self.thing_angle = np.radians([t.angle for t in level.things])
 
+    def mapped_colors(self, surface, bright: bool) -> np.ndarray:
+        """Each thing's colour (bright or dim) as ``surface``'s pixel values (made once)."""
+        key = (bright, surface.get_bitsize(), surface.get_masks())
+        if getattr(self, "_mapped", (None,))[0] != key:
+            self._mapped = (key, mapped(surface, self.thing_color if bright else self.thing_dim))
+        return self._mapped[1]
+
     def bounds(self):
         pts = np.concatenate([self.vertices, self.things])
         if not len(pts):
@@ -82,9 +89,10 @@ class StaticLayer:
         self.scrolls = 0        # how many times it was scrolled, its uncovered strips drawn
 
     def surface(self, view: View, arrays: LevelArrays, mode: str, like, extra=None,
-                under=None, over=None):
+                under=None, over=None, top=None):
         """``under``/``over``: painters ``f(surface, view)`` drawn below and above the walls
-        (the tree overlay); ``extra`` names what they show, so the layer knows to redraw."""
+        (the tree overlay), ``top`` over everything (the problems); ``extra`` names what
+        they show, so the layer knows to redraw."""
         key = (view.key(), id(arrays), mode, extra)
         if key == self.key and self.picture is not None:
             return self.picture
@@ -95,7 +103,7 @@ class StaticLayer:
                 self.picture.set_clip(strip)
                 view.region = strip
                 try:
-                    draw_static(self.picture, view, arrays, mode, under, over)
+                    draw_static(self.picture, view, arrays, mode, under, over, top)
                 finally:
                     view.region = None
                     self.picture.set_clip(None)
@@ -103,7 +111,7 @@ class StaticLayer:
         else:
             if self.picture is None or self.picture.get_size() != (view.width, view.height):
                 self.picture = pygame.Surface((view.width, view.height), 0, like)
-            draw_static(self.picture, view, arrays, mode, under, over)
+            draw_static(self.picture, view, arrays, mode, under, over, top)
             self.draws += 1
         self.key = key
         return self.picture
@@ -134,7 +142,8 @@ def _uncovered(shift, width, height):
     return strips
 
 
-def draw_static(surface, view: View, arrays: LevelArrays, mode: str, under=None, over=None):
+def draw_static(surface, view: View, arrays: LevelArrays, mode: str, under=None, over=None,
+                top=None):
     surface.fill(COLORS["background"])
     if view.show_grid and under is None:      # the tree's partition lines replace the grid
         draw_grid(surface, view)
@@ -148,19 +157,24 @@ def draw_static(surface, view: View, arrays: LevelArrays, mode: str, under=None,
     if mode == "vertices" or view.scale >= 0.5:
         draw_vertices(surface, view, arrays.vertices, mode == "vertices")
     draw_things(surface, view, arrays, bright=mode == "things")
+    if top is not None:
+        top(surface, view)
 
 
 def draw_grid(surface, view: View):
+    """The grid's lines, every eighth brighter and the axes brightest (drawn last)."""
     xs, ys, step = grid_lines(view)
-    line = pygame.draw.line
-    for x in xs:
-        px = view.to_screen(x, 0)[0]
-        color = "axis" if x == 0 else "grid_major" if x % (step * 8) == 0 else "grid"
-        line(surface, COLORS[color], (px, 0), (px, view.height))
-    for y in ys:
-        py = view.to_screen(0, y)[1]
-        color = "axis" if y == 0 else "grid_major" if y % (step * 8) == 0 else "grid"
-        line(surface, COLORS[color], (0, py), (view.width, py))
+    x0, y0, x1, y1 = view.drawn_box()
+    px = np.rint(view.width / 2 + (xs - view.cx) * view.scale).astype(np.int64).tolist()
+    py = np.rint(view.height / 2 - (ys - view.cy) * view.scale).astype(np.int64).tolist()
+    rects = [((0 if x == 0 else 1 if x % (step * 8) == 0 else 2), (p, y0, 1, y1 - y0))
+             for x, p in zip(xs.tolist(), px) if x0 <= p < x1]
+    rects += [((0 if y == 0 else 1 if y % (step * 8) == 0 else 2), (x0, p, x1 - x0, 1))
+              for y, p in zip(ys.tolist(), py) if y0 <= p < y1]
+    colors = (COLORS["axis"], COLORS["grid_major"], COLORS["grid"])
+    fill = surface.fill
+    for klass, rect in sorted(rects, key=lambda r: -r[0]):     # the brighter lines on top
+        fill(colors[klass], rect)
 
 
 def draw_walls(surface, idx, xy, arrays: LevelArrays, ticks=False, box=None):
@@ -210,8 +224,7 @@ def draw_things(surface, view: View, arrays: LevelArrays, bright: bool):
     x0, y0, x1, y1 = view.drawn_box()
     on = np.flatnonzero((xy[:, 0] + r >= x0) & (xy[:, 1] + r >= y0) &
                         (xy[:, 0] - r <= x1) & (xy[:, 1] - r <= y1))
-    palette = arrays.thing_color if bright else arrays.thing_dim
-    colors = mapped(surface, [palette[i] for i in on.tolist()])
+    colors = arrays.mapped_colors(surface, bright)[on]
     box = view.drawn_box()
     draw_squares(surface, xy[on], r[on].astype(np.int64), colors, False, box)
     ticks = r[on] >= 4

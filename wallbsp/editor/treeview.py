@@ -26,7 +26,8 @@ from wallbsp.bsp.cells import leaf_cell as cell_of_leaf
 from wallbsp.edit.compiler import compile_now
 from wallbsp.editor.mapdraw import COLORS, visible_segments
 
-__all__ = ["LiveTree", "draw_tree_overlays", "leaf_cell", "fill_sectors", "problem_point"]
+__all__ = ["LiveTree", "draw_tree_overlays", "draw_problem_rings", "leaf_cell", "fill_sectors",
+           "problem_point"]
 
 PARTITION = (70, 140, 230)
 LEAF = (60, 200, 220)
@@ -55,7 +56,7 @@ class LiveTree:
         self._wanted = None             # (version, level) to compile next
         self._asked = None              # the version last asked for
         self._done = None
-        self._points = (None, [])
+        self._points = (None, None)
         self._lock = threading.Condition()
         self._closed = False
         self._thread = threading.Thread(target=self._work, name="wallbsp-edit-compile",
@@ -105,14 +106,16 @@ class LiveTree:
         return self.latest
 
     def problem_points(self):
-        """``[(map point, message)]`` of the newest problems that have a place (made once
-        per result)."""
+        """``(points (P, 2), messages)`` of the newest problems that have a place (made
+        once per result)."""
         latest = self.latest
         if latest is not None and self._points[0] is not latest:
             level = latest.tree.level
             found = ((problem_point(level, k, w, m), m) for k, w, m in latest.problems)
-            self._points = (latest, [(p, m) for p, m in found if p is not None])
-        return self._points[1]
+            placed = [(p, m) for p, m in found if p is not None]
+            self._points = (latest, (np.array([p for p, _ in placed], np.float64).reshape(-1, 2),
+                                     [m for _, m in placed]))
+        return self._points[1] if latest is not None else (np.zeros((0, 2)), [])
 
     def close(self):
         with self._lock:
@@ -235,7 +238,7 @@ def draw_tree_overlays(session, surface):
     if session.show_order:
         _order(session, surface, overlay)
     if session.show_problems:
-        _problems(session, surface, live)
+        _problem_under_mouse(session, surface, live)
     if session.show_tree or session.show_order:
         _stats(session, surface, live)
 
@@ -286,19 +289,35 @@ def _order(session, surface, overlay):
     surface.blit(text, (px + 10, py + 8))
 
 
-def _problems(session, surface, live):
-    """Each problem as a magenta ring where it is, its message beside the ring under the
-    mouse."""
-    view = session.view
+RING = 9                     # a problem's ring's radius, pixels
+
+
+def draw_problem_rings(surface, view, live):
+    """Each problem as a magenta ring where it is (a static-layer painter)."""
+    points, _ = live.problem_points()
+    if not len(points):
+        return
+    xy = view.screen_array(points)
+    x0, y0, x1, y1 = view.drawn_box()
+    on = (xy[:, 0] >= x0 - 2 * RING) & (xy[:, 0] <= x1 + 2 * RING) \
+        & (xy[:, 1] >= y0 - 2 * RING) & (xy[:, 1] <= y1 + 2 * RING)
+    circle = pygame.draw.circle
+    for px, py in xy[on].tolist():
+        circle(surface, PROBLEM, (px, py), RING, 2)
+
+
+def _problem_under_mouse(session, surface, live):
+    """The message of the problem whose ring is under the mouse, beside it."""
+    points, messages = live.problem_points()
+    if not len(points):
+        return
+    xy = session.view.screen_array(points)
     mx, my = session.mouse
-    for point, message in live.problem_points():
-        px, py = view.to_screen(*point)
-        if not (-20 <= px <= view.width + 20 and -20 <= py <= view.height + 20):
-            continue
-        pygame.draw.circle(surface, PROBLEM, (px, py), 9, 2)
-        if abs(px - mx) < 12 and abs(py - my) < 12:
-            text = session.small_font.render(message, True, PROBLEM)
-            surface.blit(text, (px + 12, py - 18))
+    near = np.flatnonzero((np.abs(xy[:, 0] - mx) < 12) & (np.abs(xy[:, 1] - my) < 12))
+    if len(near):
+        px, py = xy[near[0]].tolist()
+        text = session.small_font.render(messages[near[0]], True, PROBLEM)
+        surface.blit(text, (px + 12, py - 18))
 
 
 def problem_point(level, kind, where, message=""):
