@@ -176,9 +176,9 @@ def _live(ed, edits: dict, runs: int) -> dict:
     out = {}
     for name, call in edits.items():
         call()
-        row = {}
+        row, kept = {}, 0
         for how, previous in (("update", before), ("whole", None)):
-            walls, cpus, kept = [], [], 0
+            walls, cpus = [], []
             for _ in range(runs if how == "update" else 1):
                 w, c = time.perf_counter(), time.process_time()
                 done = compile_now(ed.level, ed.version, previous=previous)
