@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from wallbsp.doom import info
+from wallbsp import content
 from wallbsp.files import LevelError
 from wallbsp.game.gamefolder import load_game_folder
 from wallbsp.game.ticcmds import ticcmd
@@ -55,10 +55,12 @@ def test_the_example_plays_as_the_walkthrough_says(game):
     blaster = game.tables.types[next(c for c in game.classes if c.__name__ == "Blaster")]
     assert player.weaponowned[blaster] and door.ceilingheight > door.floorheight
     texts = [text for _, text in world.messages]
-    assert texts[:3] == ["Take the blaster and cross into the hall.", "You got the blaster!",
-                         "The door grinds open..."]
+    assert texts[:4] == ["Take the blaster and cross into the hall.", "You got the blaster!",
+                         "Picked up a can of gel.", "The door grinds open..."]
     start = {id(mo): (mo.x, mo.y) for mo in spitters}
-    cells = player.ammo[info.am_cell]
+    gel = content.ammo_number(game.tables, "gel")
+    cells = player.ammo[gel]
+    assert cells == 60 and player.ammo[:4] == [50, 0, 0, 0]       # gel: the game's own
     tics = 0
     while tics < 35 * 60 and world.exited is None and player.health > 0:
         world.tic(ticcmd(fire=True))                   # stand and fire the blaster
@@ -66,11 +68,11 @@ def test_the_example_plays_as_the_walkthrough_says(game):
     assert all(mo.target is player.mo for mo in spitters)              # they saw the player
     assert any((mo.x, mo.y) != start[id(mo)] for mo in spitters)       # and chased
     assert player.health < 100 or player.armorpoints                   # their spit hurt
-    assert player.ammo[info.am_cell] < cells                           # the blaster fired
-    assert (cells - player.ammo[info.am_cell]) % 2 == 0                # two cells a shot
+    assert player.ammo[gel] < cells                                    # the blaster fired
+    assert (cells - player.ammo[gel]) % 2 == 0                         # two gel a shot
     assert all(mo.health <= 0 for mo in spitters) and player.health > 0      # they died
     assert world.exited == "normal"                    # and the script ended the level
-    assert [text for _, text in world.messages][3:] == ["The hall is quiet."]
+    assert [text for _, text in world.messages][4:] == ["The hall is quiet."]
 
 
 def test_a_broken_game_folder_is_one_line(tmp_path):

@@ -1,5 +1,4 @@
-"""Spitter Hall's script: the hall's door opens when the player crosses the line in the
-first room, and the level ends once every spitter is dead."""
+"""Spitter Hall's script: the hall's door opens as its line is crossed; the end, when quiet."""
 
 
 def on_start(level):

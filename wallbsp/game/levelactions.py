@@ -7,6 +7,7 @@ tag, as DOOM's line specials choose them, and a sector already moving is left al
 """
 from __future__ import annotations
 
+from wallbsp.content import ammo_number
 from wallbsp.doom import info
 from wallbsp.doom.fixed import FRACUNIT
 
@@ -16,8 +17,6 @@ from .playsim.structs import Line, MapThing
 
 __all__ = ["ScriptLevel"]
 
-GIVE_AMMO = {"clip": info.am_clip, "shell": info.am_shell, "cell": info.am_cell,
-             "rocket": info.am_misl}
 
 
 class ScriptLevel:
@@ -132,7 +131,8 @@ class ScriptLevel:
 
     def give(self, item, amount: int = 1) -> None:
         """``"health"`` or ``"armor"`` points, ammunition by name (``"clip"``, ``"shell"``,
-        ``"cell"``, ``"rocket"``: ``amount`` clip loads, as P_GiveAmmo counts), or a
+        ``"cell"``, ``"rocket"``, a game's own: ``amount`` clip loads, as P_GiveAmmo
+        counts), or a
         weapon (DOOM's number or a content class)."""
         p, play = self.player, self.play
         if item == "health":
@@ -140,8 +140,8 @@ class ScriptLevel:
         elif item == "armor":
             p.armorpoints = min(200, p.armorpoints + amount)
             p.armortype = p.armortype or 1
-        elif item in GIVE_AMMO:
-            play.p_give_ammo(p, GIVE_AMMO[item], amount)
+        elif ammo_number(play.tables, item) is not None:
+            play.p_give_ammo(p, ammo_number(play.tables, item), amount)
         else:
             weapon = item if isinstance(item, int) else play.tables.types[item]
             play.p_give_weapon(p, weapon, False)

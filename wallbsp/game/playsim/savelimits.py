@@ -21,6 +21,7 @@ their lengths; and the counts the map's own load sets (``numsectors``, the block
 size, ...) are the map's.
 """
 from wallbsp.doom import info
+from wallbsp.doom.tables import ammo_count
 
 from .savestate import SaveError
 from .structs import (MAXPLAYERS, NUMAMMO, NUMCARDS, NUMPOWERS, NUMPSPRITES, NUMWEAPONS,
@@ -149,7 +150,8 @@ def _check_player(p, tables, where) -> None:
     if p.mo is not None and not isinstance(p.mo, Mobj):
         raise SaveError(f"{where}.mo: not a map object")
     for name, length in _PLAYER_LISTS:
-        length = weapons if name == "weaponowned" else length
+        length = weapons if name == "weaponowned" else \
+            ammo_count(tables) if name in ("ammo", "maxammo") else length
         value = getattr(p, name, None)
         if type(value) is not list or len(value) != length or \
                 any(type(v) not in (int, bool) for v in value):
