@@ -13,4 +13,4 @@ def on_line_crossed(level, line, thing):
 def on_killed(level, target, source):
     if target.player is None and level.player.killcount == level.play.totalkills:
         level.print("The hall is quiet.")
-        level.after(35 * 3, lambda level: level.end())
+        level.after(35 * 3, level.end)
