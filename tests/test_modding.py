@@ -132,3 +132,38 @@ def test_wallbsp_walk_plays_a_game_folder(capsys, tmp_path):
     (tmp_path / "game.json").write_text('{"maps": ["x.json"]}')
     assert main(["walk", str(tmp_path), "--frames", "1", "--nosound"]) == 2
     assert "maps[0]: no level file 'x.json'" in capsys.readouterr().err
+
+
+def test_the_menus_and_the_intermission_name_the_games_own(tmp_path, monkeypatch):
+    """New Game shows the manifest's episode and skills (DOOM's M_Episode and M_Skill rows
+    in the font), starts the game's first map at the skill chosen; a map's manifest title
+    is its name in the intermission."""
+    import json
+    monkeypatch.setenv("SDL_VIDEODRIVER", "dummy")
+    pygame = pytest.importorskip("pygame")
+    from wallbsp.app import walkthrough as wt
+    from wallbsp.app.controls import press
+    from wallbsp.app.gameflow import GameFlow
+    for name in ("actors.py", "door.py", "map01.json"):
+        (tmp_path / name).write_text((GAME / name).read_text())
+    manifest = json.loads((GAME / "game.json").read_text())
+    manifest["maps"] = [{"level": "map01.json", "title": "The Hall"},
+                        {"level": "map01.json", "title": "The Hall Again"}]
+    (tmp_path / "game.json").write_text(json.dumps(manifest))
+    game = load_game_folder(tmp_path)
+    walk = wt.Walkthrough.at_start(game.tree(0), (320, 200), (320, 200), 3, next_level=game,
+                                   world=World(game.tree(0), 3, tables=game.tables))
+    flow = walk.overlay = GameFlow(walk, wt.start_level, tmp_path / "saves")
+    for code in (pygame.K_ESCAPE, pygame.K_RETURN):
+        press(walk, code)
+    assert [item.label for item in flow.menu.menu.items] == ["The Spitters"]
+    press(walk, pygame.K_RETURN)
+    assert [item.label for item in flow.menu.menu.items] == [
+        "Mild", "Tangy", "Spicy", "Hot", "Inferno"]
+    game.next_level("normal")                          # on the second map: a new game
+    press(walk, ord("t"))                              # starts the first again
+    press(walk, pygame.K_RETURN)
+    assert walk.world.skill == 2 and walk.world.tables is game.tables
+    assert walk.world.level.name == "The Hall" and game.current == 0
+    walk.world.exited = "normal"
+    assert flow.level_left(walk) and flow.names == ("The Hall", "The Hall Again")
