@@ -27,12 +27,36 @@ def _blocks(language):
 
 
 def test_the_walkthroughs_code_is_the_example_games():
+    import json
     python = "".join(_blocks("python")[:3])          # actors.py in two parts, then door.py
     actors, door = (GAME / "actors.py").read_text(), (GAME / "door.py").read_text()
-    assert python.startswith(actors.rstrip("\n").split("class Blaster")[0].rstrip("\n"))
-    assert "class Blaster" + actors.split("class Blaster")[1] in python
+    assert python.startswith(actors.split("class Gel")[0].rstrip("\n"))
+    assert "class Gel" + actors.split("class Gel")[1] in python
     assert door in python
-    assert len(actors.splitlines()) + len(door.splitlines()) < 110
+    assert len(actors.splitlines()) + len(door.splitlines()) < 100     # "under a hundred"
+    assert json.loads(_blocks("json")[0]) == json.loads((GAME / "game.json").read_text())
+
+
+def test_the_walkthroughs_countdown_outlasts_a_save(tmp_path):
+    """The page's countdown script, saved after the line is crossed and loaded: the loaded
+    game's door opens on the same tic as the game never saved, after the same messages."""
+    from test_levelscript import _loaded
+    from test_levelscript import door_level
+    from wallbsp.game.playsim.savegame import save_game
+    tree = door_level(tmp_path, _blocks("python")[3])
+    world = World(tree, skill=3)
+    for _ in range(80):                            # across the line (x = -256) and on
+        world.tic(ticcmd(forward=1.0 if world.play.players[0].mo.x >> 16 < -200 else 0.0))
+    assert world.script.level.state["left"] == 4
+    loaded = _loaded(tree, save_game(world.play))
+    opened = {}
+    for n in range(200):
+        for name, w in (("saved", world), ("loaded", loaded)):
+            w.tic(ticcmd())
+            if w.play.sectors[2].ceilingheight and name not in opened:
+                opened[name] = n
+    assert opened["saved"] == opened["loaded"] and 35 * 3 < opened["saved"] < 35 * 5
+    assert [t for _, t in loaded.messages] == ["3...", "2...", "1..."]
 
 
 def _of(world, game, name):
