@@ -253,3 +253,27 @@ def test_a_forged_script_state_in_a_save_is_one_line(tmp_path, forge, message):
     with pytest.raises((SaveError, ScriptError), match=message) as err:
         _loaded(tree, forged)
     assert "\n" not in str(err.value)
+
+
+def test_the_walkthroughs_slots_carry_the_script_and_refuse_a_forged_one(tmp_path):
+    """app.saves: a slot saved mid-way loads with the script's state and timers; a slot
+    whose script state names no function of the script is one SaveError line, and the
+    game in play is untouched."""
+    import toolscripts
+    from wallbsp.app.saves import SaveError, load_world, save_world, slot_path
+    tree, world, data = _saved_midway(tmp_path)
+    save_world(world, tmp_path / "saves", 0, "MIDWAY")
+    loaded = load_world(tmp_path / "saves", 0, world, None)
+    assert loaded.script.level.state == world.script.level.state
+    assert loaded.script.level.saved["timers"] == world.script.level.saved["timers"]
+
+    def rename(body):
+        saved = dict(body["globals"]["level_script"]["d"])
+        saved["timers"] = [[60, 1, 20, "nowhere", []]]
+        body["globals"]["level_script"]["d"] = [[k, v] for k, v in saved.items()]
+    slot_path(tmp_path / "saves", 1).write_bytes(
+        toolscripts.tool_script("hostile").reforge(data, rename))
+    state = dict(world.script.level.state)
+    with pytest.raises(SaveError, match="no function 'nowhere' in door.py") as err:
+        load_world(tmp_path / "saves", 1, world, None)
+    assert "\n" not in str(err.value) and world.script.level.state == state
