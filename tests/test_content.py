@@ -219,6 +219,12 @@ def test_bad_ammo_is_one_line():
     with pytest.raises(ContentError, match="Squirter: ammo 'goop'"):
         game_tables([Squirter])
 
+    class Crate(content.Item):
+        ammo = 5
+        states = "Spawn: GOOA A -1\n stop"
+    with pytest.raises(ContentError, match="Crate: ammo 5: a dictionary"):
+        game_tables([Crate])
+
 
 def test_an_item_gives_what_it_declares():
     world = World(room([(-448 + 100, 0, 30004)]), skill=3, tables=TABLES)

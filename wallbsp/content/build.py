@@ -228,8 +228,10 @@ class _Builder:
         if cls.weapon is not None:
             self.add(cls.weapon)
         own = cls.pickup if "pickup" in _defined(cls) else None
+        if not isinstance(cls.ammo, dict):
+            raise ContentError(f"{where}: ammo {cls.ammo!r}: a dictionary, {{\"clip\": 10}}")
         ammo = {self._ammo_of(name, where): _whole(amount, where, "ammo")
-                for name, amount in dict(cls.ammo).items()}
+                for name, amount in cls.ammo.items()}
 
         def pickup(play, player, item):
             took = own(play, player, item) if own else give_declared(play, player, item, cls,
