@@ -184,3 +184,30 @@ def test_a_wad_maps_tree_is_updated_after_edits_keeping_what_they_did_not_reach(
         for _ in range(300):
             x, y = rng.uniform(x0, x1 + 256), rng.uniform(y0, y1)
             assert done.tree.locate(x, y) == fresh.locate(x, y), (x, y)
+
+
+@pytest.mark.skipif(not os.path.exists(FREEDOOM2), reason="needs Freedoom")
+def test_problems_found_again_only_for_what_an_edit_changed_are_a_fresh_search():
+    """problems() keeps each kind's answer while the level parts it reads are the same
+    objects; after each edit its answer is the one a level of fresh copies gives."""
+    import dataclasses
+    from wallbsp.edit.problems import problems
+    ed = Editor.open(f"{FREEDOOM2}:MAP01")
+    sector = ed.level.walls[0].front
+    edits = [lambda: ed.set_sector([sector], floor=ed.level.sectors[sector].floor + 64),
+             lambda: ed.set_sector([sector], ceiling=ed.level.sectors[sector].floor + 8),
+             lambda: ed.set_thing([0], x=ed.level.vertices[ed.level.walls[0].v1][0]),
+             lambda: ed.move(ed.select("vertices", ed.level.walls[7].v1), 1, 0),
+             lambda: ed.set_line([3], front_side={"middle": None})]
+    kinds = set()
+    for edit in edits:
+        before = problems(ed.level)
+        edit()
+        level = ed.level
+        copies = dataclasses.replace(level, walls=list(level.walls),
+                                     vertices=list(level.vertices),
+                                     sectors=list(level.sectors), things=tuple(level.things))
+        again = problems(level)
+        assert again == problems(copies)
+        kinds |= {k for k, _, _ in again} ^ {k for k, _, _ in before}
+    assert kinds            # the edits changed what is found
