@@ -27,6 +27,7 @@ class TreeOverlay:
         self._segs = None
         self._cells: dict = {}
         self._parents = None
+        self._array = None
 
     @property
     def node_depth(self) -> np.ndarray:
@@ -50,9 +51,13 @@ class TreeOverlay:
         return self._pieces
 
     def partition_array(self) -> np.ndarray:
-        """``partitions()`` as an ``(P, 4)`` array of ``x1, y1, x2, y2`` (for drawing)."""
-        pieces = self.partitions()
-        return np.array([(*p, *q) for *_, p, q in pieces], np.float64).reshape(-1, 4)
+        """``partitions()`` as an ``(P, 4)`` array of ``x1, y1, x2, y2`` (for drawing;
+        made once)."""
+        if self._array is None:
+            pieces = self.partitions()
+            self._array = np.array([(*p, *q) for *_, p, q in pieces],
+                                   np.float64).reshape(-1, 4)
+        return self._array
 
     def _chords(self) -> list:
         # Each line as P0 + t * (b, -a); the box and then every ancestor's half-plane cut

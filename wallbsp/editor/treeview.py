@@ -52,6 +52,7 @@ class LiveTree:
         self.error = None               # the last compile's failure, one line
         self.stamp = None               # changes when a new result arrives (layers redraw)
         self.busy = False
+        self.drawn = False              # the tree overlay is shown: its lines made here too
         self.with_problems = problems
         self._wanted = None             # (version, level) to compile next
         self._asked = None              # the version last asked for
@@ -170,6 +171,9 @@ class LiveTree:
             return f"not compiled: {type(err).__name__}: {err}"    # level; the window says why
         if compiled.tree is None:
             return f"not compiled: {compiled.error}"
+        if self.drawn:                      # what the overlay draws, here, not in a frame
+            compiled.overlay.partition_array()
+            compiled.overlay.segs()
         return compiled if self.with_problems else compiled._replace(problems=[])
 
 

@@ -91,6 +91,7 @@ def step(session, flip=True, events=None):
     for event in pygame.event.get() if events is None else events:
         handle(session, event)
     if session.compiler is not None:
+        session.compiler.drawn = session.show_tree     # the worker clips the partitions
         session.compiler.poll()
     update_hover(session)
     draw_frame(session, flip)
