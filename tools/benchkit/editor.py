@@ -107,20 +107,22 @@ def _until_fresh(session, edit) -> dict:
 def _fresh(session) -> dict:
     from wallbsp.editor.treeview import FULL_AFTER
     editor, out = session.editor, {}
-    for name, edit in _edits(editor).items():
+    edits = _edits(editor)            # made once: finding the nested room's place picks a lot
+    for name, edit in edits.items():
         out[name] = _until_fresh(session, edit)
         _until_fresh(session, editor.undo)
         time.sleep(0.05)
     # the whole level being compiled afresh (it starts FULL_AFTER seconds after the last
     # edit): the edit stops it, then the tree is updated from the last one
     time.sleep(FULL_AFTER + 0.1)
-    out["raise_floor_during_whole_compile"] = _until_fresh(session, _edits(editor)["raise_floor"])
+    out["raise_floor_during_whole_compile"] = _until_fresh(session, edits["raise_floor"])
     _until_fresh(session, editor.undo)
     # with the tree overlay shown (N) the worker also clips the partition lines and
     # colours the segs before the tree is handed over
     session.show_tree = session.compiler.drawn = True
     for name in ("raise_floor", "move_vertex"):
-        out[f"{name}_tree_shown"] = _until_fresh(session, _edits(editor)[name])
+        time.sleep(0.05)
+        out[f"{name}_tree_shown"] = _until_fresh(session, edits[name])
         _until_fresh(session, editor.undo)
     session.show_tree = session.compiler.drawn = False
     return out
