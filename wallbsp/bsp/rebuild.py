@@ -77,6 +77,8 @@ def update_tree(old: BSPTree, level: Level, candidates=None, seed: int = 0):
     ``compile_level``'s, for the parts built afresh."""
     k = DEFAULT_CANDIDATES if candidates is None else candidates
     k = None if k == "all" else int(k)
+    if k is not None and k < 1:
+        raise ValueError(f"candidates: must be at least 1 or 'all', not {candidates!r}")
     started = time.perf_counter()
     if not len(level.walls) or not old.node_count:
         return compile_level(level, candidates, seed), 0
