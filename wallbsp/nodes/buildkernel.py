@@ -1,5 +1,6 @@
-"""The depth-first build loop (``build_kernel``) and the nodes' bounding boxes
-(``node_boxes``); the choices it makes are ``partition``'s.
+"""The depth-first build loop (``build_kernel``), the nodes' bounding boxes (``node_boxes``)
+and the tree's depth (``tree_depth``); the choices it makes are ``partition``'s, or
+``lookahead``'s when ``params[4] > 1``.
 
 Arrays: ``seg`` (capacity, 7) int64 rows ``x1, y1, x2, y2, linedef, side, sector`` (the first
 ``nseg`` filled; splits append); ``lines`` (linedefs, 5) ``x, y, dx, dy, plane``.  Out:
