@@ -4,7 +4,9 @@ Public API:
 - ``BuildOptions``: ``candidates`` (segs whose lines are tried at each node; zdbsp's
   ``--partition``; 0: every seg), ``split_cost`` (what a cut costs, zdbsp's
   ``--split-cost``), ``balance`` (how much balance counts against cuts), ``diagonal_cost``
-  (zdbsp's ``--diagonal-cost``); the score they weigh is ``partition``'s;
+  (zdbsp's ``--diagonal-cost``); the score they weigh is ``partition``'s; ``lookahead``
+  (how many of a cell's best partitions are tried a level deeper; 0 or 1: none) and
+  ``lookahead_candidates`` (the children's candidates), ``lookahead``'s;
 - ``build_nodes(map_data, options) -> Nodes``: ``vertexes`` (n, 2) (the map's own, then the
   split points), ``segs``, ``subsectors``, ``nodes`` (numpy records in ``mapdata``'s dtypes,
   full-range ints before any lump's limits), ``depth``, ``seg_rows`` (the segs' integer ends).
