@@ -116,7 +116,8 @@ class Walkthrough:
     playback: object = None          # the tic commands of a demo being played, an iterator
     attract: object = None           # DOOM's attract loop while it runs (app.attract)
     help_screen: bool = False        # F1's list of the keys, the game standing still
-    map_zoom: float = 1.0            # the automap: 1 the whole level, closer follows
+    map_zoom: float = 1 / 0.7        # the automap: 1 the whole level, closer follows (AM_LevelInit)
+    title_cache: tuple = (None, None)  # (key, surface) of the automap's level name
     seen: tuple = None               # (world state, automap.SeenLines): the walls seen
     textures: bool = True            # textured view (a level with resources), else flat
     show_readout: bool = False

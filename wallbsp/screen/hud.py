@@ -27,7 +27,8 @@ It also takes ``player.message`` (and clears it, as HU_Ticker does).
 ``draw_hud(frame, play)`` draws a fresh ``Hud`` once (no tics: the straight face).
 ``Hud(player_index=k)`` watches player ``k`` (else the console player), ``statusbar=False``
 is DOOM's full-screen view (the weapon placed for the whole frame), ``weapon``,
-``messages`` and ``invert_view`` switch those parts, ``art`` overrides the pictures
+``messages`` and ``invert_view`` switch those parts (a message in the WAD's words:
+``dehstrings``), ``art`` overrides the pictures
 (``art.WadArt(paths)`` or ``art.OwnArt()``; default the play's WAD, or ours without one).
 """
 from __future__ import annotations
@@ -35,6 +36,7 @@ from __future__ import annotations
 import numpy as np
 
 from wallbsp.screen.art import INVERSE, art_for
+from wallbsp.screen.dehstrings import shown
 from wallbsp.screen.remap import paste, tint
 from wallbsp.screen.messages import MessageState, paint_text
 from wallbsp.screen.statusbar import ST_HEIGHT, ST_WIDTH, FaceState, bar_patches, paint_bar
@@ -177,7 +179,7 @@ class Hud:
         if key not in self._text:
             if len(self._text) > 4:
                 self._text.clear()
-            painted = paint_text(self.message.text, art)
+            painted = paint_text(shown(self.message.text, art), art)   # DEH_String
             scaled = None
             if painted is not None:
                 rgb, mask = painted
