@@ -19,6 +19,7 @@ from wallbsp.screen.art import art_for                              # noqa: E402
 from wallbsp.screen.hud import border_flat, view_size               # noqa: E402
 
 from game_levels import corridor, room                              # noqa: E402
+from walking import frames                                          # noqa: E402
 
 SIZE = (160, 100)
 
@@ -53,6 +54,11 @@ def test_the_widescreen_view_widens_the_4_3_picture_and_keeps_its_middle(opened)
     walk.widescreen = True
     x, y, w, h = picture_rect(walk)
     assert abs(w - 640) <= 640 // 100 and h == 360            # a 16:9 window, filled
+    walk.show_help = False
+    frames(walk, 1)                                           # the whole frame, shown
+    shown = pygame.surfarray.array3d(walk.display).transpose(1, 0, 2)
+    edge = shown[:200, x:x + 40]                              # the wide view's left side
+    assert edge.any() and walk.surface.get_size() == (width, 100)
 
 
 def test_the_wider_view_keeps_the_focal_length():

@@ -15,7 +15,8 @@ by the south-east door and stands (the message, then Tab for the automap); ``exi
 start moved beside it (a copy of freedoom1.wad whose E1M1 player start is at (-250, 1280)
 facing the switch: the rest of the map and the intermission are E1M1's).  The moments are
 taken at the same wall-clock times after each window appears, so a demo's frame may be
-a few tics apart between the two.
+a few tics apart between the two.  ``docs/game_widescreen.png`` is ours alone: the message
+moment in a 1280 × 720 window with ``--widescreen`` (Crispy Doom's view).
 """
 from __future__ import annotations
 
@@ -215,6 +216,14 @@ def take(side, home: Path, wads: dict, demos: dict, shots: Path) -> None:
         game.at(10.5, shot("automap"))
     finally:
         game.close()
+    if side == "ours":                                # Crispy Doom's view, ours alone
+        command, env = make(home, wads["real"], demo_flag, str(demos["pickup"]),
+                            "--widescreen")
+        game = Session(command, env)
+        try:
+            game.at(6.5, shot("widescreen"))
+        finally:
+            game.close()
     command, env = make(home, wads["exit"], demo_flag, str(demos["exit"]))
     game = Session(command, env)
     try:
@@ -248,6 +257,14 @@ def pair_picture(left: Path, right: Path, out: Path, scale: float = 2 / 3) -> No
 
 
 def write_pairs(shots: Path, out: Path) -> None:
+    """The pairs, and our widescreen view (1280 x 720) scaled as they are."""
+    import pygame
+    wide = shots / "ours-widescreen.png"
+    if wide.exists():
+        picture = pygame.image.load(str(wide))
+        size = picture.get_size()
+        pygame.image.save(pygame.transform.scale(picture, (size[0] * 2 // 3, size[1] * 2 // 3)),
+                          str(out / "game_widescreen.png"))
     for moment in MOMENTS:
         path = out / f"game_{moment}.png"
         pair_picture(shots / f"chocolate-{moment}.png", shots / f"ours-{moment}.png", path)

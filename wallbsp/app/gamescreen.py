@@ -127,9 +127,10 @@ def render_view(walk, blend=1.0):
     """The picture at the internal resolution (``compose``); one blit_array, one scale
     into the window's part ``picture_rect`` (returned, a subsurface of the window)."""
     import pygame
-    compose(walk, blend)
-    if walk.surface is None or walk.surface.get_size() != walk.size:
-        walk.surface = pygame.Surface(walk.size, 0, walk.display)   # the window's format
+    picture = compose(walk, blend)
+    size = (picture.shape[1], picture.shape[0])         # wider than walk.size: widescreen
+    if walk.surface is None or walk.surface.get_size() != size:
+        walk.surface = pygame.Surface(size, 0, walk.display)    # the window's format
     pygame.surfarray.blit_array(walk.surface, walk.screen)
     rect = picture_rect(walk)
     if rect[2:] != walk.display.get_size():
