@@ -113,7 +113,7 @@ def run_game(args, keys, load_any) -> None:
     from wallbsp.app.vanilla import is_wad
     source = WadGame(args.level) if is_wad(args.level) else OwnGame(args.level, load_any, args)
     aspect = None if args.square_pixels else 4 / 3
-    window = (960, 720) if aspect else (960, 600)
+    window = (1280, 720) if args.widescreen else (960, 720) if aspect else (960, 600)
     screen = TitleScreen(source.title(), window, aspect)
     screen.draw()
     note_moment("window")
@@ -261,4 +261,5 @@ def _attract_and_play(args, keys, source, made) -> None:
     app.run_walkthrough(first_tree, size=args.size, max_fps=args.max_fps, skill=args.skill,
                         sound=effects, music=not (args.nosound or args.nomusic), keys=keys,
                         saves=args.saves, aspect=None if args.square_pixels else 4 / 3,
-                        world=world, setup=setup, menus=True, key_file=args.keys)
+                        world=world, setup=setup, menus=True, key_file=args.keys,
+                        widescreen=args.widescreen)

@@ -13,7 +13,7 @@ from wallbsp.app.hud import say
 from wallbsp.image import save_png
 
 __all__ = ["NoDisplayError", "RESOLUTIONS", "NO_DISPLAY_DRIVERS", "check_display",
-           "no_window_system", "open_display", "show_caption", "close_display",
+           "no_window_system", "open_display", "show_caption", "close_display", "reshape_window",
            "toggle_mouse_grab", "toggle_fullscreen", "on_resize", "next_resolution",
            "save_screenshot"]
 
@@ -87,6 +87,19 @@ def toggle_fullscreen(walk):
         walk.display = pygame.display.set_mode((0, 0), pygame.FULLSCREEN)
     else:
         walk.display = pygame.display.set_mode(walk.window, pygame.RESIZABLE)
+    walk.map_cache = (None, None)
+
+
+def reshape_window(walk):
+    """The window made 16:9 for the widescreen view, 4:3 without it, as high as it is
+    (nothing in fullscreen, where the screen's shape is the view's, or headless)."""
+    import pygame
+    if walk.display is None or walk.fullscreen or not walk.aspect \
+            or not pygame.display.get_init():
+        return
+    height = walk.display.get_size()[1]
+    walk.window = (height * 16 // 9 if walk.widescreen else height * 4 // 3, height)
+    walk.display = pygame.display.set_mode(walk.window, pygame.RESIZABLE)
     walk.map_cache = (None, None)
 
 
