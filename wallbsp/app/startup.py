@@ -22,6 +22,8 @@ import time
 
 import numpy as np
 
+from wallbsp.app.window import prefer_plain_framebuffer
+
 __all__ = ["run_game", "TitleScreen", "note_moment", "title_rgb", "WadGame", "OwnGame"]
 
 BAR_COLOUR, BAR_BACK = (200, 40, 30), (40, 10, 8)
@@ -41,6 +43,7 @@ class TitleScreen:
 
     def __init__(self, title, window, aspect=4 / 3):
         import pygame
+        prefer_plain_framebuffer()
         pygame.display.init()
         pygame.font.init()
         self.display = pygame.display.set_mode(window, pygame.RESIZABLE)

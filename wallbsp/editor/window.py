@@ -13,6 +13,7 @@ import time
 
 import pygame
 
+from wallbsp.app.window import prefer_plain_framebuffer
 from wallbsp.edit import Editor
 from wallbsp.editor import keys, mouse
 from wallbsp.editor.frame import STATUS_HEIGHT, draw_frame
@@ -23,11 +24,6 @@ from wallbsp.editor.view import View
 __all__ = ["run_editor", "open_session", "step", "run_frames", "close_session"]
 
 DEFAULT_SIZE = (1280, 800)
-# SDL otherwise shows a window's pixels through a renderer, which without a GPU (Mesa's
-# software OpenGL, as under Xvfb) costs 7-8 ms of CPU a frame whatever was drawn; the
-# plain framebuffer shows them in a few hundredths of a millisecond.  The editor draws
-# every pixel itself, so it gains nothing from the renderer.  A user's own setting wins.
-FRAMEBUFFER_HINT = ("SDL_FRAMEBUFFER_ACCELERATION", "0")
 
 
 def open_session(source=None, size=DEFAULT_SIZE, editor=None, live_tree=True) -> Session:
@@ -35,7 +31,7 @@ def open_session(source=None, size=DEFAULT_SIZE, editor=None, live_tree=True) ->
     of ``size``; ``editor``: a model already made."""
     if editor is None:
         editor = _editor_for(source)
-    os.environ.setdefault(*FRAMEBUFFER_HINT)
+    prefer_plain_framebuffer()
     pygame.display.init()
     pygame.font.init()
     display = pygame.display.set_mode(size, pygame.RESIZABLE)
