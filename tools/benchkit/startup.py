@@ -55,19 +55,20 @@ def start_once(wad: str, cache: str) -> dict:
     cpu_before = _children_cpu()
     game = subprocess.Popen([sys.executable, "-m", "wallbsp", "walk", wad, "--nosound"],
                             env=env, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE)
-    moments = {}
+    moments, facts = {}, {}
     try:
         while "ready" not in moments and game.poll() is None and time.time() - began < TIMEOUT:
             time.sleep(0.05)
             if os.path.exists(log):
                 for line in open(log).read().splitlines():
                     entry = json.loads(line)
-                    moments[entry["event"]] = round(entry["time"] - began, 2)
+                    moments[entry["event"]] = round(entry.pop("time") - began, 2)
+                    facts.update({k: v for k, v in entry.items() if k != "event"})
     finally:
         game.terminate()
         game.wait()
     moments["cpu_s"] = round(_children_cpu() - cpu_before, 2)   # to ready, and a moment after
-    return moments
+    return {**moments, **facts}
 
 
 def _children_cpu() -> float:
