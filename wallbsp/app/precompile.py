@@ -26,6 +26,7 @@ import sys
 import tempfile
 import time
 from importlib.resources import files
+from pathlib import Path
 
 from wallbsp import jit
 
@@ -192,9 +193,9 @@ class Precompile:
 
 
 def main(argv=None) -> int:
-    """The second process: ``CLAIMS PARENT_PID``; stops early if the game has gone."""
-    claims, parent = (argv or sys.argv[1:])[:2]
-    jobs = plan_jobs()
+    """The second process: ``CLAIMS PARENT_PID [PLAN]``; stops early if the game has gone."""
+    claims, parent, *plan = argv or sys.argv[1:]
+    jobs = plan_jobs(Path(plan[0]) if plan else None)
     compile_jobs(jobs, claims, lambda: os.getppid() == int(parent), alone=False)
     return 0
 
