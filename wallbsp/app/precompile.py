@@ -31,7 +31,7 @@ from pathlib import Path
 from wallbsp import jit
 
 __all__ = ["PLAN", "Precompile", "plan_jobs", "encode_type", "decode_type", "compile_jobs",
-           "count_compiles", "main"]
+           "count_compiles", "on_compile", "main"]
 
 PLAN = files("wallbsp") / "data" / "kernels.json"
 POLL_SECONDS = 0.02
@@ -133,6 +133,22 @@ def count_compiles():
 
     with event.install_listener("numba:compile", Counter()):
         yield count
+
+
+def on_compile(callback) -> None:
+    """``callback(kernel name)`` whenever numba compiles a kernel from now on (a load from
+    its disk cache is no compile)."""
+    from numba.core import event
+
+    class Reporter(event.Listener):
+        def on_start(self, ev):
+            function = ev.data["dispatcher"].py_func
+            callback(f"{function.__module__}.{function.__qualname__}")
+
+        def on_end(self, ev):
+            pass
+
+    event.register("numba:compile", Reporter())
 
 
 def _claim(claims, index) -> bool:

@@ -9,8 +9,10 @@ bundled game's title and its shipped demo) until a key opens the menu, whose New
 episode and skill as DOOM's does.
 
 With ``WALLBSP_STARTUP_LOG=FILE`` in the environment a JSON line is appended to FILE for
-each moment of the start (``window``, ``ready``), with ``time.time()``, so a benchmark can
-time it from outside.
+each moment of the start (``window``, each step of the progress bar, ``ready``), with
+``time.time()`` and facts (the CPU seconds of each process, kernels compiled in the warm-up),
+and one for every kernel compiled once play has begun (``compiled_in_play``: there should be
+none), so a benchmark can time and check it from outside.
 """
 from __future__ import annotations
 
@@ -146,6 +148,9 @@ def _run_game(args, keys, load_any, compiling) -> None:
     if "error" in made:
         raise made["error"]
     note_moment("ready")
+    if os.environ.get("WALLBSP_STARTUP_LOG"):
+        from wallbsp.app.precompile import on_compile
+        on_compile(lambda kernel: note_moment("compiled_in_play", kernel=kernel))
     _attract_and_play(args, keys, source, made)
 
 

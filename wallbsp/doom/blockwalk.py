@@ -20,7 +20,8 @@ The arrays (``block_tables`` and the caller, all int64):
   ``line->validcount``, kept here instead: only equality with the current one is read), and
   last the latest validcount seen (a lower one, after a game is loaded, clears the marks).
 
-Fixed-point arithmetic as ``sim.fixed``, in int64, by ``sim.nodewalks``' kernels (called, not inlined: see there).
+Fixed-point arithmetic as ``sim.fixed``, in int64, by ``sim.nodewalks``' kernels (called,
+not inlined: see there).
 """
 from __future__ import annotations
 
