@@ -75,8 +75,8 @@ def decode_type(code):
 
 
 def plan_jobs(plan=None) -> list:
-    """The plan's jobs in order, each ``(dispatcher, argument types, calls)`` (``calls``: the
-    indices of jobs compiled within it); jobs whose kernel is gone are left out (a stale plan
+    """The plan's jobs in order, each ``(dispatcher, argument types, calls, seconds)``
+    (``calls``: the indices of jobs compiled within it; ``seconds``: its compile, measured); jobs whose kernel is gone are left out (a stale plan
     costs time, never correctness: the warm-up compiles what is missing)."""
     entries = json.loads((plan or PLAN).read_text())["kernels"]
     jobs = []
@@ -85,7 +85,8 @@ def plan_jobs(plan=None) -> list:
         try:
             kernel = getattr(importlib.import_module(module), name)
             jobs.append((jit.dispatcher_of(kernel),
-                         tuple(decode_type(code) for code in entry["args"]), entry["calls"]))
+                         tuple(decode_type(code) for code in entry["args"]), entry["calls"],
+                         entry["seconds"]))
         except (ImportError, AttributeError, TypeError, ValueError):
             jobs.append(None)
     return jobs
@@ -94,7 +95,8 @@ def plan_jobs(plan=None) -> list:
 def compile_jobs(jobs, claims: str, other_alive, progress=None, alone=True) -> int:
     """Compiles every job of ``jobs`` no other process has claimed in ``claims``, in order;
     a job whose callees another process is compiling waits for them (else both would).
-    ``progress(jobs done by both)`` after each; the number compiled here.  Without the other
+    ``progress(the share of the plan's seconds done by both)`` after each; the number
+    compiled here.  Without the other
     process (``other_alive()`` false) the rest is compiled here, or left if not ``alone``."""
     mine = 0
     for index, job in enumerate(jobs):
@@ -102,7 +104,7 @@ def compile_jobs(jobs, claims: str, other_alive, progress=None, alone=True) -> i
             break
         if job is None or not _claim(claims, index):
             continue
-        dispatcher, args, calls = job
+        dispatcher, args, calls, _ = job
         for callee in calls:
             while not os.path.exists(_done(claims, callee)) and other_alive():
                 time.sleep(POLL_SECONDS)
@@ -113,7 +115,7 @@ def compile_jobs(jobs, claims: str, other_alive, progress=None, alone=True) -> i
         open(_done(claims, index), "w").close()
         mine += 1
         if progress is not None:
-            progress(sum(name.endswith(".done") for name in os.listdir(claims)))
+            progress(_share_done(jobs, claims))
     return mine
 
 
@@ -151,6 +153,13 @@ def on_compile(callback) -> None:
     event.register("numba:compile", Reporter())
 
 
+def _share_done(jobs, claims) -> float:
+    seconds = [0.0 if job is None else job[3] for job in jobs]
+    done = sum(seconds[int(name[:-len(".done")])] for name in os.listdir(claims)
+               if name.endswith(".done"))
+    return done / max(sum(seconds), 1e-9)
+
+
 def _claim(claims, index) -> bool:
     try:
         os.close(os.open(os.path.join(claims, str(index)), os.O_CREAT | os.O_EXCL | os.O_WRONLY))
@@ -186,13 +195,13 @@ class Precompile:
         return self
 
     def finish(self, progress=None) -> dict:
-        """This process's share, then the other's awaited; what each compiled and the other
-        process's CPU seconds (for the start's benchmark)."""
+        """This process's share, then the other's awaited (``progress(share done)`` after
+        each kernel); how many jobs, how many compiled here, the other process's CPU
+        seconds (for the start's benchmark)."""
         if self.claims is None:
             return {}
         jobs = plan_jobs()
-        done = compile_jobs(jobs, self.claims, lambda: self.child.poll() is None,
-                            progress and (lambda n: progress(n, len(jobs))))
+        done = compile_jobs(jobs, self.claims, lambda: self.child.poll() is None, progress)
         before = _children_cpu()
         self.child.wait()
         shutil.rmtree(self.claims, ignore_errors=True)
@@ -206,6 +215,8 @@ class Precompile:
         if self.child is not None and self.child.poll() is None:
             self.child.kill()
             self.child.wait()
+        if self.claims is not None:
+            shutil.rmtree(self.claims, ignore_errors=True)
 
 
 def main(argv=None) -> int:

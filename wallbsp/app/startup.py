@@ -27,6 +27,7 @@ import numpy as np
 __all__ = ["run_game", "TitleScreen", "note_moment", "title_rgb", "WadGame", "OwnGame"]
 
 BAR_COLOUR, BAR_BACK = (200, 40, 30), (40, 10, 8)
+BAR = 100                   # the progress bar's steps
 FRAME_SECONDS = 1 / 10      # how often the window answers while the game is made
 
 
@@ -176,7 +177,7 @@ class WadGame:
         from wallbsp.bsp.build import compile_level
         from wallbsp.level.wadmap import load_wad_level
         first = first_map_name(self.wad)
-        progress(0, 8, f"compiling {first}")
+        progress(0, BAR, f"compiling {first}")
         return first, compile_level(load_wad_level(self.wad, first))
 
     def sequence(self, first):
@@ -219,7 +220,7 @@ class OwnGame:
             return np.zeros((200, 320, 3), np.uint8)
 
     def first_tree(self, progress):
-        progress(0, 8, "compiling the level")
+        progress(0, BAR, "compiling the level")
         self.tree = self.load_any(self.level, self.args, strict=self.args.strict)
         return self.tree.level.name, self.tree
 
@@ -263,17 +264,18 @@ def prepare(source, args, made, progress, compiling=None) -> None:
         demo = next((step[1] for step in made["sequence"] if step[0] == "demo"), None)
         world = None
         if demo is not None:
-            progress(1, 8, f"loading {demo}")
+            progress(BAR // 10, BAR, f"loading {demo}")
             world = source.demo_world(demo)
         made["world"], made["demo"] = world, demo
         steps = warm_steps(tree, tuple(args.size), args.skill)
-        facts = {} if compiling is None else compiling.finish(lambda n, jobs: progress(
-            2 + n, 2 + jobs + len(steps), "compiling kernels in two processes"))
+        facts = {} if compiling is None else compiling.finish(lambda share: progress(
+            round(BAR * (0.2 + 0.6 * share)), BAR, "compiling kernels in two processes"))
         note_moment("compiled", **facts)
-        jobs = facts.get("jobs", 0)
+        first_step = 0.8 if facts else 0.2           # of the bar: the steps fill the rest
         with count_compiles() as compiled:
             for k, (label, step) in enumerate(steps):
-                progress(2 + jobs + k, 2 + jobs + len(steps), label)
+                progress(round(BAR * (first_step + (1 - first_step) * k / len(steps))), BAR,
+                         label)
                 step()
         note_moment("warmed", warmup_compiles=compiled[0], game_cpu_s=_cpu_seconds())
         progress(1, 1, "ready")
