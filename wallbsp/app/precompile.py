@@ -96,8 +96,8 @@ def compile_jobs(jobs, claims: str, other_alive, progress=None, alone=True) -> i
     """Compiles every job of ``jobs`` no other process has claimed in ``claims``, in order;
     a job whose callees another process is compiling waits for them (else both would).
     ``progress(the share of the plan's seconds done by both)`` after each; the number
-    compiled here.  Without the other
-    process (``other_alive()`` false) the rest is compiled here, or left if not ``alone``."""
+    compiled here.  Without the other process (``other_alive()`` false) the rest is
+    compiled here, or left if not ``alone``."""
     mine = 0
     for index, job in enumerate(jobs):
         if not (alone or other_alive()):
@@ -183,11 +183,15 @@ class Precompile:
     waits for the other's and marks the plan done."""
 
     def __init__(self):
-        self.child, self.claims = None, None
+        self.child, self.claims, self.cpu_before = None, None, 0.0
 
     def start(self) -> "Precompile":
-        if os.environ.get("NUMBA_DISABLE_JIT") == "1" or _stamp().exists():
+        try:
+            if os.environ.get("NUMBA_DISABLE_JIT") == "1" or _stamp().exists():
+                return self
+        except OSError:                 # no plan: the warm-up compiles everything
             return self
+        self.cpu_before = _children_cpu()
         self.claims = tempfile.mkdtemp(prefix="wallbsp-claims-")
         self.child = subprocess.Popen([sys.executable, "-m", "wallbsp.app.precompile",
                                        self.claims, str(os.getpid())],
@@ -202,13 +206,13 @@ class Precompile:
             return {}
         jobs = plan_jobs()
         done = compile_jobs(jobs, self.claims, lambda: self.child.poll() is None, progress)
-        before = _children_cpu()
         self.child.wait()
         shutil.rmtree(self.claims, ignore_errors=True)
         if self.child.returncode == 0:
             _stamp().parent.mkdir(parents=True, exist_ok=True)
             _stamp().touch()
-        return {"jobs": len(jobs), "here": done, "other_cpu_s": round(_children_cpu() - before, 2)}
+        return {"jobs": len(jobs), "here": done,
+                "other_cpu_s": round(_children_cpu() - self.cpu_before, 2)}
 
     def stop(self) -> None:
         """Ends the second process (the window was closed before the start was over)."""
