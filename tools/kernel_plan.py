@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Writes ``wallbsp/data/kernels.json``, the plan of the cold start's kernels
+"""Writes ``wallbsp/data/kernels/plan.json``, the plan of the cold start's kernels
 (``wallbsp/app/precompile.py``): every kernel signature the game's start compiles, in the
 order the two processes take them.
 
@@ -118,8 +118,8 @@ def main() -> int:
     planned = json.loads(Path(PLAN).read_text())["kernels"] if Path(PLAN).exists() else []
     key = lambda e: (e["kernel"], json.dumps(e["args"]))        # noqa: E731
     same = sorted(map(key, entries)) == sorted(map(key, planned))
-    print(json.dumps({"kernels": len(entries), "seconds": round(sum(e["seconds"] for e in entries), 2),
-                      "plan_up_to_date": same}))
+    seconds = round(sum(e["seconds"] for e in entries), 2)
+    print(json.dumps({"kernels": len(entries), "seconds": seconds, "plan_up_to_date": same}))
     if args.check:
         return 0 if same else 1
     text = json.dumps({"about": "wallbsp/app/precompile.py; written by tools/kernel_plan.py",

@@ -4,13 +4,14 @@ numba compiles one kernel at a time in a process (its compiler holds a lock), an
 start after an install spends most of its half minute compiling the kernels play needs.  Its
 cache on disk is shared between processes: what one process compiled, another loads in
 milliseconds.  So the game starts a second process at once (``python -m
-wallbsp.app.precompile CLAIMS``) and both work through the plan, ``wallbsp/data/kernels.json``
-(every kernel signature the game's warm-up compiles, longest compile first, a kernel after
-the kernels it calls; written by ``tools/kernel_plan.py``, checked by the tests), each taking
-the next job not yet taken (a file made in CLAIMS, which only one process can make).  The
-game's own warm-up (``warmup``) then runs as before and finds every kernel on disk; a kernel
-the plan lacks is compiled there, so play never compiles whatever the plan says.  A file in
-the kernel cache marks the plan done: later starts make no second process.
+wallbsp.app.precompile CLAIMS``) and both work through the plan,
+``wallbsp/data/kernels/plan.json`` (every kernel signature the game's warm-up compiles,
+longest compile first, a kernel after the kernels it calls; written by
+``tools/kernel_plan.py``, checked by the tests), each taking the next job not yet taken (a
+file made in CLAIMS, which only one process can make).  The game's own warm-up (``warmup``)
+then runs as before and finds every kernel on disk; a kernel the plan lacks is compiled
+there, so play never compiles whatever the plan says.  A file in the kernel cache marks the
+plan done: later starts make no second process.
 """
 from __future__ import annotations
 
@@ -33,7 +34,7 @@ from wallbsp import jit
 __all__ = ["PLAN", "Precompile", "plan_jobs", "encode_type", "decode_type", "compile_jobs",
            "count_compiles", "on_compile", "main"]
 
-PLAN = files("wallbsp") / "data" / "kernels.json"
+PLAN = files("wallbsp") / "data" / "kernels" / "plan.json"
 POLL_SECONDS = 0.02
 
 
@@ -76,8 +77,9 @@ def decode_type(code):
 
 def plan_jobs(plan=None) -> list:
     """The plan's jobs in order, each ``(dispatcher, argument types, calls, seconds)``
-    (``calls``: the indices of jobs compiled within it; ``seconds``: its compile, measured); jobs whose kernel is gone are left out (a stale plan
-    costs time, never correctness: the warm-up compiles what is missing)."""
+    (``calls``: the indices of jobs compiled within it; ``seconds``: its compile, measured),
+    or None where the kernel is gone (a stale plan costs time, never correctness: the
+    warm-up compiles what is missing)."""
     entries = json.loads((plan or PLAN).read_text())["kernels"]
     jobs = []
     for entry in entries:
