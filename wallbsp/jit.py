@@ -21,7 +21,7 @@ import os
 import threading
 from pathlib import Path
 
-__all__ = ["kernel", "step_kernel", "LazyKernel", "compiled_signatures"]
+__all__ = ["kernel", "step_kernel", "LazyKernel", "compiled_signatures", "dispatcher_of"]
 
 _STATE = {"numba": None}
 _LAZY: list = []
@@ -72,6 +72,15 @@ class LazyKernel:
         if self.dispatcher is None:
             _load_numba()
         return getattr(self.dispatcher, name)
+
+
+def dispatcher_of(function):
+    """The numba dispatcher of a kernel (numba loaded if it was not)."""
+    if isinstance(function, LazyKernel):
+        if function.dispatcher is None:
+            _load_numba()
+        return function.dispatcher
+    return function
 
 
 # kernels live in doom/, scene/ and render/, which never import these folders (tests/test_layout.py)
