@@ -1,0 +1,74 @@
+"""GL nodes' own rules, for ``check``: ``check_chains(nodes, problems, ssect, segs)``.
+
+A GL subsector is a closed convex polygon: each of its segs ends at the vertex (by number)
+where the next starts, the last at the first's start; the chain runs clockwise once round
+(its turning number is -1: the subsector on the segs' right, as in DOOM) and dents nowhere
+by more than ``TOLERANCE`` units (a vertex that far right of the line from the one before
+to the one after: rounding a split point to a whole unit moves it less than 0.71).  A seg's
+partner, when it has one, runs the other way between the same two vertexes and names it
+back.  The first fault is one line in ``problems``; returns whether none was found.
+"""
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+TOLERANCE = 1.5
+
+
+def check_chains(nd, problems: list, ssect: str, segs_name: str) -> bool:
+    segs, subs = nd.segs, nd.subsectors
+    nxt = np.arange(1, len(segs) + 1)
+    last = subs[:, 0] + subs[:, 1] - 1
+    nxt[last] = subs[:, 0]
+    nxt %= max(1, len(segs))
+    open_at = np.flatnonzero(segs[:, 1] != segs[nxt, 0])
+    if open_at.size:
+        i = int(open_at[0])
+        s = int(np.searchsorted(subs[:, 0] + subs[:, 1], i, side="right"))
+        problems.append(f"{ssect}[{s}]: not closed: seg {i} ends at vertex {segs[i, 1]}, "
+                        f"seg {nxt[i]} starts at {segs[nxt[i], 0]} ({open_at.size} gaps)")
+        return False
+    partner = segs[:, 4]
+    has = np.flatnonzero(partner >= 0)
+    p = partner[has]
+    bad = has[(partner[p] != has) | (segs[p, 0] != segs[has, 1]) | (segs[p, 1] != segs[has, 0])]
+    if bad.size:
+        i = int(bad[0])
+        problems.append(f"{segs_name}[{i}]: partner {partner[i]} does not run back along it "
+                        f"({bad.size} segs so)")
+        return False
+    xy = nd.vertexes / 65536.0
+    for s, (first, count) in enumerate(subs.tolist()):
+        fault = _polygon_fault(xy[segs[first:first + count, 0]])
+        if fault:
+            problems.append(f"{ssect}[{s}]: {fault}")
+            return False
+    return True
+
+
+def _polygon_fault(points) -> str | None:
+    """Why the closed chain through ``points`` is not clockwise and convex, or None."""
+    keep = np.any(points != np.roll(points, 1, axis=0), axis=1)
+    pts = points[keep] if keep.any() else points[:1]
+    n = len(pts)
+    if n < 3:
+        return f"{n} distinct vertexes: no area"
+    prev, after = np.roll(pts, 1, axis=0), np.roll(pts, -1, axis=0)
+    a, b = pts - prev, after - pts
+    turning = np.arctan2(a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0], (a * b).sum(axis=1)).sum()
+    winding = round(turning / math.tau)
+    if winding != -1:
+        return (f"its segs wind {'anticlockwise' if winding > 0 else f'{-winding} times'} "
+                f"round it (a GL subsector's run clockwise once)")
+    chord = after - prev
+    length = np.hypot(chord[:, 0], chord[:, 1])
+    # clockwise and convex: each vertex left of (or on) the chord past it
+    dent = (chord[:, 1] * (pts[:, 0] - prev[:, 0]) - chord[:, 0] * (pts[:, 1] - prev[:, 1])) \
+        / np.maximum(length, 1e-9)
+    worst = int(np.argmax(np.where(length > 0, dent, 0)))
+    if dent[worst] > TOLERANCE and length[worst] > 0:
+        x, y = pts[worst]
+        return f"not convex: a dent of {dent[worst]:.1f} units at ({x:g}, {y:g})"
+    return None
