@@ -263,7 +263,7 @@ def check_nodes(m: MapData, nd, problems: list) -> dict:
     notes: list[str] = []
     if nd.gl:
         stats["minisegs"] = int((nd.segs[:, 2] < 0).sum())
-        if not check_chains(nd, problems, _name(nd, "SSECTORS"), _name(nd, "SEGS")):
+        if not check_chains(nd, problems, _name(nd, "SSECTORS"), _name(nd, "SEGS"), stats):
             return stats
     if _on_lines(m, nd, problems):
         _in_cells(m, nd, paths, problems, notes)
@@ -300,8 +300,9 @@ def _summary(stats) -> str:
             f"{f'; {mixed} subsectors face two sectors' if mixed else ''}")
     gl = stats.get("gl")
     if gl and gl is not stats and gl.get("format") != stats.get("format"):
+        flat = f", {gl['no_area']} of no area" if gl.get("no_area") else ""
         text += (f"; GL nodes ({gl['format']}): {gl['segs']} segs with {gl['minisegs']} "
-                 f"minisegs, closed and convex")
+                 f"minisegs, closed and convex{flat}")
     return text
 
 

@@ -1,23 +1,26 @@
 """GL nodes' own rules, for ``check``: ``check_chains(nodes, problems, ssect, segs)``.
 
 A GL subsector is a closed convex polygon: each of its segs ends at the vertex (by number)
-where the next starts, the last at the first's start; the chain runs clockwise once round
-(its turning number is -1: the subsector on the segs' right, as in DOOM) and dents nowhere
-by more than ``TOLERANCE`` units (a vertex that far right of the line from the one before
+where the next starts, the last at the first's start; the chain runs clockwise (its signed
+area is negative: the subsector on the segs' right, as in DOOM) and dents nowhere by more
+than ``TOLERANCE`` units (a vertex that far right of the line from the one before
 to the one after: rounding a split point to a whole unit moves it less than 0.71).  A seg's
 partner, when it has one, runs the other way between the same two vertexes and names it
-back.  The first fault is one line in ``problems``; returns whether none was found.
+back.  A subsector of fewer than three distinct vertexes or less than a square unit (a
+sliver a node builder's rounding left, its segs and the minisegs back along them) has no
+area: counted in
+``stats["no_area"]``, not a fault (a GL port draws nothing there).  The first fault is one
+line in ``problems``; returns whether none was found.
 """
 from __future__ import annotations
-
-import math
 
 import numpy as np
 
 TOLERANCE = 1.5
+_FLAT = "no area"
 
 
-def check_chains(nd, problems: list, ssect: str, segs_name: str) -> bool:
+def check_chains(nd, problems: list, ssect: str, segs_name: str, stats: dict) -> bool:
     segs, subs = nd.segs, nd.subsectors
     nxt = np.arange(1, len(segs) + 1)
     last = subs[:, 0] + subs[:, 1] - 1
@@ -40,11 +43,15 @@ def check_chains(nd, problems: list, ssect: str, segs_name: str) -> bool:
                         f"({bad.size} segs so)")
         return False
     xy = nd.vertexes / 65536.0
+    flat = 0
     for s, (first, count) in enumerate(subs.tolist()):
         fault = _polygon_fault(xy[segs[first:first + count, 0]])
-        if fault:
+        if fault == _FLAT:
+            flat += 1
+        elif fault:
             problems.append(f"{ssect}[{s}]: {fault}")
             return False
+    stats["no_area"] = flat
     return True
 
 
@@ -54,14 +61,13 @@ def _polygon_fault(points) -> str | None:
     pts = points[keep] if keep.any() else points[:1]
     n = len(pts)
     if n < 3:
-        return f"{n} distinct vertexes: no area"
+        return _FLAT
     prev, after = np.roll(pts, 1, axis=0), np.roll(pts, -1, axis=0)
-    a, b = pts - prev, after - pts
-    turning = np.arctan2(a[:, 0] * b[:, 1] - a[:, 1] * b[:, 0], (a * b).sum(axis=1)).sum()
-    winding = round(turning / math.tau)
-    if winding != -1:
-        return (f"its segs wind {'anticlockwise' if winding > 0 else f'{-winding} times'} "
-                f"round it (a GL subsector's run clockwise once)")
+    area = (pts[:, 0] * after[:, 1] - after[:, 0] * pts[:, 1]).sum() / 2
+    if abs(area) < 1:
+        return _FLAT
+    if area > 0:
+        return f"its segs run anticlockwise round it (area {area:g}; clockwise in a GL port)"
     chord = after - prev
     length = np.hypot(chord[:, 0], chord[:, 1])
     # clockwise and convex: each vertex left of (or on) the chord past it

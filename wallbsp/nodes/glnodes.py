@@ -11,12 +11,14 @@ each seg ending where the next starts (by vertex number): its own segs (on lined
   split points can be tilted, and its line would slice the cell far away);
 - its segs are taken in clockwise order round the cell's centre; where one ends and the
   next starts elsewhere, minisegs join them through the cell's corners between (corners
-  within a unit of a seg's end are left out: they are the exact crossing a split point was
-  rounded from, ``builder``);
-- a miniseg with another chain's vertex on it (within ``TJOIN`` units: a neighbour's split
-  point or corner) is cut there, so the two sides of a partition have the same pieces;
-  then a seg's *partner* is the seg running the other way between the same two vertexes
-  (-1: none).
+  within ``SNAP`` units of a seg's end are left out: they are the exact crossing a split
+  point was rounded from, ``builder``); a subsector whose cell is thinner than that (a
+  sliver the rounding left) is its segs and the minisegs back: it has no area;
+- a miniseg with another chain's vertex on it (within ``TJOIN`` units, and more than
+  ``SNAP`` from its ends: a neighbour's split point or corner; not one of its own chain's)
+  is cut there, so the two sides of a partition have the same pieces;
+  then a seg's *partner* is the seg of another subsector running the other way between
+  the same two vertexes (-1: none).
 
 Vertexes are 16.16 fixed point: ``vertexes[:n_normal]`` are the VERTEXES lump's (a point on
 one of them uses the first such, so chains join by number), the rest are GL vertexes.
@@ -34,7 +36,8 @@ from .builder import LEAF_FLAG
 
 FRAC = 1 << 16
 MARGIN = 64               # map units round the map's box: the root's cell
-SNAP = 1.0                # a corner this near a seg's end is that end
+SNAP = 1.5                # a corner this near a seg's end is that end (a split point is
+                          # rounded to a grid point by the crossing, < 1.42 units away)
 TJOIN = 0.75              # a vertex this near a miniseg (inside its ends) cuts it
 _GRID = 32                # map units a bucket of the vertex grid
 
@@ -77,49 +80,82 @@ def _fixed(x: float, y: float) -> tuple[int, int]:
     return round(x * FRAC), round(y * FRAC)
 
 
-def _clockwise(cx, cy, x, y):
-    return -math.atan2(y - cy, x - cx)
+class _Boundary:
+    """A convex polygon's boundary walked clockwise: a point's place on it is the length
+    along it, from the first corner, to the point's nearest point on it."""
+
+    def __init__(self, cell):
+        area = sum(p[0] * q[1] - q[0] * p[1] for p, q in zip(cell, cell[1:] + cell[:1]))
+        self.corners = cell[::-1] if area > 0 else list(cell)
+        self.starts, total = [], 0.0
+        for p, q in zip(self.corners, self.corners[1:] + self.corners[:1]):
+            self.starts.append(total)
+            total += math.hypot(q[0] - p[0], q[1] - p[1])
+        self.length = total
+
+    def place(self, x: float, y: float) -> float:
+        best, where = math.inf, 0.0
+        corners = self.corners
+        for i, p in enumerate(corners):
+            q = corners[(i + 1) % len(corners)]
+            dx, dy = q[0] - p[0], q[1] - p[1]
+            size = math.hypot(dx, dy)
+            t = 0.0 if size == 0 else min(size, max(0.0, ((x - p[0]) * dx + (y - p[1]) * dy)
+                                                    / size))
+            d = math.hypot(p[0] + dx * t / max(size, 1e-12) - x,
+                           p[1] + dy * t / max(size, 1e-12) - y)
+            if d < best:
+                best, where = d, self.starts[i] + t
+        return where
 
 
-def _chain(cell, ends, segs):
-    """One subsector's chain ``[(a, b, linedef, side)]`` (vertex keys: fixed points); a
-    sliver thinner than ``SNAP`` keeps its corners (else it would have no area)."""
-    chain = _chain_snapped(cell, ends, segs, SNAP)
-    if len({a for a, _, _, _ in chain}) < 3 and len(cell) >= 3:
-        chain = _chain_snapped(cell, ends, segs, 0.0)
-    return chain
-
-
-def _chain_snapped(cell, ends, segs, snap):
-    if len(cell) >= 3:
-        cx = sum(p[0] for p in cell) / len(cell)
-        cy = sum(p[1] for p in cell) / len(cell)
-    else:
-        cx = sum(e[0][0] + e[1][0] for e in ends) / (2 * FRAC * len(ends))
-        cy = sum(e[0][1] + e[1][1] for e in ends) / (2 * FRAC * len(ends))
-    mids = [((a[0] + b[0]) / (2 * FRAC), (a[1] + b[1]) / (2 * FRAC)) for a, b in ends]
-    order = sorted(range(len(ends)), key=lambda i: _clockwise(cx, cy, *mids[i]))
-    corners = [(_clockwise(cx, cy, x, y), _fixed(x, y)) for x, y in cell]
+def _chain(cell, ends, segs, snap=SNAP):
+    """One subsector's chain ``[(a, b, linedef, side)]`` (vertex keys: fixed points): its
+    segs in order round its cell, joined through the cell's corners between them."""
+    if len(cell) < 3:
+        return _closed(ends, segs)
+    edge = _Boundary(cell)
+    at = [(edge.place(a[0] / FRAC, a[1] / FRAC), edge.place(b[0] / FRAC, b[1] / FRAC))
+          for a, b in ends]
+    order = sorted(range(len(ends)), key=lambda i: _midway(at[i], edge.length))
     chain = []
     for k, i in enumerate(order):
         a, b = ends[i]
         chain.append((a, b, segs[i][0], segs[i][1]))
-        start = ends[order[(k + 1) % len(order)]][0]
+        j = order[(k + 1) % len(order)]
+        start = ends[j][0]
         if start == b:
             continue
-        gap = math.hypot(start[0] - b[0], start[1] - b[1]) / FRAC
+        span = (at[j][0] - at[i][1]) % edge.length
         via = []
-        if (gap >= 1.5 or not snap) and len(cell) >= 3:
-            from_b = _clockwise(cx, cy, b[0] / FRAC, b[1] / FRAC)
-            span = (_clockwise(cx, cy, start[0] / FRAC, start[1] / FRAC) - from_b) % math.tau
-            for angle, p in corners:
-                turn = (angle - from_b) % math.tau
+        if math.hypot(start[0] - b[0], start[1] - b[1]) >= snap * FRAC and \
+                span < edge.length - 2 * snap:      # else start is just behind b
+            for place, (x, y) in zip(edge.starts, edge.corners):
+                turn = (place - at[i][1]) % edge.length
+                p = _fixed(x, y)
                 if 0 < turn < span and _far(p, b, snap) and _far(p, start, snap):
                     via.append((turn, p))
         points = [b] + [p for _, p in sorted(via)] + [start]
         for p, q in zip(points, points[1:]):
             if p != q:
                 chain.append((p, q, -1, 0))
+    return chain
+
+
+def _midway(places, length):
+    """A seg's place on the boundary: halfway between its ends' (the way round it runs)."""
+    a, b = places
+    return (a + ((b - a) % length) / 2) % length
+
+
+def _closed(ends, segs):
+    """A subsector without a cell (a sliver): its segs, each end joined to the next start."""
+    chain = []
+    for k, ((a, b), (li, side)) in enumerate(zip(ends, segs)):
+        chain.append((a, b, li, side))
+        start = ends[(k + 1) % len(ends)][0]
+        if start != b:
+            chain.append((b, start, -1, 0))
     return chain
 
 
@@ -152,7 +188,7 @@ def _on_miniseg(grid, a, b):
             for v in grid.get(cell, ()):
                 along = ((v[0] - a[0]) * dx + (v[1] - a[1]) * dy) / length
                 off = abs((v[0] - a[0]) * dy - (v[1] - a[1]) * dx) / length
-                if off <= TJOIN * FRAC and 0.5 * FRAC < along < length - 0.5 * FRAC:
+                if off <= TJOIN * FRAC and SNAP * FRAC < along < length - SNAP * FRAC:
                     hits.append((along, v))
     return [v for _, v in sorted(hits)]
 
@@ -180,7 +216,7 @@ def gl_nodes(m, nodes) -> GlNodes:
             if len(cell) >= 3:
                 cell = clip_convex(cell, (ay - by, bx - ax, (by - ay) * ax - (bx - ax) * ay),
                                    -1)
-        chains.append(_chain(cell if len(cell) >= 3 else cells[s], ends, own))
+        chains.append(_chain(cell, ends, own))
     return _numbered(normal, chains, nodes.nodes)
 
 
@@ -194,8 +230,11 @@ def _numbered(normal, chains, tree) -> GlNodes:
     rows, subs = [], []
     for chain in chains:
         subs.append((len(rows), 0))
+        mine = {a for a, _, _, _ in chain}
         for a, b, li, side in chain:
-            points = [a] + (_on_miniseg(grid, a, b) if li < 0 else []) + [b]
+            cuts = [p for p in _on_miniseg(grid, a, b) if p not in mine] \
+                if li < 0 and len(mine) > 2 else []       # (a sliver keeps no area)
+            points = [a] + cuts + [b]
             for p, q in zip(points, points[1:]):
                 ends = []
                 for key in (p, q):
@@ -210,9 +249,10 @@ def _numbered(normal, chains, tree) -> GlNodes:
     by_ends: dict = {}
     for i, (v1, v2) in enumerate(out[:, :2].tolist()):
         by_ends.setdefault((v1, v2), []).append(i)
+    owner = np.repeat(np.arange(len(subs)), [count for _, count in subs])
     for i, (v1, v2) in enumerate(out[:, :2].tolist()):
         back = by_ends.get((v2, v1), ())
-        if len(back) == 1 and len(by_ends[(v1, v2)]) == 1:
+        if len(back) == 1 and len(by_ends[(v1, v2)]) == 1 and owner[back[0]] != owner[i]:
             out[i, 4] = back[0]
     vertexes = np.concatenate([normal * FRAC, np.array(extra, np.int64).reshape(-1, 2)])
     return GlNodes(vertexes, len(normal), out, np.array(subs, np.int64).reshape(-1, 2), tree)
