@@ -11,7 +11,8 @@ nodes are reported as extended, not checked):
 - segs on their lines: both ends within ``TOLERANCE`` units of the linedef's line and
   inside its ends, the side with a sidedef;
 - the tree covers the map: each side of each linedef is covered by its segs once (the
-  lengths add up to the side's length), and every seg lies (its midpoint, within
+  lengths add up to the side's length; sides running between the same two points the same
+  way, overlapping linedefs, together at least once and at most once each), and every seg lies (its midpoint, within
   ``TOLERANCE``) on its subsector's side of every partition above it;
 - subsectors convex and closed under their partitions: no seg's end lies more than
   ``TOLERANCE`` behind another seg of its subsector, and a subsector's segs face one sector.
@@ -184,13 +185,30 @@ def _on_lines(m, nd, problems):
                     v["y"][m.linedefs["v2"]].astype(float) - v["y"][m.linedefs["v1"]])
     want = np.stack([np.where(m.linedefs["right"] != NO_SIDE, full, 0),
                      np.where(m.linedefs["left"] != NO_SIDE, full, 0)], axis=1).reshape(-1)
-    bad = np.flatnonzero(np.abs(total - want) > TOLERANCE * 2 + 0.01 * want)
+    slack = TOLERANCE * 2 + 0.01 * want
+    bad = np.abs(total - want) > slack
+    if bad.any():               # a side that overlaps others (the same two ends, the same
+        group = _overlaps(m)    # way) may be drawn by their segs: glBSP keeps one of them
+        together = np.bincount(group, total)[group]
+        many = np.bincount(group)[group]
+        bad &= (together < want - slack) | (together > want * many + slack)
+    bad = np.flatnonzero(bad)
     if bad.size:
         i = bad[0]
         problems.append(f"LINEDEFS[{i // 2}]: side {i % 2}: its segs cover {total[i]:.1f} of "
                         f"{want[i]:.1f} units ({bad.size} sides so)")
         return False
     return True
+
+
+def _overlaps(m):
+    """Each linedef side's group: the sides running between the same two points the same
+    way (``2 * linedef + side`` order)."""
+    v = np.stack([m.vertexes["x"], m.vertexes["y"]], axis=1).astype(np.int64)
+    a, b = v[m.linedefs["v1"]], v[m.linedefs["v2"]]
+    ends = np.stack([np.concatenate([a, b], axis=1), np.concatenate([b, a], axis=1)],
+                    axis=1).reshape(-1, 4)
+    return np.unique(ends, axis=0, return_inverse=True)[1].reshape(-1)
 
 
 def _in_cells(m, nd, paths, problems, notes):
@@ -273,21 +291,26 @@ def check_nodes(m: MapData, nd, problems: list) -> dict:
 
 def check_map(m: MapData):
     """``(problems, stats)`` for one map (problems empty: sound): its nodes, and its GL
-    nodes when it has them (a UDMF map: its ZNODES only); ``stats["gl"]`` the GL nodes'."""
+    nodes when it has them (a UDMF map: its ZNODES only; an empty NODES beside GL nodes
+    in SSECTORS, zdbsp ``-x``: those only); ``stats["gl"]`` the GL nodes'."""
     problems: list[str] = []
     stats: dict = {}
-    if not m.udmf:
+    gl_only = m.udmf or (not m.lumps.get("NODES") and has_gl(m.lumps))    # zdbsp -x
+    if not gl_only:
         nd = _load(m, problems)
         if nd is None:
             return problems, stats
         stats = check_nodes(m, nd, problems)
         stats["format"] = nd.kind
-    if (has_gl(m.lumps) or m.udmf) and not problems:
+    if (has_gl(m.lumps) or gl_only) and not problems:
         gl = _load(m, problems, gl=True)
         if gl is not None:
-            stats["gl"] = check_nodes(m, gl, problems)
+            found: list[str] = []
+            stats["gl"] = check_nodes(m, gl, found)
+            problems += [f"GL nodes ({gl.kind}): {p}" if p.startswith("LINEDEFS") else p
+                         for p in found]
             stats["gl"]["format"] = gl.kind
-            if m.udmf:
+            if gl_only:
                 stats.update(stats["gl"])
     return problems, stats
 

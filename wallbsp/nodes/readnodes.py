@@ -6,7 +6,8 @@
   new vertexes follow the map's own;
 - the GL nodes (``gl=True``): glBSP's v5 GL_VERT (``gNd5``), GL_SEGS, GL_SSECT, GL_NODES,
   or, when the map has a ZNODES lump (a UDMF map), ZDoom's ``XGLN``/``ZGLN``, ``XGL2``/
-  ``ZGL2`` (32-bit linedef numbers) or ``XGL3``/``ZGL3`` (16.16 partitions).
+  ``ZGL2`` (32-bit linedef numbers) or ``XGL3``/``ZGL3`` (16.16 partitions) there; the same
+  in SSECTORS (where zdbsp ``-g -X`` puts them beside XNOD).
 
 ``lumps`` are the map's lumps by name; ``vertexes`` the map's own as an ``(n, 2)`` int
 array (default: the VERTEXES lump; a UDMF map's come from its TEXTMAP).  ``ReadNodes``:
@@ -213,7 +214,8 @@ def _gl_v5(where, lumps, own):
 
 
 def has_gl(lumps: dict) -> bool:
-    return "ZNODES" in lumps or "GL_VERT" in lumps
+    return "ZNODES" in lumps or "GL_VERT" in lumps or \
+        lumps.get("SSECTORS", b"")[:4] in GL_EXTENDED
 
 
 def read_nodes(where: str, lumps: dict, vertexes=None, gl: bool = False) -> ReadNodes:
@@ -229,6 +231,9 @@ def read_nodes(where: str, lumps: dict, vertexes=None, gl: bool = False) -> Read
                 raise NodesError(f"{where}: ZNODES: magic {raw[:4]!r} is none of "
                                  f"{', '.join(m.decode() for m in GL_EXTENDED)}")
             return _extended(where, "ZNODES", raw, own, len(own), True)
+        raw = lumps.get("SSECTORS", b"")
+        if raw[:4] in GL_EXTENDED:                   # zdbsp -g -X / -z: GL nodes there
+            return _extended(where, "SSECTORS", raw, own, len(own), True)
         return _gl_v5(where, lumps, own)
     raw = lumps.get("NODES", b"")
     if raw[:4] in EXTENDED:
