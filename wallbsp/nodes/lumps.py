@@ -17,6 +17,7 @@ import struct
 import numpy as np
 
 from .builder import LEAF_FLAG
+from .gllumps import nodes_v5
 from .mapdata import NODE, SEG, SUBSECTOR, VERTEX
 
 VANILLA_MAX = 32767
@@ -77,13 +78,7 @@ def xnod_lump(nodes, n_own: int) -> bytes:
     rows["v1"], rows["v2"], rows["linedef"], rows["side"] = (segs["v1"], segs["v2"],
                                                               segs["linedef"], segs["side"])
     parts += [struct.pack("<I", len(segs)), rows.tobytes()]
-    nd = nodes.nodes
-    rows = np.zeros(len(nd), np.dtype([("xy", "<i2", (4,)), ("bbox", "<i2", (2, 4)),
-                                       ("child", "<u4", (2,))]))
-    rows["xy"] = np.stack([nd["x"], nd["y"], nd["dx"], nd["dy"]], axis=1)
-    rows["bbox"] = nd["bbox"]
-    rows["child"] = _children(nd["child"], 0x80000000)
-    parts += [struct.pack("<I", len(nd)), rows.tobytes()]
+    parts += [struct.pack("<I", len(nodes.nodes)), nodes_v5(nodes.nodes)]
     return b"".join(parts)
 
 
