@@ -12,8 +12,9 @@ nodes are reported as extended, not checked):
   inside its ends, the side with a sidedef;
 - the tree covers the map: each side of each linedef is covered by its segs once (the
   lengths add up to the side's length; sides running between the same two points the same
-  way, overlapping linedefs, together at least once and at most once each), and every seg lies (its midpoint, within
-  ``TOLERANCE``) on its subsector's side of every partition above it;
+  way, overlapping linedefs, together at least once and at most once each), and every
+  seg lies (its midpoint, within ``TOLERANCE``) on its subsector's side of every
+  partition above it;
 - subsectors convex and closed under their partitions: no seg's end lies more than
   ``TOLERANCE`` behind another seg of its subsector, and a subsector's segs face one sector.
 """

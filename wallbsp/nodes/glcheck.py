@@ -1,7 +1,8 @@
 """GL nodes' own rules, for ``check``: ``check_chains(nodes, problems, ssect, segs)``.
 
-A GL subsector is a closed convex polygon: each of its segs ends at the vertex (by number)
-where the next starts, the last at the first's start; the chain runs clockwise (its signed
+A GL subsector is a closed convex polygon: each of its segs ends where the next starts
+(the same vertex, or one at the same point: maps have duplicate vertexes, which glBSP
+keeps), the last where the first starts; the chain runs clockwise (its signed
 area is negative: the subsector on the segs' right, as in DOOM) and dents nowhere by more
 than ``TOLERANCE`` units (a vertex that far right of the line from the one before
 to the one after: rounding a split point to a whole unit moves it less than 0.71).  A seg's
@@ -26,7 +27,8 @@ def check_chains(nd, problems: list, ssect: str, segs_name: str, stats: dict) ->
     last = subs[:, 0] + subs[:, 1] - 1
     nxt[last] = subs[:, 0]
     nxt %= max(1, len(segs))
-    open_at = np.flatnonzero(segs[:, 1] != segs[nxt, 0])
+    xy = nd.vertexes
+    open_at = np.flatnonzero((xy[segs[:, 1]] != xy[segs[nxt, 0]]).any(axis=1))
     if open_at.size:
         i = int(open_at[0])
         s = int(np.searchsorted(subs[:, 0] + subs[:, 1], i, side="right"))
@@ -42,7 +44,7 @@ def check_chains(nd, problems: list, ssect: str, segs_name: str, stats: dict) ->
         problems.append(f"{segs_name}[{i}]: partner {partner[i]} does not run back along it "
                         f"({bad.size} segs so)")
         return False
-    xy = nd.vertexes / 65536.0
+    xy = xy / 65536.0
     flat = 0
     for s, (first, count) in enumerate(subs.tolist()):
         fault = _polygon_fault(xy[segs[first:first + count, 0]])

@@ -13,7 +13,10 @@ each seg ending where the next starts (by vertex number): its own segs (on lined
   next starts elsewhere, minisegs join them through the cell's corners between (corners
   within ``SNAP`` units of a seg's end are left out: they are the exact crossing a split
   point was rounded from, ``builder``); a subsector whose cell is thinner than that (a
-  sliver the rounding left) is its segs and the minisegs back: it has no area;
+  sliver the rounding left) is its segs and the minisegs back: it has no area.  A cell
+  that reaches past the map's walls (a vanilla tree does not close its subsectors: a seg
+  counted on a nearly collinear partition goes to the side behind it) keeps that void in
+  its polygon, out of sight behind one-sided walls;
 - a miniseg with another chain's vertex on it (within ``TJOIN`` units, and more than
   ``SNAP`` from its ends: a neighbour's split point or corner; not one of its own chain's)
   is cut there, so the two sides of a partition have the same pieces;
