@@ -196,7 +196,7 @@ def _gl_v5(where, lumps, own):
         what = f"GL nodes v{raw[3:4].decode('latin-1')}" if raw[:3] == b"gNd" else \
             f"magic {raw[:4]!r}"
         raise NodesError(f"{where}: GL_VERT: {what}; only v5 (gNd5) is read")
-    new = _records(where, "GL_VERT", raw[4:], "<i4").astype(np.int64).reshape(-1, 2)
+    new = _records(where, "GL_VERT", raw[4:], np.dtype(("<i4", (2,)))).astype(np.int64)
     vertexes = np.concatenate([own, new])
     segs = _records(where, "GL_SEGS", lumps.get("GL_SEGS"), np.dtype(
         [("v1", "<u4"), ("v2", "<u4"), ("line", "<u2"), ("side", "<u2"), ("partner", "<u4")]))
