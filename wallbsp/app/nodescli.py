@@ -48,6 +48,13 @@ def add_parsers(sub, commands) -> None:
     p.add_argument("-d", "--diagonal-cost", type=_positive, default=d.diagonal_cost,
                    metavar="N", help=f"cost of a diagonal partition (zdbsp's "
                                      f"--diagonal-cost; default {d.diagonal_cost})")
+    p.add_argument("--lookahead", type=_positive, default=d.lookahead, metavar="N",
+                   help=f"the N best partitions of a node are tried a level deeper and the "
+                        f"one whose children split best wins; 0 or 1: none (default "
+                        f"{d.lookahead})")
+    p.add_argument("--lookahead-candidates", type=_positive, default=d.lookahead_candidates,
+                   metavar="N", help=f"segs whose lines are tried for those children, 0: all "
+                                     f"(default {d.lookahead_candidates})")
     p.add_argument("--gl", action="store_true",
                    help="add GL nodes (glBSP's v5 GL_VERT, GL_SEGS, GL_SSECT, GL_NODES) "
                         "after each map, for GL ports")
@@ -74,7 +81,8 @@ def add_parsers(sub, commands) -> None:
 def _options(args):
     from wallbsp.nodes.builder import BuildOptions
     from wallbsp.nodes.wadnodes import NodeOptions
-    build = BuildOptions(args.candidates, args.split_cost, args.balance, args.diagonal_cost)
+    build = BuildOptions(args.candidates, args.split_cost, args.balance, args.diagonal_cost,
+                         args.lookahead, args.lookahead_candidates)
     maps = tuple(m.strip() for m in args.maps.split(",") if m.strip()) if args.maps else None
     reject = "zero" if args.no_reject else "keep" if args.keep_reject else "sight"
     return NodeOptions(build, maps, reject, args.gl, args.extended, not args.uncompressed)

@@ -89,7 +89,7 @@ def walk_command(args, load_any, next_level_of) -> None:
         summary = run_walkthrough(
             tree, size=args.size, frames=args.frames, turn=args.turn,
             screenshot=args.screenshot, max_fps=args.max_fps, demo=demo,
-            next_level=game.next_level if game else (episode or next_level_of(args.level, args)),
+            next_level=game or episode or next_level_of(args.level, args),
             skill=args.skill,
             sound=effects, music=not (args.nosound or args.nomusic), keys=keys,
             saves=args.saves, aspect=None if args.square_pixels else 4 / 3, world=world,
