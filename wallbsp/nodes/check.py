@@ -2,10 +2,12 @@
 
 ``check_map(map_data) -> (problems, stats)``; ``check_wad_file(path, maps, say, as_json)``
 prints one line a map (``MAP01: ok ...`` or ``MAP01: bad: <first problem> (+N more)``) and
-returns whether every map passed.  What is checked, in DOOM's vanilla format (``XNOD``
-nodes are reported as extended, not checked):
-- every record whole and every index in range (a seg's vertexes, linedef and side, a
-  subsector's segs, a node's children), within vanilla's limits;
+returns whether every map passed.  The nodes are read by ``readnodes`` (vanilla, XNOD/ZNOD,
+and GL nodes beside them: glBSP's v5 lumps, ZDoom's XGLN/ZGLN/XGL2/ZGL2/XGL3/ZGL3 in a UDMF
+map's ZNODES or in SSECTORS), and each set is checked for:
+- every lump decoded, every record whole and every index in range (a seg's vertexes,
+  linedef and side, a subsector's segs, a node's children), within vanilla's limits for
+  vanilla lumps;
 - the tree: every node and every subsector reached exactly once from the root (the last
   node), no cycle, every partition of some length, every seg in exactly one subsector;
 - segs on their lines: both ends within ``TOLERANCE`` units of the linedef's line and
@@ -16,7 +18,10 @@ nodes are reported as extended, not checked):
   seg lies (its midpoint, within ``TOLERANCE``) on its subsector's side of every
   partition above it;
 - subsectors convex and closed under their partitions: no seg's end lies more than
-  ``TOLERANCE`` behind another seg of its subsector, and a subsector's segs face one sector.
+  ``TOLERANCE`` behind another seg's linedef in its subsector, and a subsector's segs face
+  one sector (else a note);
+- GL nodes: minisegs (no linedef) are left out of the two checks above, and each
+  subsector's chain is closed, clockwise and convex, partners mutual (``glcheck``).
 """
 from __future__ import annotations
 
