@@ -121,6 +121,7 @@ class GameFlow:
         self.following = None                   # the tree after the intermission
         self._clock = None
         self.menu.bindings = dict(walk.key_names or DEFAULT_KEYS)
+        self.menu.options["widescreen"] = bool(getattr(walk, "widescreen", False))
         self._game = walk.next_level            # a game folder names its episode, skills
         self._game_of(walk.world)
         walk.warp = self.warp
@@ -254,6 +255,10 @@ class GameFlow:
             walk.hud.say("Messages ON" if value else "Messages OFF")
         elif name == "mouse":
             walk.mouse_sensitivity = value                      # keys.tic_command's turn
+        elif name == "widescreen":
+            walk.widescreen = bool(value)                       # gamescreen.picture_size
+            from wallbsp.app.window import reshape_window
+            reshape_window(walk)
         elif name == "screen_size" and hasattr(walk, "statusbar"):
             walk.statusbar = walk.hud.statusbar = value < 8
         elif name == "sfx" and getattr(walk, "sound", None) is not None:

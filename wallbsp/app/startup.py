@@ -22,6 +22,8 @@ import time
 
 import numpy as np
 
+from wallbsp.app.window import prefer_plain_framebuffer
+
 __all__ = ["run_game", "TitleScreen", "note_moment", "title_rgb", "WadGame", "OwnGame"]
 
 BAR_COLOUR, BAR_BACK = (200, 40, 30), (40, 10, 8)
@@ -41,6 +43,7 @@ class TitleScreen:
 
     def __init__(self, title, window, aspect=4 / 3):
         import pygame
+        prefer_plain_framebuffer()
         pygame.display.init()
         pygame.font.init()
         self.display = pygame.display.set_mode(window, pygame.RESIZABLE)
@@ -113,7 +116,7 @@ def run_game(args, keys, load_any) -> None:
     from wallbsp.app.vanilla import is_wad
     source = WadGame(args.level) if is_wad(args.level) else OwnGame(args.level, load_any, args)
     aspect = None if args.square_pixels else 4 / 3
-    window = (960, 720) if aspect else (960, 600)
+    window = (1280, 720) if args.widescreen else (960, 720) if aspect else (960, 600)
     screen = TitleScreen(source.title(), window, aspect)
     screen.draw()
     note_moment("window")
@@ -261,4 +264,5 @@ def _attract_and_play(args, keys, source, made) -> None:
     app.run_walkthrough(first_tree, size=args.size, max_fps=args.max_fps, skill=args.skill,
                         sound=effects, music=not (args.nosound or args.nomusic), keys=keys,
                         saves=args.saves, aspect=None if args.square_pixels else 4 / 3,
-                        world=world, setup=setup, menus=True, key_file=args.keys)
+                        world=world, setup=setup, menus=True, key_file=args.keys,
+                        widescreen=args.widescreen)

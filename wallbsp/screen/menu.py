@@ -12,8 +12,8 @@ without the prefix, for the sound system: ``pstop`` moving the cursor, ``swtchn`
 opening, ``swtchx`` closing, ``pistol`` choosing, ``stnmov`` a slider, ``oof`` refused)
 and the game's actions: ``NewGame(episode, skill)`` (skill 1-5 as ``World`` takes it),
 ``LoadGame(slot)``, ``SaveGame(slot, name)``, ``EndGame()``, ``Quit(sound)`` and
-``Option(name, value)`` for ``messages``, ``detail``, ``screen_size``, ``mouse``, ``sfx``
-and ``music``.
+``Option(name, value)`` for ``messages``, ``detail``, ``screen_size``, ``mouse``, ``sfx``,
+``music`` and ``widescreen`` (our row: the view widened to the window, Crispy Doom's).
 
 The menus are DOOM's ``menu_t`` tables (``MENUS``: item lumps, alpha keys, ``x``/``y``),
 with Doom II's main menu for every game (no Read This!: the help screens are not drawn);
@@ -338,6 +338,10 @@ class Menu(KeysMenu):
     def detail(self) -> list:
         self.options["detail"] ^= 1
         return [Option("detail", self.options["detail"])]
+
+    def widescreen(self) -> list:
+        self.options["widescreen"] = not self.options["widescreen"]
+        return [Option("widescreen", self.options["widescreen"])]
 
     def sound(self) -> list:
         self._setup("sound")
