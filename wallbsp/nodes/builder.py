@@ -176,8 +176,10 @@ def _point_key(p):
 
 def own_vertex_count(m: MapData) -> int:
     """The map's own vertexes: up to the last one a linedef uses (the rest of VERTEXES is
-    an earlier node builder's split points)."""
+    an earlier node builder's split points; a UDMF map's are all its own)."""
     ld = m.linedefs
+    if m.udmf:
+        return len(m.vertexes)
     return int(max(ld["v1"].max(), ld["v2"].max())) + 1 if len(ld) else 0
 
 
