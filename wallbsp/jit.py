@@ -46,9 +46,10 @@ def _jit(function):
 def compiled_signatures() -> dict:
     """``kernel name -> signatures compiled (or loaded from the cache) so far`` in this
     process: a kernel called with new argument types since shows as a new signature (the
-    game's warm-up is checked so: no new one during play)."""
+    game's warm-up is checked so: no new one during play).  A kernel made but never
+    compiled is left out: importing a module is not a compile."""
     return {f"{d.py_func.__module__}.{d.py_func.__qualname__}": len(d.signatures)
-            for d in _MADE}
+            for d in _MADE if d.signatures}
 
 
 class LazyKernel:
