@@ -56,6 +56,9 @@ def parse(argv=None):
     p.add_argument("--entropy", type=float, default=0.01)
     p.add_argument("--size", type=int, default=64, choices=(42, 64, 84, 96))
     p.add_argument("--rgb", action="store_true", help="colour instead of gray")
+    p.add_argument("--no-weapon", dest="weapon", action="store_false",
+                   help="wallbsp: no weapon in the frame (default: the scenario's, drawn "
+                        "where ViZDoom draws it)")
     p.add_argument("--reward-scale", type=float, default=0.01)
     p.add_argument("--cluster", default=None, metavar="ADDRESS",
                    help="join a running Ray cluster (HOST:PORT or 'auto')")
@@ -76,7 +79,8 @@ def parse(argv=None):
 def env_config(args) -> dict:
     return {"source": "vizdoom" if args.vizdoom else "wallbsp", "scenario": args.scenario,
             "frame_skip": 4, "screen": (160, 120), "size": args.size, "gray": not args.rgb,
-            "reward_scale": args.reward_scale, "env_workers": args.env_workers}
+            "reward_scale": args.reward_scale, "env_workers": args.env_workers,
+            "render_weapon": None if args.weapon else False}
 
 
 def start_ray(args):
