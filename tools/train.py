@@ -37,6 +37,12 @@ def parse(argv=None):
                                     "deathmatch: two agents, one shared policy")
     p.add_argument("--max-tics", type=int, default=1050,
                    help="deathmatch: episode length in tics (1050: 30 s)")
+    p.add_argument("--agents", type=int, default=2, help="deathmatch: players (2-4)")
+    p.add_argument("--level", default="arena",
+                   help="deathmatch: arena (1024x1024, pillars), duel (a bare 384x384 room) "
+                        "or a level file")
+    p.add_argument("--damage-reward", type=float, default=0.0,
+                   help="deathmatch: reward per point of health taken from another player")
     p.add_argument("--vizdoom", action="store_true", help="ViZDoom's own environments")
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--steps", type=int, default=300_000, help="env steps to train for")
@@ -147,13 +153,15 @@ def register_single() -> str:
 
 
 def deathmatch(config, args, model):
-    """Two players in the arena (PettingZoo's ``parallel_env``), one policy for both."""
+    """``--agents`` players in ``--level`` (PettingZoo's ``parallel_env``), one policy for
+    all of them."""
     from ray.rllib.core.rl_module.multi_rl_module import MultiRLModuleSpec
     from ray.rllib.core.rl_module.rl_module import RLModuleSpec
     from ray.tune.registry import register_env
     from wallbsp.envs.rllib import multiagent_env
     register_env("wallbsp-deathmatch", multiagent_env)
-    options = {"players": 2, "mode": "deathmatch", "max_tics": args.max_tics,
+    options = {"players": args.agents, "mode": "deathmatch", "max_tics": args.max_tics,
+               "level": args.level, "damage_reward": args.damage_reward,
                "size": args.size, "gray": not args.rgb}
     return (config.environment("wallbsp-deathmatch", env_config=options)
             .multi_agent(policies={"shared"}, policy_mapping_fn=shared_policy)
