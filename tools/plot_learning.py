@@ -35,7 +35,8 @@ def source(config: dict) -> str:
     """The group of a run: ViZDoom, wallbsp with the weapon drawn, or wallbsp without."""
     if config.get("vizdoom"):
         return "ViZDoom"
-    return "wallbsp, weapon" if config.get("weapon") else "wallbsp"
+    several = config.get("scenario") == "deathmatch"      # the net game draws no weapon
+    return "wallbsp, weapon" if config.get("weapon") and not several else "wallbsp"
 
 
 def smoothed(values: np.ndarray, window: int = 5) -> np.ndarray:
