@@ -187,6 +187,7 @@ def test_the_automap_shows_things_as_doom_does_with_iddt(opened):
     from wallbsp.app.automap import COLOURS
     walk = opened(things_tree())
     walk.display = pygame.display.set_mode((640, 400))
+    walk.map_zoom = 1.0                      # zoomed out to the whole level (colour_near's)
     shown = [(200, 24), (160, 100), (230, 100), (24, 104)]   # monster, medikit, key, barrel
     pygame.event.post(pygame.event.Event(pygame.KEYDOWN, key=pygame.K_TAB, mod=0))
     frames(walk, 1)
@@ -212,7 +213,7 @@ def test_a_thing_picked_up_leaves_the_automap(opened):
     from wallbsp.app.automap import COLOURS
     walk = opened(things_tree())
     walk.display = pygame.display.set_mode((640, 400))
-    walk.show_map, walk.map_cheat = True, 2
+    walk.show_map, walk.map_cheat, walk.map_zoom = True, 2, 1.0   # the whole level
     set_health(walk.world, 50)
     walk.world.place_player(160, 60, 90)
     frames(walk, 1)

@@ -17,7 +17,7 @@ from wallbsp.game.world import World
 from wallbsp.level.io import level_from_dict
 from test_wad import FREEDOOM
 
-TABLES = game_tables(content.classes_of(mod))
+TABLES = game_tables(mod.CLASSES)
 needs_freedoom = pytest.mark.skipif(not (FREEDOOM / "freedoom1.wad").exists(),
                                     reason="Freedoom not installed")
 
@@ -132,7 +132,7 @@ def test_the_monster_sees_chases_attacks_and_dies():
     assert spitter.target is player.mo           # it saw the player
     assert moved                                 # chased
     assert balls >= 2 and player.health < 100    # spat (two balls at once) and hit
-    for _ in range(300):                         # the pistol, aimed by DOOM's autoaim
+    for _ in range(600):                         # the pistol, aimed by DOOM's autoaim
         world.tic(ticcmd(fire=True))
         if spitter.health <= 0:
             break
@@ -143,32 +143,91 @@ def test_the_monster_sees_chases_attacks_and_dies():
     assert world.kills[0] == 1
 
 
-def test_the_weapon_is_picked_up_fires_and_uses_ammo():
-    world = World(room([(-448 + 64, 0, 30002), (200, 0, 30003)]), skill=3, tables=TABLES)
-    player = world.play.players[0]
-    blaster = TABLES.types[mod.Blaster]
-    for _ in range(20):
+def _big_ammo_number(play, player):
+    """The status bar's big ammunition number, read back from the digits it draws."""
+    from wallbsp.screen.statusbar import ST_AMMOX, ST_AMMOY, bar_patches
+    digits = sorted((x, name[-1]) for name, x, y in bar_patches(play, player, 0, lambda n: 14)
+                    if name[:6] == "STTNUM" and name[-1].isdigit() and y == ST_AMMOY
+                    and ST_AMMOX - 3 * 14 <= x < ST_AMMOX)
+    return int("".join(d for _, d in digits)) if digits else None
+
+
+def test_a_weapon_with_its_own_ammo_is_picked_up_fires_and_uses_it():
+    """The blaster shoots gel, the example game's own ammunition (content.Ammo): numbered
+    after DOOM's, shown by the status bar, picked up in cans, raised by a backpack and
+    filled by idkfa."""
+    world = World(room([(-448 + 64, 0, 30002), (-448 + 100, 0, 30003), (200, 0, 30004)]),
+                  skill=3, tables=TABLES)
+    play, player = world.play, world.play.players[0]
+    blaster, gel = TABLES.types[mod.Blaster], content.ammo_number(TABLES, mod.Gel)
+    assert gel == info.am_noammo + 1 and TABLES.weaponinfo[blaster].ammo == gel
+    assert len(player.ammo) == gel + 1 and player.maxammo[gel] == 100
+    for _ in range(30):
         world.tic(ticcmd(forward=0.5))
     assert player.weaponowned[blaster]
-    assert [text for _, text in world.messages] == ["You got the blaster!"]
-    cells = player.ammo[info.am_cell]
-    assert cells == 40                           # DOOM's two clip loads of cells
+    assert [text for _, text in world.messages] == ["You got the blaster!",
+                                                    "Picked up a can of gel."]
+    assert player.ammo[gel] == 2 * 20 + 20       # the blaster's two clips, the can's one
+    assert player.ammo[:4] == [50, 0, 0, 0]      # DOOM's own untouched: the pistol's 50
     for _ in range(30):
         world.tic(ticcmd())
-    assert player.readyweapon == blaster
+    assert player.readyweapon == blaster and _big_ammo_number(play, player) == 60
     for _ in range(13):
         world.tic(ticcmd(fire=True))
-    assert player.ammo[info.am_cell] == cells - 2 * 1 - 2   # two shots, two cells each
+    assert player.ammo[gel] == 60 - 2 * 2        # two shots, two gel each
+    assert _big_ammo_number(play, player) == 56
     assert any(mo is not None and mo.type == TABLES.types[mod.SpitBall]
                and mo.target is player.mo for mo in world.state.things.mobjs)
-    player.ammo[info.am_cell] = 1                # less than a shot: DOOM changes weapon
+    player.ammo[gel] = 1                         # less than a shot: DOOM changes weapon
     for _ in range(30):
         world.tic(ticcmd(fire=True))
-    assert player.readyweapon != blaster
+    assert player.readyweapon != blaster and player.ammo[gel] == 1
+    backpack = play.p_spawn_mobj(player.mo.x, player.mo.y, info.ONFLOORZ, info.MT_MISC24)
+    play.p_touch_special_thing(backpack, player.mo)
+    assert player.maxammo[gel] == 200 and player.ammo[gel] == 21 and player.backpack
+    assert player.maxammo[:4] == [400, 100, 600, 100]
+
+
+def test_idkfa_fills_a_games_own_ammo_and_gives_its_weapons():
+    from types import SimpleNamespace
+    from wallbsp.app.cheats import apply_cheat
+    world = World(room([]), skill=3, tables=TABLES)
+    said = []
+    walk = SimpleNamespace(world=world, hud=SimpleNamespace(say=said.append))
+    apply_cheat(walk, "idkfa")
+    player = world.play.players[0]
+    gel = content.ammo_number(TABLES, mod.Gel)
+    assert player.ammo[gel] == 100 and player.ammo[:4] == [200, 50, 300, 50]
+    assert player.weaponowned[TABLES.types[mod.Blaster]] and all(player.weaponowned[:9])
+    assert said == ["Very Happy Ammo Added"]
+
+
+def test_bad_ammo_is_one_line():
+    class Goo(content.Ammo):
+        clip, max_amount = 50, 10
+        states = "Spawn: GOOA A -1\n stop"
+
+    class Cell(content.Ammo):
+        states = "Spawn: GOOA A -1\n stop"
+
+    class Squirter(mod.Blaster):
+        ammo = "goop"
+    with pytest.raises(ContentError, match="Goo: ammo: 0 < clip <= max_amount"):
+        game_tables([Goo])
+    with pytest.raises(ContentError, match="ammo name 'cell' is taken"):
+        game_tables([Cell])
+    with pytest.raises(ContentError, match="Squirter: ammo 'goop'"):
+        game_tables([Squirter])
+
+    class Crate(content.Item):
+        ammo = 5
+        states = "Spawn: GOOA A -1\n stop"
+    with pytest.raises(ContentError, match="Crate: ammo 5: a dictionary"):
+        game_tables([Crate])
 
 
 def test_an_item_gives_what_it_declares():
-    world = World(room([(-448 + 100, 0, 30003)]), skill=3, tables=TABLES)
+    world = World(room([(-448 + 100, 0, 30004)]), skill=3, tables=TABLES)
     player = world.play.players[0]
     player.health = player.mo.health = 148
     for _ in range(30):

@@ -4,12 +4,15 @@ changed, vertices, lines and sectors deleted, undo and redo.  Every accepted edi
 level that loads without warnings (no crossing or overlapping walls), has every sector
 closed and every wall's sides facing the sectors that are there, and compiles to a valid
 tree; a refused edit changes nothing; undo gives back the exact level (identical JSON) and
-redo the exact edit."""
+redo the exact edit.  A tree brought up to date after each edit (``bsp.rebuild``, only the
+subtrees the edit reached rebuilt) is valid and locates points as a fresh compile does."""
 import math
 
+import numpy as np
 from hypothesis import HealthCheck, given, settings, strategies as st
 
 import wallbsp
+from wallbsp.bsp.rebuild import update_tree
 from wallbsp.edit import Editor, EditError
 from wallbsp.edit.checks import unclosed_sectors
 from wallbsp.edit.locate import beside, sector_at
@@ -159,3 +162,32 @@ def test_random_edits_keep_the_level_sound_and_undo_is_exact(steps):
         tree = wallbsp.compile_level(ed.level)
         tree.validate()
         assert not [p for p in problems(ed.level, tree) if p[0] in ("unclosed", "crossing")]
+
+
+def same_sectors(tree, fresh, level, count=100, seed=0):
+    """Random points (never exactly on a wall: floats) locate into the same sector."""
+    rng = np.random.default_rng(seed)
+    xy = np.array(level.vertices, np.float64).reshape(-1, 2)
+    lo, hi = xy.min(axis=0) - 40, xy.max(axis=0) + 40
+    for x, y in rng.uniform(lo, hi, (count, 2)).tolist():
+        assert tree.locate(x, y) == fresh.locate(x, y), (x, y)
+
+
+@settings(max_examples=20, deadline=None, suppress_health_check=[HealthCheck.too_slow])
+@given(st.lists(step, min_size=1, max_size=8))
+def test_a_tree_updated_after_each_edit_is_valid_and_locates_as_a_fresh_one(steps):
+    ed = Editor()
+    ed.draw_rectangle(0, 0, 256, 256)
+    ed.draw_rectangle(64, 64, 128, 160)
+    tree = wallbsp.compile_level(ed.level, candidates=2)
+    for kind, args in steps:
+        try:
+            apply(ed, kind, args)
+        except EditError:
+            continue
+        if not ed.level.walls:
+            continue
+        tree, kept = update_tree(tree, ed.level, candidates=2)
+        tree.validate()
+        assert 0 <= kept <= tree.node_count
+        same_sectors(tree, wallbsp.compile_level(ed.level), ed.level)

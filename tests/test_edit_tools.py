@@ -156,3 +156,58 @@ def test_a_wad_map_opens_edits_and_stays_sound():
     room = ed.draw_rectangle(max(xs) + 64, 0, max(xs) + 256, 192)
     assert ed.version == 2 and ed.pick(max(xs) + 160, 96, "sectors") == room
     assert {w for kind, w, _ in ed.problems() if kind == "unclosed"} == unclosed
+
+
+@pytest.mark.skipif(not os.path.exists(FREEDOOM2), reason="needs Freedoom")
+def test_a_wad_maps_tree_is_updated_after_edits_keeping_what_they_did_not_reach():
+    """MAP01: each edit's tree brought up to date from the one before (the compiler's
+    incremental path) is valid, keeps most nodes, and locates as a fresh compile does."""
+    import random
+    import wallbsp
+    ed = Editor.open(f"{FREEDOOM2}:MAP01")
+    done = compile_now(ed.level, ed.version)
+    xs = [v[0] for v in ed.level.vertices]
+    edits = [lambda: ed.set_sector([3], floor=ed.level.sectors[3].floor + 8),
+             lambda: ed.draw_rectangle(max(xs) + 64, 0, max(xs) + 256, 192),
+             lambda: ed.move(ed.select("vertices", ed.level.walls[40].v1), 8, 0),
+             lambda: ed.delete(ed.select("sectors", 5))]
+    rng = random.Random(5)
+    x0, y0, x1, y1 = (min(xs), min(v[1] for v in ed.level.vertices),
+                      max(xs), max(v[1] for v in ed.level.vertices))
+    for edit in edits:
+        edit()
+        before = done.tree.node_count
+        done = compile_now(ed.level, ed.version, previous=done)
+        done.tree.validate()
+        assert done.kept > before // 2
+        fresh = wallbsp.compile_level(ed.level)
+        for _ in range(300):
+            x, y = rng.uniform(x0, x1 + 256), rng.uniform(y0, y1)
+            assert done.tree.locate(x, y) == fresh.locate(x, y), (x, y)
+
+
+@pytest.mark.skipif(not os.path.exists(FREEDOOM2), reason="needs Freedoom")
+def test_problems_found_again_only_for_what_an_edit_changed_are_a_fresh_search():
+    """problems() keeps each kind's answer while the level parts it reads are the same
+    objects; after each edit its answer is the one a level of fresh copies gives."""
+    import dataclasses
+    from wallbsp.edit.problems import problems
+    ed = Editor.open(f"{FREEDOOM2}:MAP01")
+    sector = ed.level.walls[0].front
+    edits = [lambda: ed.set_sector([sector], floor=ed.level.sectors[sector].floor + 64),
+             lambda: ed.set_sector([sector], ceiling=ed.level.sectors[sector].floor + 8),
+             lambda: ed.set_thing([0], x=ed.level.vertices[ed.level.walls[0].v1][0]),
+             lambda: ed.move(ed.select("vertices", ed.level.walls[7].v1), 1, 0),
+             lambda: ed.set_line([3], front_side={"middle": None})]
+    kinds = set()
+    for edit in edits:
+        before = problems(ed.level)
+        edit()
+        level = ed.level
+        copies = dataclasses.replace(level, walls=list(level.walls),
+                                     vertices=list(level.vertices),
+                                     sectors=list(level.sectors), things=tuple(level.things))
+        again = problems(level)
+        assert again == problems(copies)
+        kinds |= {k for k, _, _ in again} ^ {k for k, _, _ in before}
+    assert kinds            # the edits changed what is found

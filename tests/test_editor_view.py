@@ -116,7 +116,7 @@ ends = st.integers(-300, 400)
 
 @settings(max_examples=150, deadline=None)
 @given(ends, ends, ends, ends)
-def test_numpy_lines_are_the_segment_clipped_to_the_window(x1, y1, x2, y2):
+def test_drawn_lines_are_the_segment_clipped_to_the_window(x1, y1, x2, y2):
     """Every pixel drawn lies on the segment (within half a pixel's diagonal) and inside the
     surface; a segment with an end inside has that end's pixel drawn."""
     import numpy as np

@@ -242,9 +242,9 @@ def test_the_tree_overlay_draws_the_partition_of_the_level(session):
     rectangle(session, 0, 0, 512, 512)
     rectangle(session, 128, 128, 256, 256)
     session.compiler = LiveTree(session.editor)
-    overlay = session.compiler.wait()
-    assert overlay.version == session.editor.version
-    assert overlay.stats["walls"] == 8 and overlay.tree.node_count > 0
+    done = session.compiler.wait()
+    assert done.version == session.editor.version
+    assert done.overlay.stats()["walls"] == 8 and done.tree.node_count > 0
     key(pygame.K_n)
     step(session)
     drawn = pygame.surfarray.pixels3d(session.layer.picture)
@@ -350,12 +350,12 @@ def test_a_sectors_leaf_cells_fill_exactly_its_area(session):
     rectangle(session, 0, 0, 512, 512)
     rectangle(session, 128, 128, 256, 256)
     session.compiler = LiveTree(session.editor)
-    overlay = session.compiler.wait()
+    overlay = session.compiler.wait().overlay
     inner = session.editor.pick(192, 192, "sectors", 0)
     outer = session.editor.pick(64, 64, "sectors", 0)
     assert {inner, outer} == {0, 1}
-    assert sum(map(_area, overlay.cells[outer])) == pytest.approx(512 ** 2 - 128 ** 2)
-    assert sum(map(_area, overlay.cells[inner])) == pytest.approx(128 ** 2)
+    assert sum(map(_area, overlay.cells(outer))) == pytest.approx(512 ** 2 - 128 ** 2)
+    assert sum(map(_area, overlay.cells(inner))) == pytest.approx(128 ** 2)
     session.compiler.close()
 
 
@@ -386,19 +386,22 @@ def test_ctrl_e_exports_a_wad_beside_the_level(session, tmp_path, monkeypatch):
     assert len(load_wad_level(tmp_path / "untitled.wad", "MAP01").walls) == 4
 
 
-def test_the_live_tree_after_an_edit_is_a_quick_tree_that_agrees_with_the_default(session):
+def test_the_live_tree_after_an_edit_is_updated_and_agrees_with_a_fresh_compile(session):
     import random
     from wallbsp import compile_level
-    from wallbsp.editor.treeview import LIVE_CANDIDATES, LiveTree
+    from wallbsp.editor.treeview import LiveTree
     rectangle(session, 0, 0, 512, 512)
     rectangle(session, 128, 128, 256, 256)
-    rectangle(session, 512, 64, 768, 320)
-    session.compiler = LiveTree(session.editor)
-    overlay = session.compiler.wait()
+    session.compiler = LiveTree(session.editor, whole_after=None)
+    first = session.compiler.wait()
+    session.editor.draw_rectangle(512, 64, 768, 320)      # against the first room
+    done = session.compiler.wait()
     session.compiler.close()
-    assert overlay.stats["candidates"] == LIVE_CANDIDATES
+    assert first.kept == 0 and 0 < done.kept <= done.tree.node_count
+    assert done.version == session.editor.version
+    done.tree.validate()
     full = compile_level(session.level)
     rng = random.Random(3)
     for _ in range(300):
         x, y = rng.uniform(-50, 800), rng.uniform(-50, 560)
-        assert overlay.tree.locate(x, y) == full.locate(x, y), (x, y)
+        assert done.tree.locate(x, y) == full.locate(x, y), (x, y)

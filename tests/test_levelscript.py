@@ -18,7 +18,7 @@ def on_start(level):
 def on_line_crossed(level, line, thing):
     if line.tag == 7 and thing is level.player.mo:
         level.open_door(7)
-        level.after(3, lambda level: level.print("The door opens."))
+        level.after(3, level.print, "The door opens.")
 '''
 
 
@@ -77,10 +77,13 @@ def test_without_the_script_the_door_stays_shut(tmp_path):
 
 def test_timers_floors_and_the_end(tmp_path):
     script = '''
+def heal(level, points):
+    level.give("health", points)
+
 def on_start(level):
-    level.every(10, lambda level: level.give("health", 1))
-    level.after(5, lambda level: level.move_floor(7, 16, speed=2))
-    level.after(60, lambda level: level.end())
+    level.every(10, heal, 1)
+    level.after(5, level.move_floor, 7, 16, 2)
+    level.after(60, level.end)
 
 def on_exit(level):
     level.world.script_exited = level.tic
@@ -120,3 +123,157 @@ def test_the_command_line_says_a_bad_script_in_one_line_and_exits_2(tmp_path, ca
     err = capsys.readouterr().err
     assert code == 2 and err.strip().count("\n") == 0
     assert "door.py: line 2: AttributeError" in err and "Traceback" not in err
+
+
+COUNTDOWN_SCRIPT = '''
+def count_down(level, step):
+    level.state["left"] -= step
+    if level.state["left"] == 0:
+        level.open_door(7)
+        level.print("Time is up: the door opens.")
+
+def on_start(level):
+    level.print("Wait for it.")
+    level.state.update(left=5, seen=[], flags={"half": False})
+    level.every(20, count_down, 1)
+    level.after(70, level.print, "Halfway.")
+
+def on_tic(level):
+    if level.tic % 25 == 0:
+        level.state["seen"].append(level.tic)
+    if level.tic == 70:
+        level.state["flags"]["half"] = True
+'''
+
+
+def _saved_midway(tmp_path, script=COUNTDOWN_SCRIPT, tics=45):
+    from wallbsp.game.playsim.savegame import save_game
+    tree = door_level(tmp_path, script)
+    world = World(tree, skill=3)
+    for _ in range(tics):
+        world.tic(ticcmd(turn=1.0))
+    return tree, world, save_game(world.play)
+
+
+def _loaded(tree, data):
+    from wallbsp.game.playload import world_play_class
+    from wallbsp.game.playsim.savegame import load_game
+    play = load_game(data, None, cls=world_play_class(), level=(tree.level, tree))
+    return World(tree, skill=3, play=play)
+
+
+def test_a_scripted_level_saved_midway_goes_on_as_if_never_saved(tmp_path):
+    """The script's state (a counter, a list, a flag), its clock and its pending timers
+    (a repeating one with an argument, a level function's) are in the save: the loaded
+    game's door opens on the same tic, its messages and state are the same."""
+    from wallbsp.game.playsim.trace import trace_line
+    tree, world, data = _saved_midway(tmp_path)
+    assert world.script.level.state["left"] == 3            # two counts down so far
+    loaded = _loaded(tree, data)
+    assert loaded.script.level.state == world.script.level.state
+    assert loaded.script.level.tic == world.script.level.tic == 45
+    before = len(world.messages)
+    door_open = None
+    for n in range(120):
+        cmd = ticcmd(turn=1.0)
+        world.tic(cmd)
+        loaded.tic(cmd)
+        assert trace_line(loaded.play) == trace_line(world.play), f"tic {n + 1}"
+        assert loaded.play.sectors[2].ceilingheight == world.play.sectors[2].ceilingheight
+        if door_open is None and world.play.sectors[2].ceilingheight:
+            door_open = 45 + n + 1
+    assert door_open == 101                       # 5 counts of 20 tics, after the save
+    texts = [text for _, text in loaded.messages]
+    assert texts == [text for _, text in list(world.messages)[before:]] == [
+        "Halfway.", "Time is up: the door opens."]          # no second "Wait for it."
+    assert loaded.script.level.state == world.script.level.state == {
+        "left": -3, "seen": [25, 50, 75, 100, 125, 150], "flags": {"half": True}}
+
+
+def test_a_level_started_again_starts_its_script_afresh(tmp_path):
+    tree, world, _ = _saved_midway(tmp_path)
+    world.play.p_damage_mobj(world.play.players[0].mo, None, None, 10000)
+    for _ in range(40):
+        world.tic(ticcmd(use=True))
+    level = world.script.level
+    assert level.state["left"] == 5 - level.tic // 20 and level.tic < 40
+    assert [text for _, text in world.messages][-1] == "Wait for it."
+
+
+@pytest.mark.parametrize("line, message", [
+    ("level.after(5, lambda level: None)", "line 3: ValueError: a timer's function is saved"),
+    ("level.every(5, level.print, {1})", "line 3: ValueError: a timer's arguments .* set"),
+])
+def test_a_timer_a_save_cannot_name_is_one_line(tmp_path, line, message):
+    with pytest.raises(ScriptError, match=message) as err:
+        World(door_level(tmp_path, f"\ndef on_start(level):\n    {line}\n"), skill=3)
+    assert "\n" not in str(err.value)
+
+
+def test_a_value_no_save_holds_refuses_the_save_in_one_line(tmp_path):
+    from wallbsp.game.playsim.savegame import SaveError, save_game
+    tree, world, _ = _saved_midway(tmp_path)
+    world.script.level.state["seen"] = {1, 2}
+    with pytest.raises(SaveError, match=r"level_script.state\['seen'\]: a set is not a value"):
+        save_game(world.play)
+    world.script.level.state["seen"] = [2 ** 40]
+    with pytest.raises(SaveError, match=r"state\['seen'\]\[0\]: 1099511627776 is not an integ"):
+        save_game(world.play)
+
+
+def _set(key, value):
+    return lambda saved: saved.__setitem__(key, value)
+
+
+@pytest.mark.parametrize("forge, message", [
+    (_set("state", {"d": [["left", "xxx"], ["zz", 1e300]]}), None),
+    (_set("tic", -4), "level_script.tic: -4 is not an integer from 0"),
+    (_set("timers", [[60, 1, 20, "count_down", [{"d": [[1, 2]]}]]]),
+     r"level_script.timers\[0\]\[4\]\[0\]: the key 1 is not a string"),
+    (_set("timers", [[60, 1, 20, "nowhere", []]]), "door.py: the save's timers\\[0\\]: no "
+                                                     "function 'nowhere' in door.py"),
+    (_set("script", "other.py"), "state of level script 'other.py'"),
+])
+def test_a_forged_script_state_in_a_save_is_one_line(tmp_path, forge, message):
+    """A save re-sealed around a forged script state: values beyond what a script saves are
+    one SaveError line; a script state of another script, one line making the World."""
+    import toolscripts
+    from wallbsp.game.playsim.savegame import SaveError
+    hostile = toolscripts.tool_script("hostile")
+    tree, world, data = _saved_midway(tmp_path)
+
+    def change(body):
+        saved = dict(body["globals"]["level_script"]["d"])
+        forge(saved)
+        body["globals"]["level_script"]["d"] = [[k, v] for k, v in saved.items()]
+    forged = hostile.reforge(data, change)
+    if message is None:                  # still JSON values: the world goes on with them
+        assert _loaded(tree, forged).script.level.state["left"] == "xxx"
+        return
+    with pytest.raises((SaveError, ScriptError), match=message) as err:
+        _loaded(tree, forged)
+    assert "\n" not in str(err.value)
+
+
+def test_the_walkthroughs_slots_carry_the_script_and_refuse_a_forged_one(tmp_path):
+    """app.saves: a slot saved mid-way loads with the script's state and timers; a slot
+    whose script state names no function of the script is one SaveError line, and the
+    game in play is untouched."""
+    import toolscripts
+    from wallbsp.app.saves import SaveError, load_world, save_world, slot_path
+    tree, world, data = _saved_midway(tmp_path)
+    save_world(world, tmp_path / "saves", 0, "MIDWAY")
+    loaded = load_world(tmp_path / "saves", 0, world, None)
+    assert loaded.script.level.state == world.script.level.state
+    assert loaded.script.level.saved["timers"] == world.script.level.saved["timers"]
+
+    def rename(body):
+        saved = dict(body["globals"]["level_script"]["d"])
+        saved["timers"] = [[60, 1, 20, "nowhere", []]]
+        body["globals"]["level_script"]["d"] = [[k, v] for k, v in saved.items()]
+    slot_path(tmp_path / "saves", 1).write_bytes(
+        toolscripts.tool_script("hostile").reforge(data, rename))
+    state = dict(world.script.level.state)
+    with pytest.raises(SaveError, match="no function 'nowhere' in door.py") as err:
+        load_world(tmp_path / "saves", 1, world, None)
+    assert "\n" not in str(err.value) and world.script.level.state == state

@@ -96,6 +96,28 @@ def test_doom_two_has_no_episodes_and_backspace_goes_back():
     assert len(Menu(episodes=3).items_of("episode").items) == 3
 
 
+def test_a_games_own_episode_and_skill_names_are_its_menus_rows():
+    """A game folder's names (its manifest's episode and skills) are the rows, written in
+    the font; New Game asks the episode even in Doom II's mode; fewer skills, fewer rows."""
+    menu = Menu(commercial=True, episode_names=("The Spitters",),
+                skill_names=("Mild", "Tangy", "Hot"))
+    menu.open()
+    menu.key("enter")
+    episode = menu.items_of("episode")
+    assert menu.current == "episode" and [(i.patch, i.label) for i in episode.items] == [
+        ("", "The Spitters")]
+    menu.key("enter")
+    skill = menu.menu
+    assert [(i.patch, i.label, i.key) for i in skill.items] == [
+        ("", "Mild", "m"), ("", "Tangy", "t"), ("", "Hot", "h")]
+    assert skill.previous == "episode" and menu.item_on == 2     # DOOM's third, kept in
+    menu.key("t")
+    assert actions(menu.key("enter")) == [NewGame(1, 2)]
+    plain = Menu(commercial=True)                                  # no names: DOOM's
+    assert [i.patch for i in plain.items_of("skill").items] == [
+        "M_JKILL", "M_ROUGH", "M_HURT", "M_ULTRA", "M_NMARE"]
+
+
 def test_load_skips_empty_slots_and_loads_a_used_one():
     slots = [None, "SECOND", None, None, None, None]
     menu = Menu(read_slots=lambda: list(slots))

@@ -6,7 +6,7 @@ from pathlib import Path
 
 import pytest
 
-from wallbsp.doom import info
+from wallbsp import content
 from wallbsp.files import LevelError
 from wallbsp.game.gamefolder import load_game_folder
 from wallbsp.game.ticcmds import ticcmd
@@ -27,12 +27,36 @@ def _blocks(language):
 
 
 def test_the_walkthroughs_code_is_the_example_games():
+    import json
     python = "".join(_blocks("python")[:3])          # actors.py in two parts, then door.py
     actors, door = (GAME / "actors.py").read_text(), (GAME / "door.py").read_text()
-    assert python.startswith(actors.rstrip("\n").split("class Blaster")[0].rstrip("\n"))
-    assert "class Blaster" + actors.split("class Blaster")[1] in python
+    assert python.startswith(actors.split("class Gel")[0].rstrip("\n"))
+    assert "class Gel" + actors.split("class Gel")[1] in python
     assert door in python
-    assert len(actors.splitlines()) + len(door.splitlines()) < 110
+    assert len(actors.splitlines()) + len(door.splitlines()) < 100     # "under a hundred"
+    assert json.loads(_blocks("json")[0]) == json.loads((GAME / "game.json").read_text())
+
+
+def test_the_walkthroughs_countdown_outlasts_a_save(tmp_path):
+    """The page's countdown script, saved after the line is crossed and loaded: the loaded
+    game's door opens on the same tic as the game never saved, after the same messages."""
+    from test_levelscript import _loaded
+    from test_levelscript import door_level
+    from wallbsp.game.playsim.savegame import save_game
+    tree = door_level(tmp_path, _blocks("python")[3])
+    world = World(tree, skill=3)
+    for _ in range(80):                            # across the line (x = -256) and on
+        world.tic(ticcmd(forward=1.0 if world.play.players[0].mo.x >> 16 < -200 else 0.0))
+    assert world.script.level.state["left"] == 4
+    loaded = _loaded(tree, save_game(world.play))
+    opened = {}
+    for n in range(200):
+        for name, w in (("saved", world), ("loaded", loaded)):
+            w.tic(ticcmd())
+            if w.play.sectors[2].ceilingheight and name not in opened:
+                opened[name] = n
+    assert opened["saved"] == opened["loaded"] and 35 * 3 < opened["saved"] < 35 * 5
+    assert [t for _, t in loaded.messages] == ["3...", "2...", "1..."]
 
 
 def _of(world, game, name):
@@ -55,10 +79,12 @@ def test_the_example_plays_as_the_walkthrough_says(game):
     blaster = game.tables.types[next(c for c in game.classes if c.__name__ == "Blaster")]
     assert player.weaponowned[blaster] and door.ceilingheight > door.floorheight
     texts = [text for _, text in world.messages]
-    assert texts[:3] == ["Take the blaster and cross into the hall.", "You got the blaster!",
-                         "The door grinds open..."]
+    assert texts[:4] == ["Take the blaster and cross into the hall.", "You got the blaster!",
+                         "Picked up a can of gel.", "The door grinds open..."]
     start = {id(mo): (mo.x, mo.y) for mo in spitters}
-    cells = player.ammo[info.am_cell]
+    gel = content.ammo_number(game.tables, "gel")
+    cells = player.ammo[gel]
+    assert cells == 60 and player.ammo[:4] == [50, 0, 0, 0]       # gel: the game's own
     tics = 0
     while tics < 35 * 60 and world.exited is None and player.health > 0:
         world.tic(ticcmd(fire=True))                   # stand and fire the blaster
@@ -66,11 +92,11 @@ def test_the_example_plays_as_the_walkthrough_says(game):
     assert all(mo.target is player.mo for mo in spitters)              # they saw the player
     assert any((mo.x, mo.y) != start[id(mo)] for mo in spitters)       # and chased
     assert player.health < 100 or player.armorpoints                   # their spit hurt
-    assert player.ammo[info.am_cell] < cells                           # the blaster fired
-    assert (cells - player.ammo[info.am_cell]) % 2 == 0                # two cells a shot
+    assert player.ammo[gel] < cells                                    # the blaster fired
+    assert (cells - player.ammo[gel]) % 2 == 0                         # two gel a shot
     assert all(mo.health <= 0 for mo in spitters) and player.health > 0      # they died
     assert world.exited == "normal"                    # and the script ended the level
-    assert [text for _, text in world.messages][3:] == ["The hall is quiet."]
+    assert [text for _, text in world.messages][4:] == ["The hall is quiet."]
 
 
 def test_a_broken_game_folder_is_one_line(tmp_path):
@@ -130,3 +156,38 @@ def test_wallbsp_walk_plays_a_game_folder(capsys, tmp_path):
     (tmp_path / "game.json").write_text('{"maps": ["x.json"]}')
     assert main(["walk", str(tmp_path), "--frames", "1", "--nosound"]) == 2
     assert "maps[0]: no level file 'x.json'" in capsys.readouterr().err
+
+
+def test_the_menus_and_the_intermission_name_the_games_own(tmp_path, monkeypatch):
+    """New Game shows the manifest's episode and skills (DOOM's M_Episode and M_Skill rows
+    in the font), starts the game's first map at the skill chosen; a map's manifest title
+    is its name in the intermission."""
+    import json
+    monkeypatch.setenv("SDL_VIDEODRIVER", "dummy")
+    pygame = pytest.importorskip("pygame")
+    from wallbsp.app import walkthrough as wt
+    from wallbsp.app.controls import press
+    from wallbsp.app.gameflow import GameFlow
+    for name in ("actors.py", "door.py", "map01.json"):
+        (tmp_path / name).write_text((GAME / name).read_text())
+    manifest = json.loads((GAME / "game.json").read_text())
+    manifest["maps"] = [{"level": "map01.json", "title": "The Hall"},
+                        {"level": "map01.json", "title": "The Hall Again"}]
+    (tmp_path / "game.json").write_text(json.dumps(manifest))
+    game = load_game_folder(tmp_path)
+    walk = wt.Walkthrough.at_start(game.tree(0), (320, 200), (320, 200), 3, next_level=game,
+                                   world=World(game.tree(0), 3, tables=game.tables))
+    flow = walk.overlay = GameFlow(walk, wt.start_level, tmp_path / "saves")
+    for code in (pygame.K_ESCAPE, pygame.K_RETURN):
+        press(walk, code)
+    assert [item.label for item in flow.menu.menu.items] == ["The Spitters"]
+    press(walk, pygame.K_RETURN)
+    assert [item.label for item in flow.menu.menu.items] == [
+        "Mild", "Tangy", "Spicy", "Hot", "Inferno"]
+    game.next_level("normal")                          # on the second map: a new game
+    press(walk, ord("t"))                              # starts the first again
+    press(walk, pygame.K_RETURN)
+    assert walk.world.skill == 2 and walk.world.tables is game.tables
+    assert walk.world.level.name == "The Hall" and game.current == 0
+    walk.world.exited = "normal"
+    assert flow.level_left(walk) and flow.names == ("The Hall", "The Hall Again")

@@ -405,13 +405,13 @@ def test_with_the_automap_up_minus_and_equals_zoom_it_around_the_player(opened):
     key(pygame.K_EQUALS)
     key(pygame.K_EQUALS)
     frames(walk, 1)
-    assert walk.statusbar and walk.map_zoom == pytest.approx(2.25)
+    assert walk.statusbar and walk.map_zoom == pytest.approx(2.25 / 0.7)   # from DOOM's 1/0.7
     width, height = hud.map_area(walk)
     shown = pygame.surfarray.array3d(walk.display)
     centre = shown[width // 2 - 4:width // 2 + 5, height // 2 - 4:height // 2 + 5]
     assert (centre == COLOURS["player"]).all(axis=-1).any()        # the arrow is centred
     whole = hud.map_view(walk, (width, height))
-    assert whole.scale == pytest.approx(2.25 * hud.MapView.centred(
+    assert whole.scale == pytest.approx(2.25 / 0.7 * hud.MapView.centred(
         hud.level_bounds(walk.tree), (width, height)).scale)
     for _ in range(3):
         key(pygame.K_MINUS)

@@ -5,7 +5,8 @@ drawn and synthesised here with numpy (tools/spritekit.py), nothing copied:
 - ``sprites/SPITxx.png``: the spitter, a squat green creature with a wide mouth (A-D
   walking, E-F spitting, G-J dying), one picture for every rotation (``0``);
 - ``sprites/SPBLxx.png``: its spit ball (A-B) and the splash (C-E);
-- ``sprites/BLSPA0.png``: the blaster lying on the floor;
+- ``sprites/BLSPA0.png``: the blaster lying on the floor; ``sprites/GELAA0.png``: a can of
+  its gel;
 - ``hud/BLSGA.png`` .. ``BLSGC.png``: the blaster in the player's hands (C: firing);
 - ``sounds/DSSPITSI.wav`` (the spitter's sight gurgle), ``sounds/DSSPITFI.wav`` (a spit).
 
@@ -90,6 +91,15 @@ def blaster_floor():
     return sk.outline(pic)
 
 
+def gel_can():
+    """A squat purple can with a glowing green window (the blaster's ammunition)."""
+    pic = sk.canvas(16, 20)
+    sk.box(pic, 2, 4, 14, 20, (110, 60, 140))
+    sk.box(pic, 4, 1, 12, 4, (60, 60, 70))
+    sk.ellipse(pic, 8, 12, 3, 4, SPIT)
+    return sk.outline(pic)
+
+
 def blaster_hud(fire=0.0):
     w, h = 96, 72
     pic = sk.canvas(w, h)
@@ -114,6 +124,7 @@ def pictures():
     out.update({"sprites/SPBLA0.png": ball(5), "sprites/SPBLB0.png": ball(6),
                 "sprites/SPBLC0.png": ball(4, 0.3), "sprites/SPBLD0.png": ball(7, 0.6),
                 "sprites/SPBLE0.png": ball(10, 0.9), "sprites/BLSPA0.png": blaster_floor(),
+                "sprites/GELAA0.png": gel_can(),
                 "hud/BLSGA.png": blaster_hud(), "hud/BLSGB.png": blaster_hud(1.0),
                 "hud/BLSGC.png": blaster_hud(0.5)})
     return {path: np.clip(np.rint(p), 0, 255).astype(np.uint8) for path, p in out.items()}

@@ -21,7 +21,7 @@ import os
 import threading
 from pathlib import Path
 
-__all__ = ["kernel", "step_kernel", "LazyKernel", "compiled_signatures"]
+__all__ = ["kernel", "step_kernel", "LazyKernel", "compiled_signatures", "dispatcher_of"]
 
 _STATE = {"numba": None}
 _LAZY: list = []
@@ -46,9 +46,10 @@ def _jit(function):
 def compiled_signatures() -> dict:
     """``kernel name -> signatures compiled (or loaded from the cache) so far`` in this
     process: a kernel called with new argument types since shows as a new signature (the
-    game's warm-up is checked so: no new one during play)."""
+    game's warm-up is checked so: no new one during play).  A kernel made but never
+    compiled is left out: importing a module is not a compile."""
     return {f"{d.py_func.__module__}.{d.py_func.__qualname__}": len(d.signatures)
-            for d in _MADE}
+            for d in _MADE if d.signatures}
 
 
 class LazyKernel:
@@ -72,6 +73,15 @@ class LazyKernel:
         if self.dispatcher is None:
             _load_numba()
         return getattr(self.dispatcher, name)
+
+
+def dispatcher_of(function):
+    """The numba dispatcher of a kernel (numba loaded if it was not)."""
+    if isinstance(function, LazyKernel):
+        if function.dispatcher is None:
+            _load_numba()
+        return function.dispatcher
+    return function
 
 
 # kernels live in doom/, scene/ and render/, which never import these folders (tests/test_layout.py)

@@ -1,5 +1,4 @@
-"""Spitter Hall's script: the hall's door opens when the player crosses the line in the
-first room, and the level ends once every spitter is dead."""
+"""Spitter Hall's script: the hall's door opens as its line is crossed; the end, when quiet."""
 
 
 def on_start(level):
@@ -14,4 +13,4 @@ def on_line_crossed(level, line, thing):
 def on_killed(level, target, source):
     if target.player is None and level.player.killcount == level.play.totalkills:
         level.print("The hall is quiet.")
-        level.after(35 * 3, lambda level: level.end())
+        level.after(35 * 3, level.end)

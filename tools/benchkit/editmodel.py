@@ -6,19 +6,21 @@ commands and the background compile, each beside a plain peer in the same run.
 - ``pick``: ``Editor.pick`` (a grid of cells) at 2,000 random points in lines and vertices
   mode, against the same answer by numpy over every wall or vertex (the peer); sectors
   mode (a ray to the nearest wall) against ``BSPTree.locate``;
-- ``commands``: one command's wall-clock time, median of runs each undone before the next:
+- ``commands``: one command's wall-clock and CPU time, median of runs each undone before the next:
   a room drawn in the void, a room drawn inside a sector (nested), a vertex moved, a
   sector's floor raised, a sector deleted; and undo;
-- ``compile``: ``compile_now`` (the compiler, the problems, the overlay's clipped partition
-  lines) — what the window waits for after an edit — with its parts;
+- ``compile``: ``compile_now`` of the whole level (the compiler, the problems, the
+  overlay's clipped partition lines), with its parts;
 - ``partitions``: the overlay's clipped partition lines (one numpy step per tree level)
   against clipping each cell's polygon in Python (the peer);
-- ``live``: what the window's worker does after an edit (a floor raised) before the new tree
-  is shown — the quick tree (``LIVE_CANDIDATES``), the problems, the window's overlay — as
-  CPU seconds of this thread (``time.process_time``: the machine is shared) and wall seconds;
-  beside it the default tree the same way, and the window's old path (the default tree, the
-  overlay's partitions clipped twice, ``tree.stats()`` with its level hash, every leaf's
-  cell) as the peer.
+- ``live``: what the window's worker does after an edit before the new tree is shown —
+  ``compile_now`` from the tree before (``bsp.rebuild.update_tree``: only the subtrees the
+  edit reached rebuilt) with the problems — for each edit of ``commands``, as CPU seconds
+  of this process (``time.process_time``: the machine is shared) and wall seconds, with the
+  nodes kept; beside it ``compile_now`` of the whole level the same way (the peer: what
+  the window did before);
+- ``fresh_s``: the slowest edit's command plus its ``live`` update: how soon the tree and
+  problems are fresh after an edit (``fresh_cpu_s`` the same in CPU seconds).
 
 Targets (issue 29): pick ≤ 2 ms; the tree and problems fresh ≤ 0.5 s after an edit.
 """
@@ -42,12 +44,16 @@ def main(argv=None) -> int:
     return run_script(parser, run, "edit", section, argv=argv)
 
 
-def _median_ms(calls) -> float:
-    times = []
+def _median_ms(calls, cpu=None) -> float:
+    """Median wall-clock ms of the calls (``cpu``: a list given the median CPU ms)."""
+    times, cpus = [], []
     for call in calls:
-        t = time.perf_counter()
+        t, c = time.perf_counter(), time.process_time()
         call()
         times.append(time.perf_counter() - t)
+        cpus.append(time.process_time() - c)
+    if cpu is not None:
+        cpu.append(round(1000 * statistics.median(cpus), 4))
     return round(1000 * statistics.median(times), 4)
 
 
@@ -77,23 +83,24 @@ def run(args) -> dict:
     result["commands"] = _commands(ed, 2 if args.quick else 5)
     runs = 1 if args.quick else 3
     parts = {"compile_s": lambda: compile_level(level),
-             "problems_s": lambda: problems(level, tree),
+             "problems_s": lambda: (forget_problems(), problems(level, tree)),
              "partitions_s": lambda: TreeOverlay(tree).partitions()}
     result["compile"] = {name: round(_median_ms([f] * runs) / 1000, 3) for name, f in parts.items()}
     result["compile"]["compile_now_s"] = round(
-        _median_ms([lambda: compile_now(level)] * runs) / 1000, 3)
+        _median_ms([lambda: (forget_problems(), compile_now(level))] * runs) / 1000, 3)
     result["partitions"] = {
         "fast_s": result["compile"]["partitions_s"],
         "per_cell_peer_s": round(_median_ms([lambda: _per_cell(tree)]) / 1000, 3)}
-    result["live"] = _live(ed, runs)
-    fresh = result["commands"]["raise_floor_ms"] / 1000 + result["live"]["quick_s"]
-    result["fresh_s"] = round(fresh, 3)
-    result["fresh_cpu_s"] = round(result["commands"]["raise_floor_ms"] / 1000
-                                  + result["live"]["quick_cpu_s"], 3)
+    result["live"] = _live(ed, _edits(ed), runs)
+    commands = result["commands"]
+    result["fresh_s"] = round(max(commands[f"{name}_ms"] / 1000 + row["update_s"]
+                                  for name, row in result["live"].items()), 3)
+    result["fresh_cpu_s"] = round(max(commands[f"{name}_cpu_ms"] / 1000 + row["update_cpu_s"]
+                                      for name, row in result["live"].items()), 3)
     result["meets_targets"] = {
         "pick_ms": max(result["pick"]["lines_ms"], result["pick"]["vertices_ms"],
                        result["pick"]["sectors_ms"]) <= TARGETS["pick_ms"],
-        "fresh_s": fresh <= TARGETS["fresh_s"],
+        "fresh_s": result["fresh_s"] <= TARGETS["fresh_s"],
         "fresh_cpu_s": result["fresh_cpu_s"] <= TARGETS["fresh_s"]}
     return result
 
@@ -127,65 +134,75 @@ def _picks(ed, points, seg, xy, tree) -> dict:
     return out
 
 
-def _commands(ed, runs: int) -> dict:
+def forget_problems():
+    """Make ``problems()`` look for every kind afresh: its kept answers are replaced by
+    an empty level's."""
+    from wallbsp.edit import empty_level
+    from wallbsp.edit.problems import problems
+    problems(empty_level("nothing"))
+
+
+def _edits(ed) -> dict:
+    """The edits measured: name -> a call making it (each is undone after)."""
     level = ed.level
     xs = [v[0] for v in level.vertices]
     big = max(range(len(level.sectors)), key=lambda s: sum(
         1 for w in level.walls if s in (w.front, w.back)))
-    inside = next(p for p in _grid_points(level) if ed.pick(*p, "sectors") is not None)
+    x0, y0 = next(p for p in _grid_points(level) if ed.pick(*p, "sectors") is not None)
     v = level.walls[0].v1
+    return {
+        "draw_in_void": lambda: ed.draw_rectangle(max(xs) + 256, 0, max(xs) + 512, 256),
+        "draw_nested": lambda: ed.draw_rectangle(x0 - 4, y0 - 4, x0 + 4, y0 + 4),
+        "move_vertex": lambda: ed.move(ed.select("vertices", v), 1, 0),
+        "raise_floor": lambda: ed.set_sector([big], floor=level.sectors[big].floor + 8),
+        "delete_sector": lambda: ed.delete(ed.select("sectors", big)),
+    }
 
+
+def _commands(ed, runs: int) -> dict:
     def undone(call):
         def go():
             call()
             ed.undo()
         return go
-    x0, y0 = inside
-    calls = {
-        "draw_in_void_ms": lambda: ed.draw_rectangle(max(xs) + 256, 0, max(xs) + 512, 256),
-        "draw_nested_ms": lambda: ed.draw_rectangle(x0 - 4, y0 - 4, x0 + 4, y0 + 4),
-        "move_vertex_ms": lambda: ed.move(ed.select("vertices", v), 1, 0),
-        "raise_floor_ms": lambda: ed.set_sector([big], floor=level.sectors[big].floor + 8),
-        "delete_sector_ms": lambda: ed.delete(ed.select("sectors", big)),
-    }
-    out = {name: _median_ms([undone(call)] * runs) for name, call in calls.items()}
-    ed.set_sector([big], floor=level.sectors[big].floor + 8)
+    edits = _edits(ed)
+    out = {}
+    for name, call in edits.items():
+        cpu = []
+        out[f"{name}_ms"] = _median_ms([undone(call)] * runs, cpu)
+        out[f"{name}_cpu_ms"] = cpu[0]              # the edit and its undo
+    edits["raise_floor"]()
     out["undo_ms"] = _median_ms([ed.undo])
     return out
 
 
-def _live(ed, runs: int) -> dict:
-    os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")
-    from wallbsp.app.mapview import partition_pieces
+def _live(ed, edits: dict, runs: int) -> dict:
+    """Per edit: the window worker's compile after it, from the tree before, and the
+    whole level's (the peer), in CPU and wall seconds."""
     from wallbsp.edit.compiler import compile_now
-    from wallbsp.edit.overlay import TreeOverlay as PartitionOverlay
-    from wallbsp.editor.treeview import LIVE_CANDIDATES, TreeOverlay, leaf_cells
-
-    def worker(candidates):
-        compiled = compile_now(ed.level, ed.version, candidates)
-        TreeOverlay(compiled.tree, ed.version, compiled.seconds, compiled.problems)
-
-    def old_window():
-        compiled = compile_now(ed.level, ed.version)
-        overlay = TreeOverlay(compiled.tree, ed.version, compiled.seconds, compiled.problems)
-        PartitionOverlay(compiled.tree).partitions()
-        partition_pieces(compiled.tree, overlay.bounds)
-        compiled.tree.stats()
-        leaf_cells(compiled.tree, overlay.bounds)
-
-    out = {"live_candidates": LIVE_CANDIDATES}
-    for name, call in (("quick", lambda: worker(LIVE_CANDIDATES)),
-                       ("default", lambda: worker(None)), ("old_window_peer", old_window)):
-        walls, cpus = [], []
-        for _ in range(runs):
-            ed.set_sector([0], floor=ed.level.sectors[0].floor + 8)    # a new level: cold
-            w, c = time.perf_counter(), time.process_time()
-            call()
-            walls.append(time.perf_counter() - w)
-            cpus.append(time.process_time() - c)
-            ed.undo()
-        out[f"{name}_s"] = round(statistics.median(walls), 3)
-        out[f"{name}_cpu_s"] = round(statistics.median(cpus), 3)
+    from wallbsp.edit.problems import problems
+    level = ed.level
+    before = compile_now(level, ed.version)
+    out = {}
+    for name, call in edits.items():
+        call()
+        row, kept = {}, 0
+        for how, previous in (("update", before), ("whole", None)):
+            walls, cpus = [], []
+            for _ in range(runs if how == "update" else 1):
+                # problems() keeps each kind's last answer: the worker's last was the level
+                # before the edit; the peer (what the window did before) kept none
+                problems(level) if how == "update" else forget_problems()
+                w, c = time.perf_counter(), time.process_time()
+                done = compile_now(ed.level, ed.version, previous=previous)
+                walls.append(time.perf_counter() - w)
+                cpus.append(time.process_time() - c)
+                kept = done.kept if how == "update" else kept
+            row[f"{how}_s"] = round(statistics.median(walls), 3)
+            row[f"{how}_cpu_s"] = round(statistics.median(cpus), 3)
+        row["kept_nodes"], row["nodes"] = kept, before.tree.node_count
+        out[name] = row
+        ed.undo()
     return out
 
 
@@ -210,19 +227,20 @@ def section(result: dict) -> str:
     rows = [["pick a line", f"{p['lines_ms']} ms", f"{p['lines_peer_ms']} ms (numpy, every wall)"],
             ["pick a vertex", f"{p['vertices_ms']} ms", f"{p['vertices_peer_ms']} ms (numpy)"],
             ["pick a sector", f"{p['sectors_ms']} ms", f"{p['sectors_peer_locate_ms']} ms (tree.locate)"],
-            ["draw a room in the void", f"{c['draw_in_void_ms']} ms", ""],
-            ["draw a room inside a sector", f"{c['draw_nested_ms']} ms", ""],
-            ["move a vertex", f"{c['move_vertex_ms']} ms", ""],
-            ["raise a floor", f"{c['raise_floor_ms']} ms", ""],
-            ["delete a sector", f"{c['delete_sector_ms']} ms", ""],
+            ["draw a room in the void", f"{c['draw_in_void_ms']} ms", f"CPU {c['draw_in_void_cpu_ms']} ms"],
+            ["draw a room inside a sector", f"{c['draw_nested_ms']} ms", f"CPU {c['draw_nested_cpu_ms']} ms"],
+            ["move a vertex", f"{c['move_vertex_ms']} ms", f"CPU {c['move_vertex_cpu_ms']} ms"],
+            ["raise a floor", f"{c['raise_floor_ms']} ms", f"CPU {c['raise_floor_cpu_ms']} ms"],
+            ["delete a sector", f"{c['delete_sector_ms']} ms", f"CPU {c['delete_sector_cpu_ms']} ms"],
             ["undo", f"{c['undo_ms']} ms", ""],
             ["compile + problems + overlay", f"{k['compile_now_s']} s",
              f"compile {k['compile_s']} s, problems {k['problems_s']} s, "
              f"partitions {k['partitions_s']} s"],
-            ["fresh tree after an edit (window's worker, CPU)",
-             f"{result['live']['quick_cpu_s']} s ({result['live']['live_candidates']} candidates)",
-             f"default tree {result['live']['default_cpu_s']} s; old window path "
-             f"{result['live']['old_window_peer_cpu_s']} s"],
+            *[[f"tree and problems after: {name.replace('_', ' ')} (CPU / wall)",
+               f"{row['update_cpu_s']} / {row['update_s']} s",
+               f"whole level {row['whole_cpu_s']} / {row['whole_s']} s; "
+               f"{row['kept_nodes']} of {row['nodes']} nodes kept"]
+              for name, row in result["live"].items()],
             ["clipped partition lines", f"{result['partitions']['fast_s']} s",
              f"{result['partitions']['per_cell_peer_s']} s (each cell clipped)"]]
     return ("## The editor's model\n\n`python tools/bench.py edit` on Freedoom MAP12 "
@@ -231,5 +249,6 @@ def section(result: dict) -> str:
             "CPUs while measured (other work shares the machine: the peers, run in the same "
             "process at the same time, are the fair comparison).\n\n"
             + markdown_table(["what", "time", "peer"], rows)
-            + f"\n\nAn edit's tree and problems are fresh {result['fresh_s']} s after it "
-              f"({result['fresh_cpu_s']} s of CPU; target 0.5 s).\n")
+            + f"\n\nAn edit's tree and problems are fresh at most {result['fresh_s']} s after "
+              f"it ({result['fresh_cpu_s']} s of CPU: the slowest edit's command and update; "
+              "target 0.5 s).\n")

@@ -20,9 +20,11 @@ from __future__ import annotations
 
 import argparse
 import json
+import os
 import statistics
 import subprocess
 import sys
+import tempfile
 from pathlib import Path
 
 from . import ROOT
@@ -36,10 +38,12 @@ def load(root):
     trace = importlib.import_module("wallbsp.game.playsim.trace")
     sys.path.remove(root)
     return trace
-def warm(trace):
+def warm(trace, m):
     play, demo = trace.start_demo(W["1"], "DEMO1")
+    frame = drawer(m, play, "1:1")
     for c in demo.tics[:300]:
-        play.g_ticker(c)
+        if play.g_ticker(c) and frame is not None and play.gamestate == 0:
+            frame()
     trace.trace_line(play)
 DRAWN = sys.argv[3] == "drawn"
 def modules():
@@ -63,10 +67,10 @@ def drawer(m, play, s):
                            player.viewz / 65536, (mo.angle & 0xFFFFFFFF) * 360 / 2**32), 320, 200)
     frame()
     return frame
-old = load(sys.argv[1]); warm(old); old_mods = modules()
+old = load(sys.argv[1]); old_mods = modules(); warm(old, old_mods)
 for k in [k for k in sys.modules if k == "wallbsp" or k.startswith("wallbsp.")]:
     sys.modules["old_" + k] = sys.modules.pop(k)
-new = load(sys.argv[2]); warm(new); new_mods = modules()
+new = load(sys.argv[2]); new_mods = modules(); warm(new, new_mods)
 times = {"baseline": {}, "this": {}}
 same = True
 for s in sys.argv[4:]:
@@ -92,12 +96,14 @@ print(json.dumps({"times": times, "traces_equal": same}))
 
 def run_round(baseline: Path, drawn: bool = False) -> dict:
     mode = "drawn" if drawn else "headless"
-    for stale in baseline.glob("wallbsp/game/__pycache__/playthings*.nb[ic]"):
-        # before ee97f12's successors, playthings compiled a generated kernel that numba
-        # caches but cannot load back ("No module named '<dynamic>'"): compile it afresh
-        stale.unlink()
-    out = subprocess.run([sys.executable, "-c", CHILD, str(baseline), str(ROOT), mode, *DEMOS],
-                         check=True, capture_output=True, text=True, cwd="/tmp").stdout
+    with tempfile.TemporaryDirectory(prefix="bench_playsim_kernels.") as cache:
+        # drawn: a kernel cache of its own, compiled in the untimed warm-up (ee97f12's
+        # sim.thingrows.write_rows is cached by numba but fails to load back: "No module
+        # named '<dynamic>'")
+        env = dict(os.environ, NUMBA_CACHE_DIR=cache) if drawn else None
+        out = subprocess.run([sys.executable, "-c", CHILD, str(baseline), str(ROOT), mode,
+                              *DEMOS], check=True, capture_output=True, text=True, cwd="/tmp",
+                             env=env).stdout
     data = json.loads(out.strip().splitlines()[-1])
     times = data["times"]
     return {"tics_per_second": {name: {s: round(n / t) for s, (n, t) in times[name].items()}

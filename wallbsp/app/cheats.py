@@ -5,7 +5,8 @@
 in DOOM).  A finished sequence changes the play as DOOM's does, through the player's own
 fields and cheat flags (``CF_GODMODE``, ``CF_NOCLIP``), and puts DOOM's message up:
 
-- ``iddqd`` god mode (health 100), ``idfa`` all weapons, full ammo, 200 armour (blue),
+- ``iddqd`` god mode (health 100), ``idfa`` all weapons, full ammo (a game's own weapons
+  and ammunition too: ``wallbsp.content``), 200 armour (blue),
   ``idkfa`` the same and every key, ``idclip`` / ``idspispopd`` no clipping,
   ``idchoppers`` the chainsaw and invulnerability, ``idmypos`` the position;
 - ``idclevXY`` a new game on episode X map Y (Doom II and our levels: map XY), at the
@@ -20,7 +21,7 @@ from __future__ import annotations
 import re
 
 from wallbsp.doom import info
-from wallbsp.game.playsim.structs import NUMAMMO, NUMCARDS, NUMWEAPONS
+from wallbsp.game.playsim.structs import NUMCARDS, NUMWEAPONS
 
 __all__ = ["CheatTyper", "CHEATS", "CF_NOCLIP", "CF_GODMODE"]
 
@@ -104,8 +105,10 @@ def apply_cheat(walk, cheat: str) -> None:
             _say(walk, "Degreelessness Mode Off")
     elif cheat in ("idfa", "idkfa"):
         player.armorpoints, player.armortype = IDFA_ARMOR, IDFA_ARMOR_CLASS
-        player.weaponowned[:] = [1] * NUMWEAPONS
-        player.ammo[:] = [player.maxammo[i] for i in range(NUMAMMO)]
+        # every weapon and all the ammo it can hold: DOOM's, and a game's own after them
+        player.weaponowned[:] = [int(i != info.wp_nochange or i < NUMWEAPONS)
+                                 for i in range(len(player.weaponowned))]
+        player.ammo[:] = list(player.maxammo)
         if cheat == "idkfa":
             player.cards[:] = [True] * NUMCARDS
             _say(walk, "Very Happy Ammo Added")

@@ -145,6 +145,9 @@ def build_parser(commands) -> argparse.ArgumentParser:
                    "a lump such as DEMO1 in the window, with the status bar")
     p.add_argument("--square-pixels", action="store_true", help="show the picture with "
                    "square pixels (default: stretched to 4:3 as DOOM was seen)")
+    p.add_argument("--widescreen", action="store_true", help="the 3-D view widened to the "
+                   "window's shape, DOOM's vertical field of view kept, the status bar and "
+                   "menus at 4:3 in the middle (Crispy Doom's; opens a 16:9 window)")
     p.add_argument("--skill", type=_bounded(1, 5, _integer, "a whole number"), default=3,
                    help="DOOM's skill, 1-5: which of the level's things are there (default 3)")
     p.add_argument("--nosound", action="store_true", help="no sound at all (the audio "

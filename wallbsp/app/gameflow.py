@@ -5,7 +5,8 @@ level, the next map, new games, saves and loads.  A ``GameFlow`` is the walkthro
 - ``key(walk, code)``: Esc and F2-F10 open DOOM's menus (``screen.menu.Menu``); while a
   menu is up it takes the keys, and the game stands still (``pauses``, DOOM's single
   player); its events become sounds (``sfx_`` names through the walkthrough's sound system)
-  and actions: a new game (episode and skill; Doom II and our levels have no episodes), a
+  and actions: a new game (episode and skill; Doom II and our levels have no episodes, a
+  game folder its own one, its names in the menus: ``game.gamefolder``), a
   save or load in six slots (``app.saves``, ``--saves DIR``), options (messages, the
   sound volumes, the status bar as DOOM's screen size, the mouse sensitivity of the mouse
   turn (``keys``); detail is kept but changes nothing), quit (confirmed).
@@ -120,6 +121,8 @@ class GameFlow:
         self.following = None                   # the tree after the intermission
         self._clock = None
         self.menu.bindings = dict(walk.key_names or DEFAULT_KEYS)
+        self.menu.options["widescreen"] = bool(getattr(walk, "widescreen", False))
+        self._game = walk.next_level            # a game folder names its episode, skills
         self._game_of(walk.world)
         walk.warp = self.warp
 
@@ -131,6 +134,8 @@ class GameFlow:
         self.menu.episodes = max(1, sum(f"E{e}M1" in names for e in range(1, 5)))
         art = menu_art(art_for(play))
         self.menu.char_width = lambda ch: string_width(art, ch)
+        self.menu.episode_names = tuple(getattr(self._game, "episode_names", ()))
+        self.menu.skill_names = tuple(getattr(self._game, "skill_names", ()))
 
     @property
     def pauses(self) -> bool:
@@ -250,6 +255,10 @@ class GameFlow:
             walk.hud.say("Messages ON" if value else "Messages OFF")
         elif name == "mouse":
             walk.mouse_sensitivity = value                      # keys.tic_command's turn
+        elif name == "widescreen":
+            walk.widescreen = bool(value)                       # gamescreen.picture_size
+            from wallbsp.app.window import reshape_window
+            reshape_window(walk)
         elif name == "screen_size" and hasattr(walk, "statusbar"):
             walk.statusbar = walk.hud.statusbar = value < 8
         elif name == "sfx" and getattr(walk, "sound", None) is not None:
@@ -306,7 +315,8 @@ class GameFlow:
     def _episode_over(self, walk) -> bool:
         """Our bundled episode's last level left: DOOM would show the finale now."""
         return (walk.world.wad_map is None and self.following is None
-                and self.finale is None and _episode_of(walk) is not None)
+                and self.finale is None and _episode_of(walk) is not None
+                and not hasattr(walk.next_level, "episode_names"))   # a game folder's: again
 
     def _start_own_finale(self, walk) -> None:
         """F_StartFinale for our episode: its text on our flat, then our title picture; the

@@ -46,7 +46,7 @@ def draw_overlays(walk):
         _draw_text_block(walk, readout_lines(walk), (8, top))
     if walk.show_help and walk.help_until is not None and time.perf_counter() > walk.help_until:
         walk.show_help, walk.help_until = False, None    # it covered the weapon; H brings it back
-    if walk.show_help and walk.attract is None:
+    if walk.show_help and walk.attract is None and walk.playback is None:   # not over a demo
         bottom = map_area(walk)[1]
         _draw_text_block(walk, HELP, (8, bottom - 8 - len(HELP) * walk.font.get_linesize()))
     if walk.help_screen:
@@ -126,8 +126,42 @@ def draw_automap(walk):
             draw_things(walk.display, view, walk.world.things)
         player = walk.player
         draw_arrow(walk.display, view, player.x, player.y, player.angle)
+        draw_map_title(walk)
     finally:
         walk.display.set_clip(None)
+
+
+def draw_map_title(walk):
+    """HU_Drawer's level name at the automap's bottom left (``HU_TITLEX`` 0, ``HU_TITLEY``
+    167 less the font's height, of DOOM's 4:3 screen), in the WAD's font and words."""
+    import pygame
+    from wallbsp.app.gamescreen import middle_columns, picture_size
+    from wallbsp.screen.art import art_for
+    from wallbsp.screen.dehstrings import map_title
+    from wallbsp.screen.messages import paint_text
+    width, height = walk.display.get_size()
+    wide = picture_size(walk)[0]
+    x0, w = middle_columns(walk, wide) or (0, wide)
+    left, across = x0 * width // wide, w * width // wide      # the 4:3 screen's columns
+    key = (walk.world.level.name, across, height)
+    if walk.title_cache[0] != key:
+        art = walk.hud.art or art_for(walk.world.play)
+        lump = walk.world.wad_map[1] if walk.world.wad_map is not None else None
+        painted = paint_text(map_title(art, lump, walk.world.level.name), art)
+        surface = None
+        if painted is not None:
+            rgb, mask = painted
+            rows = rgb.shape[0] - 2                            # paint_text's margin
+            picture = pygame.surfarray.make_surface(
+                (rgb * mask[..., None]).transpose(1, 0, 2)[:, :rows].copy())
+            picture.set_colorkey((0, 0, 0))
+            size = (max(1, across), max(1, rows * height // SCREENHEIGHT))
+            surface = (pygame.transform.scale(picture, size),
+                       (167 - rows) * height // SCREENHEIGHT)
+        walk.title_cache = (key, surface)
+    if walk.title_cache[1] is not None:
+        picture, top = walk.title_cache[1]
+        walk.display.blit(picture, (left, top))
 
 
 def has_allmap(walk) -> bool:

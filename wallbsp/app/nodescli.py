@@ -48,6 +48,21 @@ def add_parsers(sub, commands) -> None:
     p.add_argument("-d", "--diagonal-cost", type=_positive, default=d.diagonal_cost,
                    metavar="N", help=f"cost of a diagonal partition (zdbsp's "
                                      f"--diagonal-cost; default {d.diagonal_cost})")
+    p.add_argument("--lookahead", type=_positive, default=d.lookahead, metavar="N",
+                   help=f"the N best partitions of a node are tried a level deeper and the "
+                        f"one whose children split best wins; 0 or 1: none (default "
+                        f"{d.lookahead})")
+    p.add_argument("--lookahead-candidates", type=_positive, default=d.lookahead_candidates,
+                   metavar="N", help=f"segs whose lines are tried for those children, 0: all "
+                                     f"(default {d.lookahead_candidates})")
+    p.add_argument("--gl", action="store_true",
+                   help="add GL nodes (glBSP's v5 GL_VERT, GL_SEGS, GL_SSECT, GL_NODES) "
+                        "after each map, for GL ports")
+    p.add_argument("-X", "--extended", action="store_true",
+                   help="ZDoom's extended nodes (XNOD) for every map, not only where "
+                        "vanilla's limits overflow (zdbsp's -X)")
+    p.add_argument("--uncompressed", action="store_true",
+                   help="a UDMF map's ZNODES uncompressed (XGLN rather than ZGLN)")
     p.add_argument("--json", action="store_true", help="one JSON object per map")
     p.set_defaults(func=commands["nodes"])
 
@@ -56,7 +71,7 @@ def add_parsers(sub, commands) -> None:
     p.add_argument("-o", "--output", required=True, metavar="WAD", help="the PWAD to write")
     p.add_argument("--map", default="MAP01", help="the map's name in the WAD (default MAP01)")
     p.add_argument("--format", choices=("doom", "udmf"), default="doom",
-                   help="DOOM-format map with nodes (default) or UDMF (TEXTMAP)")
+                   help="DOOM-format map with nodes (default) or UDMF (TEXTMAP, with ZNODES)")
     p.add_argument("--iwad", metavar="WAD", help="the IWAD the map will be played with: "
                    "texture and flat names it lacks are replaced by its defaults")
     p.add_argument("--strict", action="store_true", help="treat level warnings as errors")
@@ -66,10 +81,11 @@ def add_parsers(sub, commands) -> None:
 def _options(args):
     from wallbsp.nodes.builder import BuildOptions
     from wallbsp.nodes.wadnodes import NodeOptions
-    build = BuildOptions(args.candidates, args.split_cost, args.balance, args.diagonal_cost)
+    build = BuildOptions(args.candidates, args.split_cost, args.balance, args.diagonal_cost,
+                         args.lookahead, args.lookahead_candidates)
     maps = tuple(m.strip() for m in args.maps.split(",") if m.strip()) if args.maps else None
     reject = "zero" if args.no_reject else "keep" if args.keep_reject else "sight"
-    return NodeOptions(build, maps, reject)
+    return NodeOptions(build, maps, reject, args.gl, args.extended, not args.uncompressed)
 
 
 def cmd_nodes(args) -> int:
@@ -95,9 +111,11 @@ def cmd_nodes(args) -> int:
             print(json.dumps({k: (round(v, 4) if isinstance(v, float) else v)
                               for k, v in vars(r).items() if k != "warnings"}))
         elif r.segs:
+            gl = f", GL nodes: {r.gl_segs} segs ({r.minisegs} minisegs)" if r.gl_segs else ""
             print(f"{r.name}: {r.segs} segs ({r.seg_ratio:.3f} a side), {r.subsectors} "
                   f"subsectors, {r.nodes} nodes, depth {r.depth}, {r.vertexes} split "
-                  f"vertexes{' (extended nodes)' if r.extended else ''}, {r.seconds:.2f} s")
+                  f"vertexes{' (extended nodes)' if r.extended else ''}{gl}, "
+                  f"{r.seconds:.2f} s")
 
 
 def cmd_export(args) -> None:

@@ -9,8 +9,10 @@ bundled game's title and its shipped demo) until a key opens the menu, whose New
 episode and skill as DOOM's does.
 
 With ``WALLBSP_STARTUP_LOG=FILE`` in the environment a JSON line is appended to FILE for
-each moment of the start (``window``, ``ready``), with ``time.time()``, so a benchmark can
-time it from outside.
+each moment of the start (``window``, each step of the progress bar, ``ready``), with
+``time.time()`` and facts (the CPU seconds of each process, kernels compiled in the warm-up),
+and one for every kernel compiled once play has begun (``compiled_in_play``: there should be
+none), so a benchmark can time and check it from outside.
 """
 from __future__ import annotations
 
@@ -22,18 +24,21 @@ import time
 
 import numpy as np
 
+from wallbsp.app.window import prefer_plain_framebuffer
+
 __all__ = ["run_game", "TitleScreen", "note_moment", "title_rgb", "WadGame", "OwnGame"]
 
 BAR_COLOUR, BAR_BACK = (200, 40, 30), (40, 10, 8)
-FRAME_SECONDS = 1 / 30
+BAR = 100                   # the progress bar's steps
+FRAME_SECONDS = 1 / 10      # how often the window answers while the game is made
 
 
-def note_moment(name: str) -> None:
-    """A line for the start's benchmark (module doc)."""
+def note_moment(name: str, **facts) -> None:
+    """A line for the start's benchmark (module doc), with ``facts`` about the moment."""
     path = os.environ.get("WALLBSP_STARTUP_LOG")
     if path:
         with open(path, "a") as f:
-            f.write(json.dumps({"event": name, "time": time.time()}) + "\n")
+            f.write(json.dumps({"event": name, "time": time.time(), **facts}) + "\n")
 
 
 class TitleScreen:
@@ -41,6 +46,7 @@ class TitleScreen:
 
     def __init__(self, title, window, aspect=4 / 3):
         import pygame
+        prefer_plain_framebuffer()
         pygame.display.init()
         pygame.font.init()
         self.display = pygame.display.set_mode(window, pygame.RESIZABLE)
@@ -49,10 +55,12 @@ class TitleScreen:
         self.title = pygame.surfarray.make_surface(np.ascontiguousarray(title.transpose(1, 0, 2)))
         self.aspect = aspect
         self.done, self.total, self.label = 0, 1, "starting"
+        self.scaled = None              # (size, the title scaled to it)
 
     def progress(self, done, total, label) -> None:
+        if label != self.label:
+            note_moment(label)
         self.done, self.total, self.label = done, total, label
-        note_moment(label)
 
     def draw(self) -> None:
         import pygame
@@ -61,8 +69,10 @@ class TitleScreen:
         w, h = (round(height * aspect), height) if width > height * aspect \
             else (width, round(width / aspect))
         x0, y0 = (width - w) // 2, (height - h) // 2
+        if self.scaled is None or self.scaled[0] != (w, h):
+            self.scaled = (w, h), pygame.transform.scale(self.title, (w, h))
         self.display.fill((0, 0, 0))
-        self.display.blit(pygame.transform.scale(self.title, (w, h)), (x0, y0))
+        self.display.blit(self.scaled[1], (x0, y0))
         bar = pygame.Rect(x0 + w // 8, y0 + h - h // 12, w * 3 // 4, max(4, h // 60))
         pygame.draw.rect(self.display, BAR_BACK, bar)
         filled = bar.copy()
@@ -73,13 +83,20 @@ class TitleScreen:
         pygame.display.flip()
 
     def wait(self, thread) -> bool:
-        """Redraw until ``thread`` ends; False if the window was closed meanwhile."""
+        """Redraw until ``thread`` ends, when the progress or the window changed (a cold
+        start compiles on both cores: the title's redraws would take a fifth of one);
+        False if the window was closed meanwhile."""
         import pygame
+        shown = None
         while thread.is_alive():
             for event in pygame.event.get():
                 if event.type == pygame.QUIT:
                     return False
-            self.draw()
+                if event.type in (pygame.VIDEORESIZE, pygame.VIDEOEXPOSE, pygame.WINDOWEXPOSED):
+                    shown = None
+            if shown != (self.done, self.total, self.label):
+                shown = (self.done, self.total, self.label)
+                self.draw()
             thread.join(FRAME_SECONDS)
         self.draw()
         return True
@@ -110,23 +127,41 @@ def title_rgb(art, wad, name="TITLEPIC") -> np.ndarray:
 
 def run_game(args, keys, load_any) -> None:
     """The WAD's game, or the bundled one (module doc)."""
+    from wallbsp.app.precompile import Precompile
+    compiling = Precompile().start()    # first: its process imports numba while the window opens
+    try:
+        _run_game(args, keys, load_any, compiling)
+    finally:
+        compiling.stop()
+
+
+def _run_game(args, keys, load_any, compiling) -> None:
     from wallbsp.app.vanilla import is_wad
     source = WadGame(args.level) if is_wad(args.level) else OwnGame(args.level, load_any, args)
     aspect = None if args.square_pixels else 4 / 3
-    window = (960, 720) if aspect else (960, 600)
+    window = (1280, 720) if args.widescreen else (960, 720) if aspect else (960, 600)
     screen = TitleScreen(source.title(), window, aspect)
     screen.draw()
     note_moment("window")
     made = {}
-    thread = threading.Thread(target=_prepare, args=(source, args, made, screen.progress),
-                              daemon=True)
+    thread = threading.Thread(target=prepare, args=(source, args, made, screen.progress,
+                                                    compiling), daemon=True)
     thread.start()
     if not screen.wait(thread):
         return
     if "error" in made:
         raise made["error"]
     note_moment("ready")
+    if os.environ.get("WALLBSP_STARTUP_LOG"):
+        from wallbsp.app.precompile import on_compile
+        on_compile(lambda kernel: note_moment("compiled_in_play", kernel=kernel))
     _attract_and_play(args, keys, source, made)
+
+
+def _cpu_seconds() -> float:
+    import resource
+    usage = resource.getrusage(resource.RUSAGE_SELF)
+    return round(usage.ru_utime + usage.ru_stime, 2)
 
 
 class WadGame:
@@ -145,7 +180,7 @@ class WadGame:
         from wallbsp.bsp.build import compile_level
         from wallbsp.level.wadmap import load_wad_level
         first = first_map_name(self.wad)
-        progress(0, 8, f"compiling {first}")
+        progress(0, BAR, f"compiling {first}")
         return first, compile_level(load_wad_level(self.wad, first))
 
     def sequence(self, first):
@@ -188,7 +223,7 @@ class OwnGame:
             return np.zeros((200, 320, 3), np.uint8)
 
     def first_tree(self, progress):
-        progress(0, 8, "compiling the level")
+        progress(0, BAR, "compiling the level")
         self.tree = self.load_any(self.level, self.args, strict=self.args.strict)
         return self.tree.level.name, self.tree
 
@@ -219,9 +254,12 @@ class OwnGame:
         return None
 
 
-def _prepare(source, args, made, progress) -> None:
-    """In the thread: the first map compiled, the first demo's World, the kernels warmed."""
+def prepare(source, args, made, progress, compiling=None) -> None:
+    """In the thread: the first map compiled, the first demo's World, the plan's kernels
+    compiled in two processes (``compiling``, a started ``precompile.Precompile``, if any),
+    the kernels warmed; what is made goes in ``made`` (an error as ``made["error"]``)."""
     try:
+        from wallbsp.app.precompile import count_compiles
         from wallbsp.app.warmup import warm_steps
         first, tree = source.first_tree(progress)
         made["trees"] = {first: tree}
@@ -229,13 +267,20 @@ def _prepare(source, args, made, progress) -> None:
         demo = next((step[1] for step in made["sequence"] if step[0] == "demo"), None)
         world = None
         if demo is not None:
-            progress(1, 8, f"loading {demo}")
+            progress(BAR // 10, BAR, f"loading {demo}")
             world = source.demo_world(demo)
         made["world"], made["demo"] = world, demo
         steps = warm_steps(tree, tuple(args.size), args.skill)
-        for k, (label, step) in enumerate(steps):
-            progress(2 + k, 2 + len(steps), label)
-            step()
+        facts = {} if compiling is None else compiling.finish(lambda share: progress(
+            round(BAR * (0.2 + 0.6 * share)), BAR, "compiling kernels in two processes"))
+        note_moment("compiled", **facts)
+        first_step = 0.8 if facts else 0.2           # of the bar: the steps fill the rest
+        with count_compiles() as compiled:
+            for k, (label, step) in enumerate(steps):
+                progress(round(BAR * (first_step + (1 - first_step) * k / len(steps))), BAR,
+                         label)
+                step()
+        note_moment("warmed", warmup_compiles=compiled[0], game_cpu_s=_cpu_seconds())
         progress(1, 1, "ready")
     except Exception as err:            # noqa: BLE001 - raised again in the main thread
         made["error"] = err
@@ -261,4 +306,5 @@ def _attract_and_play(args, keys, source, made) -> None:
     app.run_walkthrough(first_tree, size=args.size, max_fps=args.max_fps, skill=args.skill,
                         sound=effects, music=not (args.nosound or args.nomusic), keys=keys,
                         saves=args.saves, aspect=None if args.square_pixels else 4 / 3,
-                        world=world, setup=setup, menus=True, key_file=args.keys)
+                        world=world, setup=setup, menus=True, key_file=args.keys,
+                        widescreen=args.widescreen)

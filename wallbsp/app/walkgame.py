@@ -7,7 +7,7 @@
   on (``game.lmprecord``; headless with ``--frames N`` too); any other ``--record``: the
   walkthrough's JSON demo of the first level.
 - ``--playdemo DEMO`` with a WAD: a vanilla demo played in the window with the HUD.
-- ``--square-pixels``: no 4:3 stretch; ``--nosound`` no audio device at all (Chocolate
+- ``--square-pixels``: no 4:3 stretch; ``--widescreen`` the view widened to the window; ``--nosound`` no audio device at all (Chocolate
   Doom's ``-nosound``), ``--nosfx`` / ``--nomusic`` one of the two.
 """
 from __future__ import annotations
@@ -89,12 +89,12 @@ def walk_command(args, load_any, next_level_of) -> None:
         summary = run_walkthrough(
             tree, size=args.size, frames=args.frames, turn=args.turn,
             screenshot=args.screenshot, max_fps=args.max_fps, demo=demo,
-            next_level=game.next_level if game else (episode or next_level_of(args.level, args)),
+            next_level=game or episode or next_level_of(args.level, args),
             skill=args.skill,
             sound=effects, music=not (args.nosound or args.nomusic), keys=keys,
             saves=args.saves, aspect=None if args.square_pixels else 4 / 3, world=world,
             setup=keep, menus=True if (vanilla or args.playdemo) else None,
-            key_file=args.keys)
+            key_file=args.keys, widescreen=args.widescreen)
     except (NoDisplayError, KeyConfigError) as err:
         raise UsageError(str(err)) from None
     _save_recording(args, demo, summary_holder.get("walk"))

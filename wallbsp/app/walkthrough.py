@@ -111,11 +111,13 @@ class Walkthrough:
     cheats: object = None            # the cheat codes typed (cheats.CheatTyper)
     warp: object = None              # (walk, episode, map) -> a new game there (idclev)
     aspect: float = 4 / 3            # the picture's shape in the window; None: square pixels
+    widescreen: bool = False         # the view widened to the window (gamescreen)
     recorder: object = None          # a vanilla demo being recorded (game.lmprecord)
     playback: object = None          # the tic commands of a demo being played, an iterator
     attract: object = None           # DOOM's attract loop while it runs (app.attract)
     help_screen: bool = False        # F1's list of the keys, the game standing still
-    map_zoom: float = 1.0            # the automap: 1 the whole level, closer follows
+    map_zoom: float = 1 / 0.7        # the automap: 1 the whole level, closer follows (AM_LevelInit)
+    title_cache: tuple = (None, None)  # (key, surface) of the automap's level name
     seen: tuple = None               # (world state, automap.SeenLines): the walls seen
     textures: bool = True            # textured view (a level with resources), else flat
     show_readout: bool = False
@@ -160,7 +162,7 @@ def run_walkthrough(tree, *, size=(320, 200), window=None, frames=None, turn=0.0
                     screenshot=None, max_fps=None, order="front_to_back", fov=90.0,
                     demo=None, next_level=None, skill=3, sound=True, music=True,
                     keys=None, statusbar=True, saves=None, menus=None, aspect=4 / 3,
-                    world=None, setup=None, key_file=None) -> Summary:
+                    world=None, setup=None, key_file=None, widescreen=False) -> Summary:
     """Walk ``tree`` in a window; with ``frames=N`` render N frames headless and return the
     summary.  ``screenshot``: save the last picture (internal resolution, as shown) as a
     PNG.  ``demo``: record the tics into it; ``next_level(exit)``: the tree to go on to;
@@ -170,6 +172,7 @@ def run_walkthrough(tree, *, size=(320, 200), window=None, frames=None, turn=0.0
     ``menus``: DOOM's menus, intermission and saves (``gameflow``; default: interactive
     walks only), saves in the folder ``saves`` (default ``app.saves.saves_folder``);
     ``aspect``: the picture's shape in the window (4:3, DOOM's; None: square pixels);
+    ``widescreen``: the view widened to the window's shape (a 16:9 window at first);
     ``world``: a World of ``tree`` already made (a demo's); ``key_file``: where the
     options menu's Controls page writes the keys (default ``config.default_path``); ``setup(walk)``: called before
     the first frame (a demo to record or play back: ``app.walkgame``)."""
@@ -178,10 +181,11 @@ def run_walkthrough(tree, *, size=(320, 200), window=None, frames=None, turn=0.0
     elif no_window_system():
         os.environ["SDL_VIDEODRIVER"] = "dummy"
     if window is None:
-        window = (960, 720) if aspect else (3 * size[0], 3 * size[1])
+        window = first_window(size, aspect, widescreen)
     walk = Walkthrough.at_start(tree, size, window, skill, world=world, order=order, fov=fov,
                                 demo=demo, next_level=next_level, key_names=keys,
-                                statusbar=statusbar, aspect=aspect, key_file=key_file)
+                                statusbar=statusbar, aspect=aspect, key_file=key_file,
+                                widescreen=widescreen)
     if menus or (menus is None and frames is None):
         walk.overlay = GameFlow(walk, start_level, saves)
     if setup is not None:
@@ -201,6 +205,14 @@ def run_walkthrough(tree, *, size=(320, 200), window=None, frames=None, turn=0.0
         close_sound(walk)
         close_display(walk)
     return _summary(walk, times)
+
+
+def first_window(size, aspect, widescreen=False) -> tuple:
+    """The window's size at first: 960 × 720 (4:3), 1280 × 720 (16:9) for the widescreen
+    view, three pixels a pixel with square pixels."""
+    if widescreen:
+        return (1280, 720)
+    return (960, 720) if aspect else (3 * size[0], 3 * size[1])
 
 
 COMPILING = ("wallbsp: compiling the renderer's kernels (only on the first run after an "

@@ -8,7 +8,8 @@ Public API:
   ``replace_span(start, stop, lumps)``; ``to_bytes()``, ``write(path)`` (atomic, through
   ``files.write_atomically``);
 - ``MAP_LUMPS``: a DOOM-format map's lumps in DOOM's order (``ML_*``), ``GL_LUMPS`` the v5
-  GL nodes' lumps after a ``GL_<map>`` marker.
+  GL nodes' lumps after a ``GL_<map>`` marker (``GL_LEVEL`` for a map name of more than 5
+  letters, glBSP's v5 rule), which ``map_span`` counts as the map's.
 
 Round trip: a lump read from a file and not replaced keeps its 8 raw name bytes (some tools
 leave garbage after the NUL), the bytes between it and the lump before it (deutex pads lumps
@@ -80,7 +81,7 @@ class WadImage:
         while i < len(names) and names[i] in MAP_LUMPS + HEXEN_LUMPS and names[i] not in seen:
             seen.add(names[i])
             i += 1
-        gl = f"GL_{names[marker]}"[:8]
+        gl = f"GL_{names[marker]}" if len(names[marker]) <= 5 else "GL_LEVEL"
         if i < len(names) and names[i] == gl:        # a map's GL nodes go with it
             i += 1
             while i < len(names) and names[i] in GL_LUMPS:

@@ -2,7 +2,7 @@
 
 Phases, in the order they run (after ZDBSP's node builder):
 
-1. ``_plane_table``: every wall's partition line ``l = p1 × p2``, reduced and given a
+1. ``plane_table``: every wall's partition line ``l = p1 × p2``, reduced and given a
    canonical sign, numbered once, so collinear walls share a plane number (collinear
    merging: one node holds every seg on its line, S001's COINCIDENT list).
 2. ``_choose_splitters``: for every open cell, the least-crossed rule (S002, S003) over
@@ -36,7 +36,7 @@ _PAIR_BUDGET = 1 << 21    # seg × candidate pairs evaluated per numpy batch
 
 
 @dataclass
-class _Walls:
+class Walls:
     """Integer wall ends and plane numbers, indexed by wall."""
     x1: np.ndarray
     y1: np.ndarray
@@ -48,7 +48,7 @@ class _Walls:
 
 
 @dataclass
-class _Segs:
+class Segs:
     """A set of segs: wall and exact ends ``t0 = n0/d0``, ``t1 = n1/d1``; ``cell`` says
     which open cell each belongs to (cells are contiguous)."""
     wall: np.ndarray
@@ -59,11 +59,11 @@ class _Segs:
     cell: np.ndarray
 
     def take(self, idx):
-        return _Segs(*(getattr(self, f)[idx] for f in _SEG_FIELDS))
+        return Segs(*(getattr(self, f)[idx] for f in _SEG_FIELDS))
 
     @staticmethod
     def concat(parts):
-        return _Segs(*(np.concatenate([getattr(p, f) for p in parts]) for f in _SEG_FIELDS))
+        return Segs(*(np.concatenate([getattr(p, f) for p in parts]) for f in _SEG_FIELDS))
 
 
 _SEG_FIELDS = ("wall", "n0", "d0", "n1", "d1", "cell")
@@ -74,17 +74,15 @@ def splitter_cost(crossed, front, back):
     return SPLIT_WEIGHT * crossed + BALANCE_WEIGHT * np.abs(front - back)
 
 
-def _plane_table(level: Level) -> _Walls:
-    ends = np.array([(level.vertices[w.v1] + level.vertices[w.v2]) for w in level.walls],
-                    dtype=np.int64).reshape(-1, 4)
-    x1, y1, x2, y2 = ends.T.copy()
+def plane_table(level: Level) -> Walls:
+    x1, y1, x2, y2 = level.segments().reshape(-1, 4).T.copy()
     lines, flip = canonical_lines(x1, y1, x2, y2)
     unique, plane = (np.unique(lines, axis=0, return_inverse=True) if len(lines)
                      else (np.zeros((0, 3), np.int64), np.zeros(0, np.int64)))
-    return _Walls(x1, y1, x2, y2, plane.reshape(-1).astype(np.int64), flip, unique)
+    return Walls(x1, y1, x2, y2, plane.reshape(-1).astype(np.int64), flip, unique)
 
 
-def _side_values(walls: _Walls, wall, line):
+def _side_values(walls: Walls, wall, line):
     """``s = a*x + b*y + c`` of both ends of each wall against each line (int64, exact)."""
     a, b, c = line[:, 0], line[:, 1], line[:, 2]
     s1 = a * walls.x1[wall] + b * walls.y1[wall] + c
@@ -92,7 +90,7 @@ def _side_values(walls: _Walls, wall, line):
     return s1, s2
 
 
-def _classify(walls: _Walls, segs: _Segs, idx, line):
+def _classify(walls: Walls, segs: Segs, idx, line):
     """Sides of both ends of segs ``idx`` against ``line`` (one line per seg)."""
     wall = segs.wall[idx]
     s1, s2 = _side_values(walls, wall, line)
@@ -187,11 +185,12 @@ def _split_parameter(s1, s2):
     return np.where(neg, -num, num), np.where(neg, -den, den)
 
 
-def _partition(walls, segs, splitter):
+def partition(walls, segs, line):
     """Send each seg to the node on its line, to the front (s < 0) or to the back
-    (s > 0) of its cell's splitter; a seg crossing the line becomes two."""
+    (s > 0) of ``line`` (one line per seg: its cell's splitter); a seg crossing the line
+    becomes two.  Returns (on the line, the pieces, each piece's side: 0 front, 1 back)."""
     all_idx = np.arange(len(segs.wall))
-    f0, f1, s1, s2 = _classify(walls, segs, all_idx, walls.lines[splitter[segs.cell]])
+    f0, f1, s1, s2 = _classify(walls, segs, all_idx, line)
     on_line = (f0 == 0) & (f1 == 0)
     crossed = (f0 * f1) < 0
     whole = ~on_line & ~crossed
@@ -202,7 +201,7 @@ def _partition(walls, segs, splitter):
     head.n1, head.d1 = tn, td
     tail = segs.take(cut)
     tail.n0, tail.d0 = tn, td
-    pieces = _Segs.concat([segs.take(whole), head, tail])
+    pieces = Segs.concat([segs.take(whole), head, tail])
     piece_side = np.concatenate([side[whole], (f0[cut] > 0).astype(np.int64),
                                  (f1[cut] > 0).astype(np.int64)])
     return segs.take(on_line), pieces, piece_side
@@ -212,13 +211,13 @@ def _partition(walls, segs, splitter):
 class _Output:
     """What the build accumulates, depth by depth: nodes in breadth-first order."""
     node_plane: list       # splitter plane of each node, per depth
-    node_segs: list        # _Segs on the node's line, per depth; .cell = node index
+    node_segs: list        # Segs on the node's line, per depth; .cell = node index
     links: list            # (parent node, slot) of each node of the next depth
 
 
 def _build_depth(walls, segs, n_cells, node_base, k, rng):
     splitter = _choose_splitters(walls, segs, n_cells, k, rng)
-    on_line, pieces, piece_side = _partition(walls, segs, splitter)
+    on_line, pieces, piece_side = partition(walls, segs, walls.lines[splitter[segs.cell]])
     on_line.cell = on_line.cell + node_base
     child_key = pieces.cell * 2 + piece_side
     order = np.argsort(child_key, kind="stable")
@@ -228,19 +227,15 @@ def _build_depth(walls, segs, n_cells, node_base, k, rng):
     return splitter, on_line, pieces, keys + 2 * node_base
 
 
-def build_tree_arrays(level: Level, candidates=DEFAULT_CANDIDATES, seed=0, progress=None):
-    """Run the build; returns a dict of the flat arrays described in ``tree.py``."""
-    walls = _plane_table(level)
-    n_walls = len(level.walls)
-    rng = np.random.default_rng(seed)
-    zeros = np.zeros(n_walls, dtype=np.int64)
-    segs = _Segs(np.arange(n_walls, dtype=np.int64), zeros, zeros + 1, zeros + 1,
-                 zeros + 1, zeros.copy())
+def build_forest(walls: Walls, segs: Segs, k, rng, progress=None):
+    """Build the subtrees of the open cells ``segs.cell`` (0 .. cells-1: the first nodes).
+    Returns ``(node_line, node_child, depth, on-line segs)``: nodes breadth first, an empty
+    child slot 0 (a leaf, numbered later), each on-line seg's ``cell`` its node."""
     out = _Output([], [], [])
-    n_cells, node_base = (1 if n_walls else 0), 0
+    n_cells = int(segs.cell.max()) + 1 if len(segs.wall) else 0
+    node_base = 0
     while n_cells:
-        splitter, on_line, pieces, keys = _build_depth(walls, segs, n_cells, node_base,
-                                                       candidates, rng)
+        splitter, on_line, pieces, keys = _build_depth(walls, segs, n_cells, node_base, k, rng)
         out.node_plane.append(splitter)
         out.node_segs.append(on_line)
         out.links.append(keys)
@@ -248,19 +243,42 @@ def build_tree_arrays(level: Level, candidates=DEFAULT_CANDIDATES, seed=0, progr
         segs, n_cells = pieces, len(keys)
         if progress is not None:
             progress(len(out.node_plane), node_base, len(segs.wall))
-    return _finish(out, walls, level)
-
-
-def _finish(out, walls, level):
-    n_nodes = sum(len(p) for p in out.node_plane)
+    n_nodes = node_base
     node_line = walls.lines[np.concatenate(out.node_plane)] if n_nodes else \
         np.zeros((0, 3), np.int64)
     depth = np.concatenate([np.full(len(p), d, np.int32) for d, p in enumerate(out.node_plane)]
                            ) if n_nodes else np.zeros(0, np.int32)
-    segs = _Segs.concat(out.node_segs) if n_nodes else None
-    order = np.lexsort((segs.wall, segs.cell)) if n_nodes else None
-    segs = segs.take(order) if n_nodes else None
-    child = _link_children(out.links, n_nodes)
+    on_line = Segs.concat(out.node_segs) if n_nodes else _no_segs()
+    roots = len(out.node_plane[0]) if n_nodes else 0
+    return node_line, _link_children(out.links, n_nodes, roots), depth, on_line
+
+
+def build_tree_arrays(level: Level, candidates=DEFAULT_CANDIDATES, seed=0, progress=None):
+    """Run the build; returns a dict of the flat arrays described in ``tree.py``.
+    ``progress(depth, nodes, segs)`` is called after each depth (raising in it stops the
+    build)."""
+    walls = plane_table(level)
+    n_walls = len(level.walls)
+    rng = np.random.default_rng(seed)
+    zeros = np.zeros(n_walls, dtype=np.int64)
+    segs = Segs(np.arange(n_walls, dtype=np.int64), zeros, zeros + 1, zeros + 1,
+                zeros + 1, zeros.copy())
+    node_line, child, depth, on_line = build_forest(walls, segs, candidates, rng, progress)
+    return tree_arrays(walls, level, node_line, child, depth, on_line)
+
+
+def _no_segs():
+    empty = np.zeros(0, np.int64)
+    return Segs(empty, empty, empty, empty, empty, empty)
+
+
+def tree_arrays(walls: Walls, level: Level, node_line, child, depth, on_line: Segs):
+    """The flat arrays of ``tree.py`` from nodes numbered breadth first (``depth`` sorted),
+    ``child`` with 0 in the empty slots (the leaves, numbered here) and the on-line segs
+    (``cell``: their node)."""
+    n_nodes = len(node_line)
+    segs = on_line.take(np.lexsort((on_line.wall, on_line.cell))) \
+        if n_nodes else None
     arrays = _seg_arrays(segs, walls, n_nodes)
     leaf_sector = _fill_leaves(child, arrays, level)
     arrays.update(
@@ -271,11 +289,11 @@ def _finish(out, walls, level):
     return arrays
 
 
-def _link_children(links, n_nodes):
+def _link_children(links, n_nodes, roots=1):
     """(N, 2) children; nodes are numbered breadth first, so the k-th link of a depth
     points at the k-th node of the next depth.  Unlinked slots stay 0 (leaves later)."""
     child = np.zeros((n_nodes, 2), dtype=np.int32)
-    first_next = 1
+    first_next = roots
     for keys in links:
         nodes = first_next + np.arange(len(keys))
         child[keys // 2, keys % 2] = nodes
@@ -285,8 +303,7 @@ def _link_children(links, n_nodes):
 
 def _seg_arrays(segs, walls, n_nodes):
     if segs is None:
-        empty = np.zeros(0, np.int64)
-        segs = _Segs(empty, empty, empty, empty, empty, empty)
+        segs = _no_segs()
     counts = np.bincount(segs.cell, minlength=n_nodes)
     stops = np.cumsum(counts)
     node_segs = np.stack([stops - counts, stops], axis=1).astype(np.int32)

@@ -1,6 +1,7 @@
 """A game's own things as Python classes: ``Actor`` (a monster, a projectile, a decoration),
-``Item`` (an actor the player picks up) and ``Weapon`` — DEHACKED's fields with DECORATE's
-names, in map units, and states in the text of ``states.py``.
+``Item`` (an actor the player picks up), ``Ammo`` (a game's own ammunition and the item
+that gives it) and ``Weapon`` — DEHACKED's fields with DECORATE's names, in map units, and
+states in the text of ``states.py``.
 
     class Spitter(DoomImp):                 # DOOM's imp, changed (content.doom)
         editor_number = 30001
@@ -23,7 +24,8 @@ from __future__ import annotations
 
 from wallbsp.doom import info
 
-__all__ = ["Actor", "Item", "Weapon", "FLAGS", "LABELS", "AMMO", "flag_bits"]
+__all__ = ["Actor", "Item", "Ammo", "Weapon", "FLAGS", "LABELS", "AMMO", "flag_bits",
+           "ammo_number"]
 
 # mobjinfo's state fields by DECORATE's label names
 LABELS = {"spawn": "spawnstate", "see": "seestate", "pain": "painstate",
@@ -81,7 +83,8 @@ class Actor:
 class Item(Actor):
     """An actor the player picks up: ``pickup(play, player, item)`` gives what it gives
     and says whether it was taken (by default: ``health`` up to ``max_health``, ``armor``
-    points, ``ammo`` (``{"clip": 10}``), ``weapon`` (a ``Weapon`` class)); then the player
+    points, ``ammo`` (``{"clip": 10}``; a game's own ammunition by name or ``Ammo``
+    class), ``weapon`` (a ``Weapon`` class)); then the player
     reads ``message`` and hears ``pickup_sound``."""
     flags = ("SPECIAL",)
     radius = 20
@@ -100,8 +103,38 @@ class Item(Actor):
         raise NotImplementedError
 
 
-def give_declared(play, player, item, cls) -> bool:
-    """``Item.pickup``'s default: what ``cls`` declares, given by DOOM's functions."""
+class Ammo(Item):
+    """A game's own ammunition, and the item that gives it (its ``states``: the pickup's
+    sprite): ``name``, how weapons, items and scripts name it (by default the class's name
+    in lower case); ``max_amount`` a player can hold, ``backpack_max`` with a backpack
+    (twice as much by default); ``clip`` a clip load, P_GiveAmmo's unit: picking this item
+    up gives one (two on skills 1 and 5, as DOOM's), a weapon using it found gives two.
+    Numbered after DOOM's four (``doom.tables.FIRST_GAME_AMMO``)."""
+    name = None
+    max_amount = 100
+    backpack_max = None
+    clip = 10
+
+
+def ammo_number(tables, key):
+    """The ammunition number of ``key`` (DOOM's name, a game's ``Ammo`` name or class) in
+    ``tables``, or None when it names none."""
+    if isinstance(key, type) and issubclass(key, Ammo):
+        key = ammo_name(key)
+    if key in AMMO:
+        return AMMO[key]
+    return next((n for n, own in tables.ammo.items() if own.name == key), None)
+
+
+def ammo_name(cls) -> str:
+    return cls.__dict__.get("name") or cls.__name__.lower()
+
+
+def give_declared(play, player, item, cls, ammo=None) -> bool:
+    """``Item.pickup``'s default: what ``cls`` declares (``ammo``: its ``ammo`` by number),
+    given by DOOM's functions."""
+    if issubclass(cls, Ammo):
+        return play.p_give_ammo(player, ammo_number(play.tables, cls), 1)
     took = False
     if cls.health_given and player.health < cls.max_health:
         player.health = min(cls.max_health, player.health + cls.health_given)
@@ -109,10 +142,9 @@ def give_declared(play, player, item, cls) -> bool:
         took = True
     if cls.armor and play.p_give_armor(player, 1 if cls.armor <= 100 else 2):
         took = True
-    for name, amount in cls.ammo.items():
-        ammo = AMMO[name]
-        if player.ammo[ammo] < player.maxammo[ammo]:
-            player.ammo[ammo] = min(player.maxammo[ammo], player.ammo[ammo] + amount)
+    for number, amount in (ammo or {}).items():
+        if player.ammo[number] < player.maxammo[number]:
+            player.ammo[number] = min(player.maxammo[number], player.ammo[number] + amount)
             took = True
     if cls.weapon is not None:
         weapon = play.tables.types[cls.weapon]
@@ -122,10 +154,10 @@ def give_declared(play, player, item, cls) -> bool:
 
 class Weapon:
     """A player's weapon (``weaponinfo_t``): ``slot`` the weapon key (1-8) it is on after
-    DOOM's own; ``ammo`` ``"clip"``, ``"shell"``, ``"cell"``, ``"rocket"`` or None;
-    ``ammo_use`` a shot; ``states`` with labels Select (A_Raise), Deselect (A_Lower), Ready
-    (A_WeaponReady), Fire, Flash; actions DOOM's (``A_FirePistol``) or functions of the
-    class taking ``(play, player, psp)``."""
+    DOOM's own; ``ammo`` ``"clip"``, ``"shell"``, ``"cell"``, ``"rocket"``, a game's own
+    (an ``Ammo`` class or its name) or None; ``ammo_use`` a shot; ``states`` with labels
+    Select (A_Raise), Deselect (A_Lower), Ready (A_WeaponReady), Fire, Flash; actions
+    DOOM's (``A_FirePistol``) or functions of the class taking ``(play, player, psp)``."""
     slot = 2
     ammo = "clip"
     ammo_use = 1

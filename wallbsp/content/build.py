@@ -12,9 +12,10 @@ from __future__ import annotations
 import re
 
 from wallbsp.doom import info
-from wallbsp.doom.tables import DOOM
+from wallbsp.doom.tables import DOOM, FIRST_GAME_AMMO, AmmoType
 
-from .actors import AMMO, LABELS, WEAPON_LABELS, Actor, Item, Weapon, flag_bits, give_declared
+from .actors import (AMMO, LABELS, WEAPON_LABELS, Actor, Ammo, Item, Weapon, ammo_name,
+                     flag_bits, give_declared)
 from .states import DOOM_ACTIONS, ContentError, parse_states
 
 __all__ = ["game_tables", "classes_of"]
@@ -37,7 +38,8 @@ def game_tables(classes, base=DOOM):
     """``base``'s tables with ``classes`` (and the game's classes they derive from or give)
     added; ``ContentError`` for anything that cannot be built."""
     builder = _Builder(base)
-    for cls in classes:
+    classes = list(classes)           # ammunition first: weapons and items name it
+    for cls in sorted(classes, key=lambda c: not (isinstance(c, type) and issubclass(c, Ammo))):
         builder.add(cls)
     return builder.tables()
 
@@ -54,6 +56,7 @@ class _Builder:
         self.doomednum = dict(base.doomednum)
         self.labels, self.types, self.actions, self.action_names = {}, dict(base.types), {}, {}
         self.pickups, self.ammo_use, self.replace = {}, {}, {}
+        self.ammo = dict(base.ammo)
         self.weapon_slots = {k: list(v) for k, v in base.weapon_slots.items()}
 
     def tables(self):
@@ -62,7 +65,7 @@ class _Builder:
             self.states[len(base.states):], self.mobjinfo[len(base.mobjinfo):],
             self.weaponinfo[len(base.weaponinfo):], self.sprnames[len(base.sprnames):],
             self.sfx[len(base.sfx):], replace=self.replace, actions=self.actions,
-            pickups=self.pickups, ammo_use=self.ammo_use, types=self.types,
+            pickups=self.pickups, ammo_use=self.ammo_use, types=self.types, ammo=self.ammo,
             weapon_slots={k: tuple(v) for k, v in self.weapon_slots.items()})
 
     def add(self, cls):
@@ -73,6 +76,8 @@ class _Builder:
         if issubclass(cls, Weapon):
             self._weapon(cls)
         else:
+            if issubclass(cls, Ammo):
+                self._ammo_type(cls)
             self._actor(cls)
 
     # -- states ---------------------------------------------------------------------------
@@ -223,9 +228,14 @@ class _Builder:
         if cls.weapon is not None:
             self.add(cls.weapon)
         own = cls.pickup if "pickup" in _defined(cls) else None
+        if not isinstance(cls.ammo, dict):
+            raise ContentError(f"{where}: ammo {cls.ammo!r}: a dictionary, {{\"clip\": 10}}")
+        ammo = {self._ammo_of(name, where): _whole(amount, where, "ammo")
+                for name, amount in cls.ammo.items()}
 
         def pickup(play, player, item):
-            took = own(play, player, item) if own else give_declared(play, player, item, cls)
+            took = own(play, player, item) if own else give_declared(play, player, item, cls,
+                                                                     ammo)
             if not took:
                 return None
             if cls.message:
@@ -239,9 +249,7 @@ class _Builder:
         missing = [k for k in ("select", "deselect", "ready", "fire") if k not in labels]
         if missing:
             raise ContentError(f"{where}: states: no {missing[0].capitalize()} label")
-        if cls.ammo not in AMMO:
-            raise ContentError(f"{where}: ammo {cls.ammo!r}: one of clip, shell, cell, rocket "
-                               f"or None")
+        ammo = self._ammo_of(cls.ammo, where)
         slot = _whole(cls.slot, where, "slot")
         if not 1 <= slot <= 8:
             raise ContentError(f"{where}: slot {slot}: a weapon key, 1-8")
@@ -250,10 +258,40 @@ class _Builder:
         number = len(self.weaponinfo)
         self.types[cls] = number
         self.weaponinfo.append(info.WeaponInfo(
-            AMMO[cls.ammo], labels["select"], labels["deselect"], labels["ready"],
+            ammo, labels["select"], labels["deselect"], labels["ready"],
             labels["fire"], labels.get("flash", 0)))
         self.weapon_slots.setdefault(slot - 1, []).append(number)
         self.ammo_use[number] = _whole(cls.ammo_use, where, "ammo_use")
+
+
+    def _ammo_type(self, cls):
+        """A game's own ammunition: the next number after DOOM's (and the game's before)."""
+        where, name = _name(cls), ammo_name(cls)
+        if name in AMMO or any(own.name == name for own in self.ammo.values()):
+            raise ContentError(f"{where}: ammo name {name!r} is taken (DOOM's clip, shell, "
+                               f"cell, rocket, or another of the game's)")
+        most = _whole(cls.max_amount, where, "max_amount")
+        backpack = most * 2 if cls.backpack_max is None else \
+            _whole(cls.backpack_max, where, "backpack_max")
+        clip = _whole(cls.clip, where, "clip")
+        if not 0 < clip <= most <= backpack <= 9999:
+            raise ContentError(f"{where}: ammo: 0 < clip <= max_amount <= backpack_max <= "
+                               f"9999 (the status bar's digits), not {clip}, {most}, {backpack}")
+        number = max(self.ammo, default=FIRST_GAME_AMMO - 1) + 1
+        self.ammo[number] = AmmoType(name, most, backpack, clip)
+
+    def _ammo_of(self, key, where):
+        """The number of ammunition ``key`` (DOOM's name, a game's name or ``Ammo`` class)."""
+        if isinstance(key, type) and issubclass(key, Ammo):
+            self.add(key)
+            key = ammo_name(key)
+        if key in AMMO:
+            return AMMO[key]
+        found = next((n for n, own in self.ammo.items() if own.name == key), None)
+        if found is None:
+            raise ContentError(f"{where}: ammo {key!r}: one of clip, shell, cell, rocket, "
+                               f"the game's own (an Ammo class or its name) or None")
+        return found
 
 
 def _defined(cls):

@@ -20,13 +20,14 @@ The arrays (``block_tables`` and the caller, all int64):
   ``line->validcount``, kept here instead: only equality with the current one is read), and
   last the latest validcount seen (a lower one, after a game is loaded, clears the marks).
 
-Fixed-point arithmetic as ``sim.fixed``, in int64, by ``sim.nodewalks``' step kernels.
+Fixed-point arithmetic as ``sim.fixed``, in int64, by ``sim.nodewalks``' kernels (called,
+not inlined: see there).
 """
 from __future__ import annotations
 
 import numpy as np
 
-from wallbsp.jit import kernel, step_kernel
+from wallbsp.jit import kernel
 from wallbsp.doom.fixed import FRACBITS, FRACUNIT
 from wallbsp.doom.info import MAPBLOCKSHIFT
 from wallbsp.doom.nodewalks import fixed_div, fixed_mul, intercept_frac, wrap32
@@ -86,7 +87,7 @@ def block_tables(lump, offset, width, height, nlines):
     return starts, blocklines
 
 
-@step_kernel
+@kernel
 def _axis_side(x, y, lx, ly, ldx, ldy):
     """The side (0 or 1) of a vertical or horizontal line, as P_PointOnDivlineSide and
     P_PointOnLineSide both take it first; -1 for any other line."""
@@ -101,7 +102,7 @@ def _axis_side(x, y, lx, ly, ldx, ldy):
     return -1
 
 
-@step_kernel
+@kernel
 def _point_on_divline_side(x, y, lx, ly, ldx, ldy):
     """P_PointOnDivlineSide: 0 or 1 (the sign bits decide when the products' signs
     differ)."""
@@ -117,7 +118,7 @@ def _point_on_divline_side(x, y, lx, ly, ldx, ldy):
     return 0 if right < left else 1
 
 
-@step_kernel
+@kernel
 def _point_on_line_side(x, y, v1x, v1y, ldx, ldy):
     """P_PointOnLineSide: 0 (front) or 1 (back)."""
     side = _axis_side(x, y, v1x, v1y, ldx, ldy)
@@ -130,7 +131,7 @@ def _point_on_line_side(x, y, v1x, v1y, ldx, ldy):
     return 0 if right < left else 1
 
 
-@step_kernel
+@kernel
 def _first_step(a1, a2, b1, b2):
     """Along axis a, from a block-relative start a1 to end a2 (b the other axis): the
     block step, and where the trace meets the first block edge across a (in blocks, 16.16)

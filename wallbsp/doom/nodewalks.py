@@ -24,23 +24,26 @@ The arrays (made by ``game.playsim.bsptables``, all int64):
 Fixed-point arithmetic as ``sim.fixed`` (FixedMul, FixedDiv with vanilla's overflow rule,
 C's 32-bit wrap-around), in int64: ``wrap32``, ``fixed_mul``, ``fixed_div`` and
 ``intercept_frac`` (P_InterceptVector2, the same sum as p_maputl.c's P_InterceptVector) are
-step kernels, which ``sim.blockwalk`` compiles into its walk too.  These are the play
+kernels the walks call (``sim.blockwalk``'s too), not step kernels: numba's inlining of them
+into the walks made the walks' compile three times longer (5.3 of a cold start's 35 CPU
+seconds) and demo playback no faster (``tools/bench.py playsim_baseline``: 1.03 times the
+inlined version's tics/s).  These are the play
 simulation's only walks down the nodes; the Python walks over the map objects they replaced
 are the tests' reference (``tests/nodewalkref.py``).
 """
 from __future__ import annotations
 
-from wallbsp.jit import kernel, step_kernel
+from wallbsp.jit import kernel
 
 NF_SUBSECTOR = 0x8000
 
 
-@step_kernel
+@kernel
 def wrap32(v):
     return ((v + 0x80000000) & 0xFFFFFFFF) - 0x80000000
 
 
-@step_kernel
+@kernel
 def _side(x, y, lx, ly, ldx, ldy):
     """P_DivlineSide: 0 (front), 1 (back) or 2 (on)."""
     if ldx == 0:
@@ -66,12 +69,12 @@ def _side(x, y, lx, ly, ldx, ldy):
     return 1
 
 
-@step_kernel
+@kernel
 def fixed_mul(a, b):
     return wrap32((a * b) >> 16)
 
 
-@step_kernel
+@kernel
 def fixed_div(a, b):
     """FixedDiv: INT_MIN or INT_MAX when the quotient cannot fit (tested with C's abs)."""
     if (wrap32(abs(a)) >> 14) >= wrap32(abs(b)):
@@ -83,7 +86,7 @@ def fixed_div(a, b):
     return wrap32(q)
 
 
-@step_kernel
+@kernel
 def intercept_frac(sx, sy, sdx, sdy, x1, y1, ldx, ldy):
     """P_InterceptVector2(strace, the line's divline)."""
     den = wrap32(fixed_mul(ldy >> 8, sdx) - fixed_mul(ldx >> 8, sdy))

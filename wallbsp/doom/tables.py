@@ -11,13 +11,18 @@ A game's own content (``wallbsp.content``) comes with what DOOM's C code has no 
 for: ``actions`` (a state's action name -> a Python function: ``(play, mobj)`` for a map
 object's state, ``(play, player, psp)`` for a weapon's), ``pickups`` (mobj type -> what
 touching it does, ``(play, player, mobj)`` -> the sound's number or None to leave it),
-``weapon_slots`` (a weapon key's number 0-7 -> the game's weapons on it) and ``ammo_use``
-(weapon -> ammunition a shot takes), and ``types`` (the game's classes -> their numbers).
+``weapon_slots`` (a weapon key's number 0-7 -> the game's weapons on it), ``ammo_use``
+(weapon -> ammunition a shot takes), ``types`` (the game's classes -> their numbers) and
+``ammo`` (a game's own ammunition: its number -> ``AmmoType``; numbers from
+``FIRST_GAME_AMMO``, after DOOM's four and the two C reads past them, so a player's
+``ammo`` list is indexed by the number as DOOM's is; ``ammo_count`` is that list's length).
 
 ``derived`` is a dictionary for values computed once from the tables by their readers
 (the playsim's state rows with their action names resolved): they belong to these tables
 and go with them.
 """
+from typing import NamedTuple
+
 from . import info
 from .fixed import FRACUNIT
 
@@ -28,7 +33,22 @@ FAST_SPEEDS = ((info.MT_BRUISERSHOT, 20, 15), (info.MT_HEADSHOT, 20, 10),
                (info.MT_TROOPSHOT, 20, 10))
 
 
-REGISTRIES = ("actions", "pickups", "weapon_slots", "ammo_use", "types")
+REGISTRIES = ("actions", "pickups", "weapon_slots", "ammo_use", "types", "ammo")
+FIRST_GAME_AMMO = info.am_noammo + 1
+
+
+class AmmoType(NamedTuple):
+    """A game's own ammunition: its name, how much a player holds without and with a
+    backpack, and a clip load (P_GiveAmmo's unit: a weapon found gives two)."""
+    name: str
+    max_amount: int
+    backpack_max: int
+    clip: int
+
+
+def ammo_count(tables) -> int:
+    """The length of a player's ``ammo``: DOOM's four, or up to a game's last own one."""
+    return max(tables.ammo) + 1 if tables.ammo else info.NUMAMMO
 
 
 class Tables:
@@ -36,17 +56,18 @@ class Tables:
     tables of ``normal`` (the tables they were made from)."""
 
     __slots__ = ("states", "mobjinfo", "weaponinfo", "sprnames", "sfx", "doomednum",
-                 "actions", "pickups", "weapon_slots", "ammo_use", "types",
+                 "actions", "pickups", "weapon_slots", "ammo_use", "types", "ammo",
                  "fast", "normal", "derived", "_fast_copy")
 
     def __init__(self, states, mobjinfo, weaponinfo, sprnames, sfx, *, normal=None,
-                 actions=None, pickups=None, weapon_slots=None, ammo_use=None, types=None):
+                 actions=None, pickups=None, weapon_slots=None, ammo_use=None, types=None,
+                 ammo=None):
         self.states, self.mobjinfo = tuple(states), tuple(mobjinfo)
         self.weaponinfo, self.sprnames, self.sfx = tuple(weaponinfo), tuple(sprnames), tuple(sfx)
         self.doomednum = doomednums(self.mobjinfo)
         self.actions, self.pickups = dict(actions or {}), dict(pickups or {})
         self.weapon_slots, self.ammo_use = dict(weapon_slots or {}), dict(ammo_use or {})
-        self.types = dict(types or {})
+        self.types, self.ammo = dict(types or {}), dict(ammo or {})
         self.normal = normal if normal is not None else self
         self.fast = normal is not None
         self.derived = {}
@@ -66,7 +87,7 @@ class Tables:
                  replace=None, **registries):
         """New tables: these (without fast monsters) with records appended to each table,
         ``replace`` ({(table name, index): record}) changed and the ``registries``
-        (``actions``, ``pickups``, ``weapon_slots``, ``ammo_use``, ``types``: dicts) added
+        (``actions``, ``pickups``, ``weapon_slots``, ``ammo_use``, ``types``, ``ammo``: dicts) added
         to: copy on write, these tables stay as they are."""
         base = self.normal
         tables = {"states": list(base.states), "mobjinfo": list(base.mobjinfo),

@@ -3,11 +3,15 @@ editor goes on; the caller asks for the newest tree when it draws and is never b
 
 ``Compiler.submit(level, version)`` hands over a level (a newer one replaces one still
 waiting: only the newest is worth compiling); ``latest()`` is the newest finished
-``Compiled`` (its ``version``, ``tree`` or the one-line ``error``, ``problems``, seconds and
-the tree's ``overlay``, its partitions clipped when first asked)
-or None.  ``compile_now(level, version)`` does the same work in the caller's thread (for
-scripts and tests).  The compile is ``wallbsp.compile_level`` (numpy; most of its time is
-spent outside the interpreter lock, so the window keeps drawing).
+``Compiled`` (its ``version``, ``tree`` or the one-line ``error``, ``problems``, seconds,
+the tree's ``overlay``, its partitions clipped when first asked, and ``kept``: how many
+nodes came from the tree before) or None.  ``compile_now(level, version, previous=...)``
+does the same work in the caller's thread (for scripts and tests).
+
+After the first compile, each level is compiled from the previous tree
+(``bsp.rebuild.update_tree``: only the subtrees an edit reached are built again, a few
+hundredths of a second on Freedoom MAP12 against a third of a second for the whole);
+``Compiler(incremental=False)`` compiles every level whole (``wallbsp.compile_level``).
 """
 from __future__ import annotations
 
@@ -16,6 +20,7 @@ import time
 from typing import NamedTuple
 
 from wallbsp.bsp.build import compile_level
+from wallbsp.bsp.rebuild import update_tree
 from wallbsp.edit.overlay import TreeOverlay
 from wallbsp.edit.problems import problems
 
@@ -29,25 +34,33 @@ class Compiled(NamedTuple):
     problems: list
     seconds: float
     overlay: TreeOverlay | None   # its partition lines clipped when first asked
+    kept: int = 0                 # nodes kept from the previous tree (0: compiled whole)
 
 
-def compile_now(level, version: int = 0, candidates=None, seed: int = 0) -> Compiled:
-    """Compile ``level`` and find its problems, here and now."""
+def compile_now(level, version: int = 0, candidates=None, seed: int = 0,
+                previous: Compiled | None = None, progress=None) -> Compiled:
+    """Compile ``level`` and find its problems, here and now: from ``previous``'s tree
+    when it has one (``update_tree``), else whole (``progress`` as ``compile_level``'s)."""
     start = time.perf_counter()
+    kept = 0
     try:
-        tree, error = compile_level(level, candidates=candidates, seed=seed), None
+        if previous is not None and previous.tree is not None:
+            tree, kept = update_tree(previous.tree, level, candidates, seed)
+        else:
+            tree = compile_level(level, candidates=candidates, seed=seed, progress=progress)
+        error = None
     except ValueError as err:
         tree, error = None, str(err).splitlines()[0]
     found = problems(level, tree)
     overlay = TreeOverlay(tree) if tree is not None else None
-    return Compiled(version, tree, error, found, time.perf_counter() - start, overlay)
+    return Compiled(version, tree, error, found, time.perf_counter() - start, overlay, kept)
 
 
 class Compiler:
     """A worker thread that compiles the newest submitted level."""
 
-    def __init__(self, candidates=None, seed: int = 0):
-        self.candidates, self.seed = candidates, seed
+    def __init__(self, candidates=None, seed: int = 0, incremental: bool = True):
+        self.candidates, self.seed, self.incremental = candidates, seed, incremental
         self._lock = threading.Condition()
         self._waiting = None          # (level, version) not started yet
         self._latest: Compiled | None = None
@@ -100,7 +113,9 @@ class Compiler:
                     return
                 (level, version), self._waiting = self._waiting, None
                 self._busy = True
-            done = compile_now(level, version, self.candidates, self.seed)
+            with self._lock:
+                previous = self._latest if self.incremental else None
+            done = compile_now(level, version, self.candidates, self.seed, previous)
             with self._lock:
                 if self._latest is None or done.version >= self._latest.version:
                     self._latest = done

@@ -1,16 +1,17 @@
 """The tree as something to draw over the map (issue 29's "visual tool"): the partition
 lines clipped to the convex cells they split, the segs with the depth of their node, the
 leaf under a point with its cell, the front-to-back order from a camera and the tree's
-statistics.  Numbers only: the window draws them.
+statistics.  Numbers only: the window draws them (it keeps no overlay of its own).
 
 ``TreeOverlay(tree, bounds)``, ``bounds`` ``(x0, y0, x1, y1)`` the box the root cell is
-(the level's, with a margin, by default); everything is computed once, when first asked.
+(the level's, with a margin, by default); everything is computed once, when first asked
+(a sector's leaf cells once per sector), so making one costs nothing.
 """
 from __future__ import annotations
 
 import numpy as np
 
-from wallbsp.bsp.cells import leaf_cell
+from wallbsp.bsp.cells import clip_convex, leaf_cell
 
 __all__ = ["TreeOverlay"]
 
@@ -23,16 +24,22 @@ class TreeOverlay:
         self.bounds = bounds if bounds is not None else _bounds(tree)
         self._pieces = None
         self._depth = None
+        self._segs = None
+        self._cells: dict = {}
+        self._parents = None
+        self._array = None
 
     @property
     def node_depth(self) -> np.ndarray:
         """Each node's depth (the root 0)."""
         if self._depth is None:
+            child = self.tree.node_child
             depth = np.zeros(self.tree.node_count, dtype=np.int32)
-            for node, kids in enumerate(self.tree.node_child.tolist()):
-                for kid in kids:
-                    if kid >= 0:
-                        depth[kid] = depth[node] + 1
+            frontier, d = np.array([self.tree.root]), 0
+            while len(frontier) and frontier[0] >= 0:
+                depth[frontier] = d
+                below = child[frontier].ravel()
+                frontier, d = below[below >= 0], d + 1
             self._depth = depth
         return self._depth
 
@@ -42,6 +49,15 @@ class TreeOverlay:
         if self._pieces is None:
             self._pieces = self._chords()
         return self._pieces
+
+    def partition_array(self) -> np.ndarray:
+        """``partitions()`` as an ``(P, 4)`` array of ``x1, y1, x2, y2`` (for drawing;
+        made once)."""
+        if self._array is None:
+            pieces = self.partitions()
+            self._array = np.array([(*p, *q) for *_, p, q in pieces],
+                                   np.float64).reshape(-1, 4)
+        return self._array
 
     def _chords(self) -> list:
         # Each line as P0 + t * (b, -a); the box and then every ancestor's half-plane cut
@@ -100,10 +116,10 @@ class TreeOverlay:
         """``(xy, depth, wall)``: every seg's ends ``(S, 4)``, its node's depth and its
         wall, for colouring segs by depth."""
         tree = self.tree
-        depth = np.zeros(tree.seg_count, dtype=np.int32)
-        for node, (start, stop) in enumerate(tree.node_segs.tolist()):
-            depth[start:stop] = self.node_depth[node]
-        return tree.seg_xy, depth, tree.seg_wall
+        if self._segs is None:
+            counts = tree.node_segs[:, 1] - tree.node_segs[:, 0]
+            self._segs = np.repeat(self.node_depth, counts)
+        return tree.seg_xy, self._segs, tree.seg_wall
 
     def leaf_at(self, x, y):
         """``(leaf, sector, cell)`` under (x, y): the leaf's index, its sector (None
@@ -113,12 +129,52 @@ class TreeOverlay:
         sector = int(tree.leaf_sector[leaf])
         return leaf, (None if sector < 0 else sector), cell
 
+    def cells(self, sector) -> list:
+        """The convex cells (polygons within ``bounds``) of the leaves that ``sector``
+        fills: the sector's area as the tree sees it.  Made when first asked, by cutting
+        ``bounds`` along each leaf's path from the root."""
+        if sector not in self._cells:
+            self._cells[sector] = [self._leaf_polygon(leaf) for leaf in
+                                   np.flatnonzero(self.tree.leaf_sector == sector).tolist()]
+        return self._cells[sector]
+
+    def leaf_count(self, sectors) -> int:
+        """How many leaves ``sectors`` fill (what drawing their cells would cost)."""
+        counts = np.bincount(self.tree.leaf_sector[self.tree.leaf_sector >= 0],
+                             minlength=len(self.tree.level.sectors))
+        return int(sum(counts[s] for s in sectors if 0 <= s < len(counts)))
+
+    def _leaf_polygon(self, leaf) -> list:
+        if self._parents is None:           # (parent, slot) of every node and leaf code
+            child = self.tree.node_child
+            rows, cols = np.nonzero(np.ones_like(child, bool))
+            self._parents = dict(zip(child.ravel().tolist(), zip(rows.tolist(), cols.tolist())))
+        path, code = [], ~leaf
+        while code in self._parents:
+            node, slot = self._parents[code]
+            path.append((node, slot))
+            code = node
+        x0, y0, x1, y1 = self.bounds
+        cell = [(x0, y0), (x1, y0), (x1, y1), (x0, y1)]
+        for node, slot in reversed(path):
+            cell = clip_convex(cell, self.tree.node_line[node], -1 if slot == 0 else 1)
+            if len(cell) < 3:
+                break
+        return cell
+
     def order(self, x, y) -> list:
         """Seg ids nearest first from (x, y) (the renderer's front-to-back order)."""
         return self.tree.front_to_back(x, y)
 
     def stats(self) -> dict:
-        return self.tree.stats()
+        """The tree's statistics (``BSPTree.stats`` but for the level's hash, which costs
+        a fifth of a second on a big map)."""
+        tree, walls = self.tree, len(self.tree.level.walls)
+        return {"walls": walls, "segs": tree.seg_count, "splits": tree.seg_count - walls,
+                "nodes": tree.node_count, "leaves": len(tree.leaf_sector),
+                "max_depth": tree.max_depth,
+                "candidates": "all" if tree.candidates is None else tree.candidates,
+                "seed": tree.seed, "build_seconds": tree.build_seconds}
 
 
 def _bounds(tree):

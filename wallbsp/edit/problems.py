@@ -9,6 +9,14 @@ with no texture, a one-sided wall with no middle texture, in a level that uses t
 a name the level's resources lack), ``"stuck"`` (a thing whose DOOM radius overlaps a
 one-sided or blocking wall, or that stands in the void), ``"unreachable"`` (a sector no
 walk from the start reaches: see ``reach``).  The window draws them where they are.
+
+Each kind is found again only when what it reads changed: an edit makes a new ``Level``
+that shares the parts it did not change (the same sectors after a wall's texture is set,
+the same ``Wall`` objects but the few it touched), so the last level's answer for a kind
+is kept while the parts it reads are the very same objects, or, for the walls, the walls
+that are not the same objects agree in the fields the kind reads (``_again``).  Raising a
+floor finds the textures and reachability again, not the crossings, open boundaries and
+stuck things.
 """
 from __future__ import annotations
 
@@ -33,9 +41,50 @@ def problems(level: Level, tree=None, resources=None) -> list[tuple[str, object,
     """What is wrong (see the module docstring); ``resources`` (a ``ResourceSet``), when
     given, is asked for the names the level uses."""
     found = []
-    for part in (_unclosed(level), _crossings(level), _textures(level, resources),
-                 _stuck(level, tree), _unreachable(level)):
+    walls, vertices = level.walls, level.vertices
+    sides = _WallsBy(walls, ("v1", "v2", "front", "back"))
+    for part in (_again("unclosed", (sides, vertices), lambda: _unclosed(level)),
+                 _again("crossings", (_WallsBy(walls, ("v1", "v2")), vertices),
+                        lambda: _crossings(level)),
+                 _again("textures", (walls, level.sectors, resources),
+                        lambda: _textures(level, resources)),
+                 _again("stuck", (_WallsBy(walls, ("v1", "v2", "front", "back", "blocks")),
+                                  vertices, level.things, level.thing_types),
+                        lambda: _stuck(level, tree)),
+                 _again("unreachable", (walls, vertices, level.sectors, level.start),
+                        lambda: _unreachable(level))):
         found.extend(part[:MAX_EACH])
+    return found
+
+
+_LAST: dict = {}        # kind -> (the parts of the level it read, its problems)
+
+
+class _WallsBy:
+    """A level's walls as far as some of their fields go."""
+
+    def __init__(self, walls, fields):
+        self.walls, self.fields = walls, fields
+
+    def same(self, other) -> bool:
+        if self.walls is other.walls:
+            return True
+        if len(self.walls) != len(other.walls):
+            return False
+        return all(getattr(a, f) == getattr(b, f) for a, b in zip(self.walls, other.walls)
+                   if a is not b for f in self.fields)
+
+
+def _again(kind, parts, find) -> list:
+    """``find()``, unless the last level's ``kind`` read the same parts: the very same
+    objects (a level's parts are never changed in place), or walls that agree in the
+    fields it reads (a tree only locates by the walls, so it is not one of the parts)."""
+    last = _LAST.get(kind)
+    if last is not None and len(last[0]) == len(parts) and all(
+            a.same(b) if isinstance(a, _WallsBy) else a is b for a, b in zip(last[0], parts)):
+        return last[1]
+    found = find()
+    _LAST[kind] = (parts, found)
     return found
 
 

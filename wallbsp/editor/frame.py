@@ -49,17 +49,21 @@ def draw_frame(session, flip=True):
 
 def static_layer(session, arrays):
     """The cached static picture, with the tree's partitions and depth-coloured segs when
-    the tree overlay is on and a tree is ready."""
+    the tree overlay is on and a tree is ready, and the problems' rings when shown."""
     live = session.compiler
-    overlay = live.overlay if live is not None and session.show_tree else None
-    under = over = None
-    if overlay is not None:
+    overlay = live.overlay if live is not None else None
+    under = over = top = None
+    if overlay is not None and session.show_tree:
         from wallbsp.editor.treeview import draw_partitions, draw_segs_by_depth
         under = lambda surface, view: draw_partitions(surface, view, overlay)      # noqa: E731
         over = lambda surface, view: draw_segs_by_depth(surface, view, overlay)    # noqa: E731
-    extra = (session.show_tree, overlay.version if overlay is not None else None)
+    if overlay is not None and session.show_problems:
+        from wallbsp.editor.treeview import draw_problem_rings
+        top = lambda surface, view: draw_problem_rings(surface, view, live)        # noqa: E731
+    extra = (session.show_tree, session.show_problems,
+             id(live.latest) if overlay is not None else None)
     return session.layer.surface(session.view, arrays, session.mode, session.display, extra,
-                                 under, over)
+                                 under, over, top)
 
 
 # -- the selection and the hover -----------------------------------------------------------

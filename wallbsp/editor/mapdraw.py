@@ -4,7 +4,8 @@ The editor draws this layer only when the view or the level changes (``StaticLay
 every frame blits it and draws the few things that move over it (``overlay``: hover,
 selection, the shape being drawn).  Only what is on screen is drawn: the walls' window
 coordinates come from one numpy transform, and the ones whose box misses the window are
-dropped before any pygame call.  Colours follow Eureka's habits: black ground, blue grid
+dropped before anything is drawn; walls, ticks, vertices and things are each drawn
+in one call of the renderer's 2-D kernels (``raster``).  Colours follow Eureka's habits: black ground, blue grid
 (every eighth line brighter), one-sided walls white, two-sided grey, walls with a special
 green, things as squares coloured by kind (``thingkinds``).
 """
@@ -13,7 +14,7 @@ from __future__ import annotations
 import numpy as np
 import pygame
 
-from wallbsp.editor.raster import draw_lines
+from wallbsp.editor.raster import draw_colored_lines, draw_squares, mapped
 from wallbsp.editor.thingkinds import kind_of
 from wallbsp.editor.view import View, grid_lines
 
@@ -49,6 +50,13 @@ class LevelArrays:
         self.thing_dim = [tuple(int(c * DIM) for c in k.color) for k in kinds]
         self.thing_angle = np.radians([t.angle for t in level.things])
 
+    def mapped_colors(self, surface, bright: bool) -> np.ndarray:
+        """Each thing's colour (bright or dim) as ``surface``'s pixel values (made once)."""
+        key = (bright, surface.get_bitsize(), surface.get_masks())
+        if getattr(self, "_mapped", (None,))[0] != key:
+            self._mapped = (key, mapped(surface, self.thing_color if bright else self.thing_dim))
+        return self._mapped[1]
+
     def bounds(self):
         pts = np.concatenate([self.vertices, self.things])
         if not len(pts):
@@ -81,9 +89,10 @@ class StaticLayer:
         self.scrolls = 0        # how many times it was scrolled, its uncovered strips drawn
 
     def surface(self, view: View, arrays: LevelArrays, mode: str, like, extra=None,
-                under=None, over=None):
+                under=None, over=None, top=None):
         """``under``/``over``: painters ``f(surface, view)`` drawn below and above the walls
-        (the tree overlay); ``extra`` names what they show, so the layer knows to redraw."""
+        (the tree overlay), ``top`` over everything (the problems); ``extra`` names what
+        they show, so the layer knows to redraw."""
         key = (view.key(), id(arrays), mode, extra)
         if key == self.key and self.picture is not None:
             return self.picture
@@ -94,7 +103,7 @@ class StaticLayer:
                 self.picture.set_clip(strip)
                 view.region = strip
                 try:
-                    draw_static(self.picture, view, arrays, mode, under, over)
+                    draw_static(self.picture, view, arrays, mode, under, over, top)
                 finally:
                     view.region = None
                     self.picture.set_clip(None)
@@ -102,7 +111,7 @@ class StaticLayer:
         else:
             if self.picture is None or self.picture.get_size() != (view.width, view.height):
                 self.picture = pygame.Surface((view.width, view.height), 0, like)
-            draw_static(self.picture, view, arrays, mode, under, over)
+            draw_static(self.picture, view, arrays, mode, under, over, top)
             self.draws += 1
         self.key = key
         return self.picture
@@ -133,7 +142,8 @@ def _uncovered(shift, width, height):
     return strips
 
 
-def draw_static(surface, view: View, arrays: LevelArrays, mode: str, under=None, over=None):
+def draw_static(surface, view: View, arrays: LevelArrays, mode: str, under=None, over=None,
+                top=None):
     surface.fill(COLORS["background"])
     if view.show_grid and under is None:      # the tree's partition lines replace the grid
         draw_grid(surface, view)
@@ -147,45 +157,50 @@ def draw_static(surface, view: View, arrays: LevelArrays, mode: str, under=None,
     if mode == "vertices" or view.scale >= 0.5:
         draw_vertices(surface, view, arrays.vertices, mode == "vertices")
     draw_things(surface, view, arrays, bright=mode == "things")
+    if top is not None:
+        top(surface, view)
 
 
 def draw_grid(surface, view: View):
+    """The grid's lines, every eighth brighter and the axes brightest (drawn last)."""
     xs, ys, step = grid_lines(view)
-    line = pygame.draw.line
-    for x in xs:
-        px = view.to_screen(x, 0)[0]
-        color = "axis" if x == 0 else "grid_major" if x % (step * 8) == 0 else "grid"
-        line(surface, COLORS[color], (px, 0), (px, view.height))
-    for y in ys:
-        py = view.to_screen(0, y)[1]
-        color = "axis" if y == 0 else "grid_major" if y % (step * 8) == 0 else "grid"
-        line(surface, COLORS[color], (0, py), (view.width, py))
+    x0, y0, x1, y1 = view.drawn_box()
+    px = np.rint(view.width / 2 + (xs - view.cx) * view.scale).astype(np.int64).tolist()
+    py = np.rint(view.height / 2 - (ys - view.cy) * view.scale).astype(np.int64).tolist()
+    rects = [((0 if x == 0 else 1 if x % (step * 8) == 0 else 2), (p, y0, 1, y1 - y0))
+             for x, p in zip(xs.tolist(), px) if x0 <= p < x1]
+    rects += [((0 if y == 0 else 1 if y % (step * 8) == 0 else 2), (x0, p, x1 - x0, 1))
+              for y, p in zip(ys.tolist(), py) if y0 <= p < y1]
+    colors = (COLORS["axis"], COLORS["grid_major"], COLORS["grid"])
+    fill = surface.fill
+    for klass, rect in sorted(rects, key=lambda r: -r[0]):     # the brighter lines on top
+        fill(colors[klass], rect)
 
 
 def draw_walls(surface, idx, xy, arrays: LevelArrays, ticks=False, box=None):
     """Two-sided walls first, so one-sided and special walls stay on top where they meet;
-    all the walls of a colour in one numpy pass (``raster``)."""
+    all of them in one call (``raster``)."""
     two = arrays.two_sided[idx]
     special = arrays.special[idx]
-    for mask, color in ((two & ~special, "two_sided"), (~two & ~special, "one_sided"),
-                        (special, "special")):
-        draw_lines(surface, xy[mask], COLORS[color], box)
+    klass = np.where(special, 2, np.where(two, 0, 1))
+    order = np.argsort(klass, kind="stable")
+    palette = mapped(surface, [COLORS["two_sided"], COLORS["one_sided"], COLORS["special"]])
+    draw_colored_lines(surface, xy[order], palette[klass[order]], box)
     if ticks:
-        draw_ticks(surface, xy)
+        draw_ticks(surface, xy, box)
 
 
-def draw_ticks(surface, xy):
+def draw_ticks(surface, xy, box=None):
     """A short tick from each wall's middle towards its front (right) side."""
-    d = xy[:, 2:] - xy[:, :2]
+    d = (xy[:, 2:] - xy[:, :2]).astype(np.float64)
     length = np.hypot(d[:, 0], d[:, 1])
     long = length >= 4 * TICK_PIXELS
     mid = (xy[long, :2] + xy[long, 2:]) / 2
     # the window's y points down, so the map's right of (dx, dy) is (-dy, dx) here
     normal = np.stack([-d[long, 1], d[long, 0]], axis=1) / length[long, None] * TICK_PIXELS
-    end = mid + normal
-    line, color = pygame.draw.line, COLORS["tick"]
-    for (x1, y1), (x2, y2) in zip(mid.tolist(), end.tolist()):
-        line(surface, color, (x1, y1), (x2, y2))
+    ends = np.rint(np.concatenate([mid, mid + normal], axis=1))
+    color = mapped(surface, [COLORS["tick"]])
+    draw_colored_lines(surface, ends, np.repeat(color, len(ends)), box)
 
 
 def draw_vertices(surface, view: View, vertices, large: bool):
@@ -194,10 +209,10 @@ def draw_vertices(surface, view: View, vertices, large: bool):
     xy = view.screen_array(vertices)
     x0, y0, x1, y1 = view.drawn_box()
     on = (xy[:, 0] >= x0 - 4) & (xy[:, 0] <= x1 + 4) & (xy[:, 1] >= y0 - 4) & (xy[:, 1] <= y1 + 4)
-    half = 2 if large else 1
-    rect, color = surface.fill, COLORS["vertex"]
-    for x, y in xy[on].tolist():
-        rect(color, (x - half, y - half, 2 * half + 1, 2 * half + 1))
+    xy = xy[on]
+    half = np.full(len(xy), 2 if large else 1)
+    color = mapped(surface, [COLORS["vertex"]])
+    draw_squares(surface, xy, half, np.repeat(color, len(xy)), True, view.drawn_box())
 
 
 def draw_things(surface, view: View, arrays: LevelArrays, bright: bool):
@@ -209,14 +224,11 @@ def draw_things(surface, view: View, arrays: LevelArrays, bright: bool):
     x0, y0, x1, y1 = view.drawn_box()
     on = np.flatnonzero((xy[:, 0] + r >= x0) & (xy[:, 1] + r >= y0) &
                         (xy[:, 0] - r <= x1) & (xy[:, 1] - r <= y1))
-    colors = arrays.thing_color if bright else arrays.thing_dim
-    rect, line = pygame.draw.rect, pygame.draw.line
+    colors = arrays.mapped_colors(surface, bright)[on]
+    box = view.drawn_box()
+    draw_squares(surface, xy[on], r[on].astype(np.int64), colors, False, box)
     ticks = r[on] >= 4
     ends = xy[on] + np.stack([np.cos(arrays.thing_angle[on]), -np.sin(arrays.thing_angle[on])],
                              axis=1) * r[on, None]
-    for i, (px, py), radius, tick, end in zip(on.tolist(), xy[on].tolist(), r[on].tolist(),
-                                              ticks.tolist(), ends.tolist()):
-        color = colors[i]
-        rect(surface, color, (px - radius, py - radius, 2 * radius + 1, 2 * radius + 1), 1)
-        if tick:
-            line(surface, color, (px, py), end)
+    lines = np.concatenate([xy[on].astype(np.float64), np.rint(ends)], axis=1)[ticks]
+    draw_colored_lines(surface, lines, colors[ticks], box)

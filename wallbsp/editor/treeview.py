@@ -1,16 +1,16 @@
 """The tree, live: the level compiled beside the window after each edit, and drawn.
 
-``LiveTree`` compiles (the model's ``compile_now``: the tree and the problems) on a worker
-thread whenever the model's ``version`` moves on, and hands the window a ``TreeOverlay`` (the
-tree, each partition line clipped to its convex cell by the model's overlay, each seg's
-colour by the depth of its node, the problems) when it is done: the window never waits.
-An edit made while a compile runs is compiled next; the ones between are skipped.  The
-tree after an edit is a quick one (``LIVE_CANDIDATES`` candidate partitions per node, about
-a third of the default's time: fresh within 0.5 s on Freedoom MAP12); once no edit has come
-for ``FULL_AFTER`` seconds the compiler's default tree (the one ``compile`` and the export
-make) replaces it.  The overlays (``n``: partitions and segs by depth; always, with the tree:
-the leaf under the mouse, the statistics; ``o``: the front-to-back order from the camera,
-animated) are Abrash's "visual tool" for the compiler (S004).
+``LiveTree`` compiles (the model's ``compile_now``: the tree, the problems and the model's
+``TreeOverlay``, the window's only one) on a worker thread whenever the model's ``version``
+moves on, and hands the window the ``Compiled`` result when it is done: the window never
+waits.  An edit made while a compile runs is compiled next; the ones between are skipped.
+After an edit the tree is brought up to date from the one before (``bsp.rebuild``: only
+the subtrees the edit reached are built again; a few hundredths of a second on Freedoom
+MAP12); once no edit has come for ``FULL_AFTER`` seconds the whole level is compiled
+afresh (the tree ``compile`` and the export make), and that compile is given up as soon as
+another edit comes.  The overlays (``n``: partitions and segs by depth; always, with the
+tree: the leaf under the mouse, the statistics; ``o``: the front-to-back order from the
+camera, animated) are Abrash's "visual tool" for the compiler (S004).
 """
 from __future__ import annotations
 
@@ -21,82 +21,43 @@ import time
 import numpy as np
 import pygame
 
-from wallbsp.app.mapview import depth_color, node_depths
-from wallbsp.bsp.cells import clip_convex, leaf_cell as cell_of_leaf
+from wallbsp.app.mapview import depth_color
+from wallbsp.bsp.cells import leaf_cell as cell_of_leaf
 from wallbsp.edit.compiler import compile_now
-from wallbsp.edit.overlay import TreeOverlay as PartitionOverlay
 from wallbsp.editor.mapdraw import COLORS, visible_segments
 
-__all__ = ["LiveTree", "TreeOverlay", "draw_tree_overlays", "leaf_cell", "leaf_cells",
-           "fill_sectors"]
+__all__ = ["LiveTree", "draw_tree_overlays", "draw_problem_rings", "leaf_cell", "fill_sectors",
+           "problem_point"]
 
 PARTITION = (70, 140, 230)
 LEAF = (60, 200, 220)
 ORDER_SECONDS = 4.0          # the front-to-back animation shows every seg in this long
 PROBLEM = (255, 60, 200)
-LIVE_CANDIDATES = 4          # the quick tree's candidate partitions per node
-FULL_AFTER = 1.0             # seconds without an edit before the default tree is compiled
+FULL_AFTER = 1.0             # seconds without an edit before the whole level is compiled
 _AT = re.compile(r"\((-?\d+(?:\.\d+)?), (-?\d+(?:\.\d+)?)\)")
 
 
-class TreeOverlay:
-    """What the overlays draw, made on the worker thread from one compiled tree."""
-
-    def __init__(self, tree, version, seconds, problems):
-        self.tree, self.version, self.seconds = tree, version, seconds
-        self.problems = problems
-        level = tree.level
-        v = np.array(level.vertices, np.float64).reshape(-1, 2)
-        lo, hi = (v.min(axis=0), v.max(axis=0)) if len(v) else (np.zeros(2), np.ones(2))
-        pad = 0.03 * float(max(hi - lo)) + 64
-        self.bounds = (lo[0] - pad, lo[1] - pad, hi[0] + pad, hi[1] + pad)
-        pieces = PartitionOverlay(tree, self.bounds).partitions()
-        self.partitions = np.array([(*p, *q) for *_, p, q in pieces],
-                                   np.float64).reshape(-1, 4)
-        depth = node_depths(tree)
-        levels = max(depth, default=0) + 1
-        seg_depth = np.zeros(tree.seg_count, np.int64)
-        for node, (start, stop) in enumerate(tree.node_segs.tolist()):
-            seg_depth[start:stop] = depth[node]
-        palette = np.array([depth_color(d, levels) for d in range(levels)], np.int64)
-        self.seg_colors = palette[seg_depth] if tree.seg_count else np.zeros((0, 3), np.int64)
-        # the numbers the corner shows (tree.stats() also hashes the level: 0.2 s on MAP12)
-        self.stats = {"walls": len(level.walls), "segs": tree.seg_count,
-                      "splits": tree.seg_count - len(level.walls), "nodes": tree.node_count,
-                      "max_depth": tree.max_depth, "candidates": tree.candidates}
-        self._cells = None
-        self._points = None
-
-    @property
-    def cells(self) -> dict:
-        """``leaf_cells`` of the tree, made when first asked (the worker makes them just
-        after handing the overlay over, so the window rarely does)."""
-        if self._cells is None:
-            self._cells = leaf_cells(self.tree, self.bounds)
-        return self._cells
-
-    def problem_points(self):
-        """``[(map point, message)]`` of the problems that have a place (made once)."""
-        if self._points is None:
-            level = self.tree.level
-            found = ((problem_point(level, k, w, m), m) for k, w, m in self.problems)
-            self._points = [(p, m) for p, m in found if p is not None]
-        return self._points
+class _Superseded(Exception):
+    """A newer edit came while the whole level was being compiled: that compile stops."""
 
 
 class LiveTree:
-    """The background compile of ``editor``'s level; ``poll()`` picks up a finished one."""
+    """The background compile of ``editor``'s level; ``poll()`` picks up a finished one.
+    ``latest`` is the newest finished ``Compiled`` (``edit.compiler``), or None."""
 
-    def __init__(self, editor, problems=True, quick=LIVE_CANDIDATES):
+    def __init__(self, editor, problems=True, whole_after=FULL_AFTER):
         self.editor = editor
-        self.quick = quick             # the quick tree's candidates; None: the default only
-        self.overlay = None            # the newest finished TreeOverlay
-        self.error = None              # the last compile's failure, one line
-        self.stamp = None              # changes when a new overlay arrives (layers redraw)
+        self.whole_after = whole_after  # None: never compile the whole level again
+        self.latest = None              # the newest finished Compiled
+        self.error = None               # the last compile's failure, one line
+        self.stamp = None               # changes when a new result arrives (layers redraw)
         self.busy = False
+        self.drawn = False              # the tree overlay is shown: its lines made here too
         self.with_problems = problems
-        self._wanted = None            # (version, level) to compile next
+        self._wanted = None             # (version, level) to compile next
+        self._asked = None              # the version last asked for
         self._done = None
+        self._points = (None, None)
         self._lock = threading.Condition()
         self._closed = False
         self._thread = threading.Thread(target=self._work, name="wallbsp-edit-compile",
@@ -104,35 +65,58 @@ class LiveTree:
         self._thread.start()
         self.request()
 
+    @property
+    def overlay(self):
+        """The newest tree's ``TreeOverlay`` (the model's), or None."""
+        return self.latest.overlay if self.latest is not None else None
+
+    def current(self) -> bool:
+        """Whether the newest tree is the level's as it is now."""
+        return self.latest is not None and self.latest.version == self.editor.version
+
     def request(self):
         with self._lock:
             self._wanted = (self.editor.version, self.editor.level)
+            self._asked = self.editor.version
             self._lock.notify()
 
     def poll(self):
         """Ask for a compile when the level changed; take a finished one.  True when the
-        overlay is up to date with the level."""
-        if self._wanted is None or self._wanted[0] != self.editor.version:
-            if self.overlay is None or self.overlay.version != self.editor.version:
-                self.request()
+        tree is up to date with the level."""
+        if self._asked != self.editor.version and not self.current():
+            self.request()          # once a version: not again while it is compiling
         with self._lock:
             done, self._done = self._done, None
         if done is not None:
             if isinstance(done, str):
                 self.error = done
             else:
-                self.overlay, self.error = done, None
-            self.stamp = (self.overlay.version if self.overlay else None, self.error)
-        return self.overlay is not None and self.overlay.version == self.editor.version
+                self.latest, self.error = done, None
+            self.stamp = (self.latest.version if self.latest else None, self.error,
+                          id(self.latest))
+        return self.current()
 
     def wait(self, timeout=30.0):
-        """Block until the current level's tree is ready (scripts, tests, benchmarks)."""
+        """Block until the current level's tree is ready (scripts, tests, benchmarks);
+        the ``Compiled`` result."""
         end = time.perf_counter() + timeout
         while not self.poll() and time.perf_counter() < end:
             if self.error is not None and not self.busy and self._wanted is None:
                 break
-            time.sleep(0.01)
-        return self.overlay
+            time.sleep(0.002)
+        return self.latest
+
+    def problem_points(self):
+        """``(points (P, 2), messages)`` of the newest problems that have a place (made
+        once per result)."""
+        latest = self.latest
+        if latest is not None and self._points[0] is not latest:
+            level = latest.tree.level
+            found = ((problem_point(level, k, w, m), m) for k, w, m in latest.problems)
+            placed = [(p, m) for p, m in found if p is not None]
+            self._points = (latest, (np.array([p for p, _ in placed], np.float64).reshape(-1, 2),
+                                     [m for _, m in placed]))
+        return self._points[1] if latest is not None else (np.zeros((0, 2)), [])
 
     def close(self):
         with self._lock:
@@ -140,6 +124,7 @@ class LiveTree:
             self._lock.notify()
 
     def _work(self):
+        base = None                     # the newest tree compiled, to update after an edit
         while True:
             with self._lock:
                 while self._wanted is None and not self._closed:
@@ -148,19 +133,26 @@ class LiveTree:
                     return
                 (version, level), self._wanted = self._wanted, None
                 self.busy = True
-            self._hand_over(self._compile(version, level, self.quick))
-            if self.quick is not None and self._quiet_for(FULL_AFTER):
-                self._hand_over(self._compile(version, level, None))
+            result = self._compile(version, level, base)
+            self._hand_over(result)
+            base = result if not isinstance(result, str) else base
+            if base is not None and base.kept and self.whole_after is not None \
+                    and self._quiet_for(self.whole_after):
+                whole = self._compile(version, level, None, self._stop_if_wanted)
+                if whole is not None:
+                    self._hand_over(whole)
+                    base = whole if not isinstance(whole, str) else base
+
+    def _stop_if_wanted(self, *_):
+        if self._wanted is not None or self._closed:
+            raise _Superseded
 
     def _hand_over(self, result):
         with self._lock:
-            # the quick tree always (the window waits for nothing else); the default one
-            # only if no newer edit waits for its own quick tree
+            # the tree after an edit always; the whole level's only if no newer edit waits
             if self.busy or self._wanted is None:
                 self._done = result
             self.busy = False
-        if not isinstance(result, str):
-            _ = result.cells                        # made here, not in the window
 
     def _quiet_for(self, seconds) -> bool:
         """Whether no edit comes (and no close) within ``seconds``."""
@@ -168,70 +160,56 @@ class LiveTree:
             self._lock.wait_for(lambda: self._wanted is not None or self._closed, seconds)
             return self._wanted is None and not self._closed
 
-    def _compile(self, version, level, candidates=None):
-        """The model's compile and problems (``edit.compiler.compile_now``), then what the
-        overlays draw, all on this thread."""
+    def _compile(self, version, level, previous=None, progress=None):
+        """The model's compile and problems (``edit.compiler.compile_now``), on this
+        thread: from ``previous`` when given, else the whole level (None: given up)."""
         try:
-            compiled = compile_now(level, version, candidates)
+            compiled = compile_now(level, version, previous=previous, progress=progress)
+        except _Superseded:
+            return None
         except Exception as err:            # noqa: BLE001 - the worker must outlive any
             return f"not compiled: {type(err).__name__}: {err}"    # level; the window says why
         if compiled.tree is None:
             return f"not compiled: {compiled.error}"
-        problems = compiled.problems if self.with_problems else []
-        return TreeOverlay(compiled.tree, version, compiled.seconds, problems)
+        if self.drawn:                      # what the overlay draws, here, not in a frame
+            compiled.overlay.partition_array()
+            compiled.overlay.segs()
+        return compiled if self.with_problems else compiled._replace(problems=[])
 
 
 # -- drawing ---------------------------------------------------------------------------------
 
-def draw_partitions(surface, view, overlay: TreeOverlay):
+def draw_partitions(surface, view, overlay):
     """Under the walls: each partition line clipped to its cell (a static-layer painter)."""
-    _, xy = visible_segments(view, overlay.partitions)
+    _, xy = visible_segments(view, overlay.partition_array())
     line = pygame.draw.line
     for x1, y1, x2, y2 in xy.tolist():
         line(surface, PARTITION, (x1, y1), (x2, y2))
 
 
-def draw_segs_by_depth(surface, view, overlay: TreeOverlay):
+def draw_segs_by_depth(surface, view, overlay):
     """Over the walls: each seg in its node's depth colour (shallow red ... deep violet)."""
-    idx, xy = visible_segments(view, overlay.tree.seg_xy)
-    colors = overlay.seg_colors[idx].tolist()
+    seg_xy, depth, _ = overlay.segs()
+    idx, xy = visible_segments(view, seg_xy)
+    levels = int(depth.max(initial=0)) + 1
+    palette = np.array([depth_color(d, levels) for d in range(levels)], np.int64)
+    colors = palette[depth[idx]].tolist()
     line = pygame.draw.line
     for (x1, y1, x2, y2), c in zip(xy.tolist(), colors):
         line(surface, c, (x1, y1), (x2, y2), 2)
-
-
-def leaf_cells(tree, bounds) -> dict:
-    """sector -> the convex cells of its leaves (polygons in map units), from one walk
-    down the tree cutting ``bounds`` at each node: a sector's area as the tree sees it."""
-    x0, y0, x1, y1 = bounds
-    cells = {}
-    stack = [(tree.root, [(x0, y0), (x1, y0), (x1, y1), (x0, y1)])]
-    lines, child, leaf_sector = tree.node_line, tree.node_child, tree.leaf_sector
-    while stack:
-        node, cell = stack.pop()
-        if len(cell) < 3:
-            continue
-        if node < 0:
-            sector = int(leaf_sector[~node])
-            if sector >= 0:
-                cells.setdefault(sector, []).append(cell)
-            continue
-        line = tuple(float(v) for v in lines[node])
-        front, back = (int(c) for c in child[node])
-        stack.append((front, clip_convex(cell, line, -1)))
-        stack.append((back, clip_convex(cell, line, 1)))
-    return cells
 
 
 def fill_sectors(session, surface, sectors, color, alpha=48, limit=3000):
     """Shade ``sectors`` by their leaves' cells, when the newest tree is the level's own
     (an older tree's sector numbers may no longer be these); at most ``limit`` cells."""
     live = session.compiler
-    overlay = live.overlay if live is not None else None
-    if overlay is None or overlay.version != session.editor.version or not sectors:
+    if live is None or not live.current() or not sectors:
         return
-    polygons = [c for s in sectors for c in overlay.cells.get(s, ())]
-    if not polygons or len(polygons) > limit:
+    overlay = live.overlay
+    if overlay.leaf_count(sectors) > limit:
+        return
+    polygons = [c for s in sectors for c in overlay.cells(s)]
+    if not polygons:
         return
     view = session.view
     shapes = [[view.to_screen(x, y) for x, y in cell] for cell in polygons]
@@ -259,16 +237,14 @@ def draw_tree_overlays(session, surface):
     overlay = live.overlay if live is not None else None
     if overlay is None:
         return
-    view = session.view
     if session.show_tree:
         _leaf_under_mouse(session, surface, overlay)
     if session.show_order:
         _order(session, surface, overlay)
     if session.show_problems:
-        _problems(session, surface, overlay)
+        _problem_under_mouse(session, surface, live)
     if session.show_tree or session.show_order:
-        _stats(session, surface, overlay, live)
-    del view
+        _stats(session, surface, live)
 
 
 def _leaf_under_mouse(session, surface, overlay):
@@ -317,19 +293,35 @@ def _order(session, surface, overlay):
     surface.blit(text, (px + 10, py + 8))
 
 
-def _problems(session, surface, overlay):
-    """Each problem as a magenta ring where it is, its message beside the ring under the
-    mouse."""
-    view = session.view
+RING = 9                     # a problem's ring's radius, pixels
+
+
+def draw_problem_rings(surface, view, live):
+    """Each problem as a magenta ring where it is (a static-layer painter)."""
+    points, _ = live.problem_points()
+    if not len(points):
+        return
+    xy = view.screen_array(points)
+    x0, y0, x1, y1 = view.drawn_box()
+    on = (xy[:, 0] >= x0 - 2 * RING) & (xy[:, 0] <= x1 + 2 * RING) \
+        & (xy[:, 1] >= y0 - 2 * RING) & (xy[:, 1] <= y1 + 2 * RING)
+    circle = pygame.draw.circle
+    for px, py in xy[on].tolist():
+        circle(surface, PROBLEM, (px, py), RING, 2)
+
+
+def _problem_under_mouse(session, surface, live):
+    """The message of the problem whose ring is under the mouse, beside it."""
+    points, messages = live.problem_points()
+    if not len(points):
+        return
+    xy = session.view.screen_array(points)
     mx, my = session.mouse
-    for point, message in overlay.problem_points():
-        px, py = view.to_screen(*point)
-        if not (-20 <= px <= view.width + 20 and -20 <= py <= view.height + 20):
-            continue
-        pygame.draw.circle(surface, PROBLEM, (px, py), 9, 2)
-        if abs(px - mx) < 12 and abs(py - my) < 12:
-            text = session.small_font.render(message, True, PROBLEM)
-            surface.blit(text, (px + 12, py - 18))
+    near = np.flatnonzero((np.abs(xy[:, 0] - mx) < 12) & (np.abs(xy[:, 1] - my) < 12))
+    if len(near):
+        px, py = xy[near[0]].tolist()
+        text = session.small_font.render(messages[near[0]], True, PROBLEM)
+        surface.blit(text, (px + 12, py - 18))
 
 
 def problem_point(level, kind, where, message=""):
@@ -358,13 +350,15 @@ def problem_point(level, kind, where, message=""):
     return None
 
 
-def _stats(session, surface, overlay, live):
-    s = overlay.stats
-    fresh = overlay.version == session.editor.version
+def _stats(session, surface, live):
+    done = live.latest
+    s = done.overlay.stats()
+    how = (f"updated in {1000 * done.seconds:.0f} ms, {done.kept} of {s['nodes']} nodes kept"
+           if done.kept else f"compiled whole in {1000 * done.seconds:.0f} ms, "
+                             f"{s['candidates']} candidates a node")
     lines = [f"tree: {s['walls']} walls, {s['segs']} segs ({s['splits']} splits), "
              f"{s['nodes']} nodes, depth {s['max_depth']}",
-             f"compiled in {1000 * overlay.seconds:.0f} ms, {s['candidates']} candidates a node"
-             + ("" if fresh else "  (compiling the newest edit...)"),
-             f"{len(overlay.problems)} problems" + (f"; {live.error}" if live.error else "")]
+             how + ("" if live.current() else "  (compiling the newest edit...)"),
+             f"{len(done.problems)} problems" + (f"; {live.error}" if live.error else "")]
     for i, text in enumerate(lines):
         surface.blit(session.small_font.render(text, True, COLORS["text"]), (8, 8 + 16 * i))

@@ -13,6 +13,7 @@ import time
 
 import pygame
 
+from wallbsp.app.window import prefer_plain_framebuffer
 from wallbsp.edit import Editor
 from wallbsp.editor import keys, mouse
 from wallbsp.editor.frame import STATUS_HEIGHT, draw_frame
@@ -30,6 +31,7 @@ def open_session(source=None, size=DEFAULT_SIZE, editor=None, live_tree=True) ->
     of ``size``; ``editor``: a model already made."""
     if editor is None:
         editor = _editor_for(source)
+    prefer_plain_framebuffer()
     pygame.display.init()
     pygame.font.init()
     display = pygame.display.set_mode(size, pygame.RESIZABLE)
@@ -85,6 +87,7 @@ def step(session, flip=True, events=None):
     for event in pygame.event.get() if events is None else events:
         handle(session, event)
     if session.compiler is not None:
+        session.compiler.drawn = session.show_tree     # the worker clips the partitions
         session.compiler.poll()
     update_hover(session)
     draw_frame(session, flip)

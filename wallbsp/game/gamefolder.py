@@ -12,9 +12,13 @@
       sprites/SPITA1.png ...   sounds/DSSPITSI.wav ...
 
 ``game.toml`` may stand for ``game.json`` (the same keys).  A map entry is a level file
-name, or ``{"wad": "doom2.wad", "map": "MAP01", "script": "x.py"}`` for a WAD's map with a
-script of the game's.  ``load_game_folder(path)`` → ``GameFolder`` (``tables``, ``maps``,
-``tree(i)``, ``next_level``); anything wrong is one ``LevelError`` line naming the file.
+name, ``{"level": "map01.json", "title": "The Hall"}`` (the title: the level's name in the
+intermission and messages), or ``{"wad": "doom2.wad", "map": "MAP01", "script": "x.py"}``
+for a WAD's map with a script of the game's (its intermission shows the WAD's own name
+picture).  The menus show the game's episode and skill names (``episode_names``,
+``skill_names``; DOOM's skills when it names none).  ``load_game_folder(path)`` →
+``GameFolder`` (``tables``, ``maps``, ``tree(i)``, ``level(n)``, ``next_level``; itself the
+walkthrough's ``next_level``); anything wrong is one ``LevelError`` line naming the file.
 """
 from __future__ import annotations
 
@@ -47,6 +51,7 @@ class GameFolder:
     episode: str
     maps: list                      # level file paths, or (wad, map, script or None)
     skills: tuple = ()
+    titles: list = field(default_factory=list)     # each map's title, or None
     tables: object = None           # doom.tables.Tables with the game's actors
     classes: list = field(default_factory=list)
     _trees: dict = field(default_factory=dict)
@@ -64,8 +69,21 @@ class GameFolder:
             else:
                 from wallbsp.level.io import load_level
                 level = load_level(entry)
+                title = self.titles[i] if i < len(self.titles) else None
+                if title is not None:           # the intermission's and messages' name
+                    level = dataclasses.replace(level, name=title)
             self._trees[i] = compile_level(level)
         return self._trees[i]
+
+    @property
+    def episode_names(self) -> tuple:
+        """The menus' episode (one a game folder)."""
+        return (self.episode,)
+
+    @property
+    def skill_names(self) -> tuple:
+        """The menus' skills (none named: DOOM's)."""
+        return tuple(self.skills)
 
     def next_level(self, exit_kind):
         """The walkthrough's next level after an exit: the following map (or None after
@@ -75,6 +93,15 @@ class GameFolder:
             return None
         self.current = current
         return self.tree(current)
+
+    __call__ = next_level                   # the walkthrough's next_level(exit)
+
+    def level(self, number: int):
+        """Map ``number`` (1-based; a new game, idclev1N), or None."""
+        if not 1 <= number <= len(self.maps):
+            return None
+        self.current = number - 1
+        return self.tree(number - 1)
 
 
 def load_game_folder(path) -> GameFolder:
@@ -94,7 +121,7 @@ def load_game_folder(path) -> GameFolder:
     game = GameFolder(folder, str(data.get("name", folder.name)),
                       str(data.get("episode", data.get("name", folder.name))),
                       [_map_entry(folder, manifest, i, m) for i, m in enumerate(maps)],
-                      tuple(skills))
+                      tuple(skills), [_title(manifest, i, m) for i, m in enumerate(maps)])
     game.classes, game.tables = _actors(folder, manifest, data.get("actors"))
     return game
 
@@ -125,6 +152,8 @@ def _manifest(folder):
 
 
 def _map_entry(folder, manifest, i, entry):
+    if isinstance(entry, dict) and isinstance(entry.get("level"), str):
+        entry = entry["level"]
     if isinstance(entry, str):
         path = folder / entry
         if not path.is_file():
@@ -137,8 +166,16 @@ def _map_entry(folder, manifest, i, entry):
             wad = Path(entry["wad"])
         script = entry.get("script")
         return (wad, entry["map"].upper(), script if isinstance(script, str) else None)
-    raise LevelError(f"{manifest}: maps[{i}]: a level file name or "
+    raise LevelError(f"{manifest}: maps[{i}]: a level file name, {{\"level\": ...}} or "
                      f"{{\"wad\": ..., \"map\": ...}}")
+
+
+def _title(manifest, i, entry):
+    """A map entry's ``"title"`` (the level's name in the intermission), or None."""
+    title = entry.get("title") if isinstance(entry, dict) else None
+    if title is not None and (not isinstance(title, str) or not 0 < len(title) <= 40):
+        raise LevelError(f"{manifest}: maps[{i}].title: a name of 1 to 40 characters")
+    return title
 
 
 def _actors(folder, manifest, actors):

@@ -1,64 +1,37 @@
 """What a level script can do (``levelscript``'s ``level`` argument): ACS's specials as
 DOOM's own movers and functions — a door opened or closed, a floor or ceiling moved to a
-height, a thing spawned, a message, an item given, the level ended — and timers.
+height, a thing spawned, a message, an item given, the level ended — and, kept by save
+games, timers and the script's ``state`` (``leveltimers``).
 
 Heights and positions are in map units, speeds in map units a tic; sectors are chosen by
 tag, as DOOM's line specials choose them, and a sector already moving is left alone.
 """
 from __future__ import annotations
 
+from wallbsp.content import ammo_number
 from wallbsp.doom import info
 from wallbsp.doom.fixed import FRACUNIT
 
+from .leveltimers import ScriptClock
 from .playsim.spectypes import (LOWERFLOOR, LOWERTOFLOOR, RAISETOHIGHEST, VLD_CLOSE, VLD_OPEN,
                                 ceiling_t, floormove_t)
 from .playsim.structs import Line, MapThing
 
 __all__ = ["ScriptLevel"]
 
-GIVE_AMMO = {"clip": info.am_clip, "shell": info.am_shell, "cell": info.am_cell,
-             "rocket": info.am_misl}
 
+class ScriptLevel(ScriptClock):
+    """A script's handle on the level (module docstring); ``state``, ``tic`` and the
+    timers ``after`` and ``every`` are ``ScriptClock``'s, kept by save games."""
 
-class ScriptLevel:
-    """A script's handle on the level (module docstring)."""
-
-    def __init__(self, world):
+    def __init__(self, world, functions=None, script="script", resume=False):
         self.world, self.play = world, world.play
-        self.tic = 0                     # tics since the level started
-        self._timers = []                # [due tic, order, every (0: once), function]
-        self._order = 0
+        super().__init__(world.play, functions or {}, script, resume)
 
     @property
     def player(self):
         """The first player (``player.mo`` its body, ``player.health``, ...)."""
         return self.play.players[self.play.consoleplayer]
-
-    # -- timers ---------------------------------------------------------------------------
-    def after(self, tics: int, function) -> None:
-        """``function(level)`` once, ``tics`` tics from now."""
-        self._add(tics, 0, function)
-
-    def every(self, tics: int, function) -> None:
-        """``function(level)`` every ``tics`` tics from now on."""
-        self._add(tics, tics, function)
-
-    def _add(self, tics, period, function):
-        if isinstance(tics, bool) or not isinstance(tics, int) or tics < 1:
-            raise ValueError(f"a timer's tics: a whole number from 1, not {tics!r}")
-        self._order += 1
-        self._timers.append([self.tic + tics, self._order, period, function])
-
-    def due(self) -> list:
-        """The functions whose time is now, in the order they were set (repeating ones set
-        again)."""
-        now = sorted((t for t in self._timers if t[0] <= self.tic), key=lambda t: t[:2])
-        for timer in now:
-            if timer[2]:
-                timer[0] += timer[2]
-            else:
-                self._timers.remove(timer)
-        return [t[3] for t in now]
 
     # -- sectors --------------------------------------------------------------------------
     def sectors(self, tag: int) -> list:
@@ -132,7 +105,8 @@ class ScriptLevel:
 
     def give(self, item, amount: int = 1) -> None:
         """``"health"`` or ``"armor"`` points, ammunition by name (``"clip"``, ``"shell"``,
-        ``"cell"``, ``"rocket"``: ``amount`` clip loads, as P_GiveAmmo counts), or a
+        ``"cell"``, ``"rocket"``, a game's own: ``amount`` clip loads, as P_GiveAmmo
+        counts), or a
         weapon (DOOM's number or a content class)."""
         p, play = self.player, self.play
         if item == "health":
@@ -140,8 +114,8 @@ class ScriptLevel:
         elif item == "armor":
             p.armorpoints = min(200, p.armorpoints + amount)
             p.armortype = p.armortype or 1
-        elif item in GIVE_AMMO:
-            play.p_give_ammo(p, GIVE_AMMO[item], amount)
+        elif ammo_number(play.tables, item) is not None:
+            play.p_give_ammo(p, ammo_number(play.tables, item), amount)
         else:
             weapon = item if isinstance(item, int) else play.tables.types[item]
             play.p_give_weapon(p, weapon, False)

@@ -9,7 +9,8 @@ World's tic — so a script is as deterministic as the play.
     def on_line_crossed(level, line, thing):
         if line.tag == 7 and thing is level.player.mo:
             level.open_door(7)
-            level.after(35 * 5, lambda level: level.close_door(7))
+            level.state["crossed"] = level.state.get("crossed", 0) + 1
+            level.after(35 * 5, level.close_door, 7)
 
 Handlers (all optional; any other ``on_*`` name is an error, to catch a misspelling):
 ``on_start(level)`` (the level begins, again after a death), ``on_exit(level)``,
@@ -20,7 +21,11 @@ else), ``on_sector_entered(level, sector, thing)``, ``on_killed(level, target, s
 They read the play's event log (``playsim.events``) without taking it, so other readers
 still can.  ``level`` (``ScriptLevel``) has what ACS's specials do: ``open_door``,
 ``close_door``, ``move_floor``, ``move_ceiling``, ``spawn``, ``print``, ``give``, ``end``,
-timers (``after``, ``every``), and ``play``, ``world``, ``player``, ``tic``.
+timers (``after(tics, function, *args)``, ``every``), ``state`` (a dictionary of JSON
+values), and ``play``, ``world``, ``player``, ``tic``.  The timers, ``state`` and ``tic``
+are saved with the game (``leveltimers``; a timer's function by its name: one defined at
+the script's top level, or the level's own); the module's own globals start afresh on a
+load.
 
 A script that does not compile or raises is a ``ScriptError`` (a ``LevelError``: one line
 naming the file and the line; exit status 2 at the command line).
@@ -33,6 +38,7 @@ from pathlib import Path
 from wallbsp.files import LevelError
 
 from .levelactions import ScriptLevel
+from .leveltimers import SCRIPT_STATE
 
 __all__ = ["LevelScript", "ScriptError", "HANDLERS", "load_script", "guarded"]
 
@@ -100,11 +106,20 @@ class LevelScript:
         self._log, self._read = None, 0
 
     def start(self) -> None:
-        """The level begins (again after a death): a fresh run of the module, no timers."""
+        """The level begins (again after a death): a fresh run of the module, no timers,
+        ``on_start``; or, on a loaded game's play, the module runs afresh and goes on with
+        the saved ``state``, clock and timers (``leveltimers``)."""
         self.handlers = load_script(self.path)
-        self.level = ScriptLevel(self.world)
-        self._log, self._read = self.world.play.events, len(self.world.play.events)
-        self._call("on_start")
+        play = self.world.play
+        saved = vars(play).get(SCRIPT_STATE)
+        resume = isinstance(saved, dict) and saved.get("loads") == getattr(play, "loads", 0)
+        try:
+            self.level = ScriptLevel(self.world, self.handlers, self.path.name, resume)
+        except ValueError as e:
+            raise ScriptError(f"{self.path}: {e}") from None
+        self._log, self._read = play.events, len(play.events)
+        if not resume:
+            self._call("on_start")
 
     def after_tic(self) -> None:
         """The handlers of the records the play's tic appended, then the timers, then
@@ -119,8 +134,8 @@ class LevelScript:
             self._dispatch(record)
         level = self.level
         level.tic += 1
-        for timer in level.due():
-            guarded(self.path, lambda: timer(level))
+        for timer, args in guarded(self.path, level.due):
+            guarded(self.path, lambda: timer(*args))
         self._call("on_tic")
 
     def exit(self) -> None:

@@ -73,10 +73,7 @@ def read_udmf_map(wad: Wad, map_name: str, notes: list[str]):
     field names ``wadmap`` reads; warnings are appended to ``notes``."""
     where = f"{wad.label}: {map_name}"
     textmap, others = _map_lumps(wad, map_name, where)
-    raw = wad.read(textmap)
-    text = raw.decode("utf-8") if _is_utf8(raw) else raw.decode("latin-1")
-    parsed = parse(text, f"{where}: TEXTMAP")
-    reader = _Reader(parsed, where, notes)
+    reader = _Reader(_parsed(wad.read(textmap), where), where, notes)
     arrays = reader.read()
     ignored = list(dict.fromkeys(others)) + [f"{n} (WAD)" for n in WAD_SCRIPT_LUMPS
                                              if n in wad.index]
@@ -87,6 +84,17 @@ def read_udmf_map(wad: Wad, map_name: str, notes: list[str]):
         notes.append(f"{where}: ignored (wallbsp runs no ACS scripts or DECORATE actors and "
                      f"builds its own tree): {', '.join(ignored)}")
     return arrays
+
+
+def read_textmap(raw: bytes, where: str, notes: list[str]):
+    """(things, linedefs, sidedefs, vertices, sectors) from a TEXTMAP lump's bytes (``where``
+    names the file and the map), as ``read_udmf_map`` reads them."""
+    return _Reader(_parsed(raw, where), where, notes).read()
+
+
+def _parsed(raw: bytes, where: str) -> Textmap:
+    text = raw.decode("utf-8") if _is_utf8(raw) else raw.decode("latin-1")
+    return parse(text, f"{where}: TEXTMAP")
 
 
 def _is_utf8(raw: bytes) -> bool:

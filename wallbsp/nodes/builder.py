@@ -4,7 +4,9 @@ Public API:
 - ``BuildOptions``: ``candidates`` (segs whose lines are tried at each node; zdbsp's
   ``--partition``; 0: every seg), ``split_cost`` (what a cut costs, zdbsp's
   ``--split-cost``), ``balance`` (how much balance counts against cuts), ``diagonal_cost``
-  (zdbsp's ``--diagonal-cost``); the score they weigh is ``partition``'s;
+  (zdbsp's ``--diagonal-cost``); the score they weigh is ``partition``'s; ``lookahead``
+  (how many of a cell's best partitions are tried a level deeper; 0 or 1: none) and
+  ``lookahead_candidates`` (the children's candidates), ``lookahead``'s;
 - ``build_nodes(map_data, options) -> Nodes``: ``vertexes`` (n, 2) (the map's own, then the
   split points), ``segs``, ``subsectors``, ``nodes`` (numpy records in ``mapdata``'s dtypes,
   full-range ints before any lump's limits), ``depth``, ``seg_rows`` (the segs' integer ends).
@@ -24,7 +26,7 @@ import numpy as np
 from wallbsp.files import LevelError
 from wallbsp.geometry import canonical_lines
 
-from .buildkernel import FULL, build_kernel, node_boxes
+from .buildkernel import FULL, build_kernel, node_boxes, tree_depth
 from .mapdata import NO_SIDE, NODE, SEG, SUBSECTOR, MapData
 
 LEAF_FLAG = 1 << 31       # a child that is a subsector (wide; a lump has its own flag)
@@ -33,9 +35,11 @@ LEAF_FLAG = 1 << 31       # a child that is a subsector (wide; a lump has its ow
 @dataclass(frozen=True)
 class BuildOptions:
     candidates: int = 512
-    split_cost: int = 16
-    balance: int = 3
+    split_cost: int = 24
+    balance: int = 2
     diagonal_cost: int = 0
+    lookahead: int = 3
+    lookahead_candidates: int = 64
 
 
 @dataclass
@@ -59,8 +63,10 @@ def _line_table(m: MapData) -> np.ndarray:
     lines[:, 0], lines[:, 1], lines[:, 2], lines[:, 3] = x1, y1, x2 - x1, y2 - y1
     if len(x1):
         canon, _ = canonical_lines(x1, y1, x2, y2)
-        _, plane = np.unique(canon, axis=0, return_inverse=True)
-        lines[:, 4] = plane.reshape(-1)
+        order = np.lexsort(canon.T[::-1])            # np.unique(axis=0)'s order, faster
+        new = np.ones(len(order), np.int64)
+        new[1:] = (np.diff(canon[order], axis=0) != 0).any(axis=1)
+        lines[order, 4] = np.cumsum(new) - 1
     return lines
 
 
@@ -90,7 +96,10 @@ def build_nodes(m: MapData, options: BuildOptions = BuildOptions()) -> Nodes:
     if n == 0:
         raise LevelError(f"{m.where}: no linedef has a sidedef and a length: nothing to build")
     params = np.array([options.candidates, options.split_cost, options.balance,
+                       options.diagonal_cost, options.lookahead,
+                       options.lookahead_candidates, options.split_cost, options.balance,
                        options.diagonal_cost], np.int64)
+    planes = int(lines[:, 4].max()) + 1
     room = 4
     while True:
         seg = np.zeros((room * n + 64, 7), np.int64)
@@ -101,8 +110,8 @@ def build_nodes(m: MapData, options: BuildOptions = BuildOptions()) -> Nodes:
         got = build_kernel(seg, n, lines, np.zeros(room * 8 * n + 64, np.int64),
                            np.zeros(cap, np.int64), node, leaf, leaf_segs,
                            np.zeros((cap, 5), np.int64), params,
-                           np.full(int(lines[:, 4].max()) + 1, -1, np.int64),
-                           np.full(int(lines[:, 4].max()) + 1, -1, np.int64))
+                           np.full(planes, -1, np.int64), np.full(planes, -1, np.int64),
+                           _scratch(room * n + 64, planes))
         if got[0] != FULL:
             break
         room *= 2
@@ -117,40 +126,60 @@ def build_nodes(m: MapData, options: BuildOptions = BuildOptions()) -> Nodes:
                  own_vertex_count(m))
 
 
-def _vertexes(m: MapData, lines, rows):
-    """The map's own vertexes, then every other seg end once (in order of first use); each
-    seg end's index (a linedef's own end keeps its own vertex)."""
+def _scratch(cap: int, planes: int):
+    """Look-ahead's room to try a partition: seg rows, two cells' runs, the split's
+    sides, and its own ``tried`` stamps."""
+    return (np.zeros((cap, 7), np.int64), np.zeros(cap, np.int64), np.zeros(cap, np.int64),
+            np.full(planes, -1, np.int64), np.zeros(1, np.int64))
+
+
+def _vertexes(m, lines, rows):
+    """The map's own vertexes, then every other seg end once (in order of first use, the
+    starts before the ends); each seg end's index (a linedef's own end keeps its own
+    vertex; a split point at an own vertex's place reuses the first such vertex)."""
     own = np.stack([m.vertexes["x"], m.vertexes["y"]], axis=1).astype(np.int64)
     own = own[:own_vertex_count(m)]
-    lookup = {}
-    for i, (x, y) in enumerate(own.tolist()):
-        lookup.setdefault((x, y), i)
-    extra = []
-    ends = []
     ld = m.linedefs
+    li = rows[:, 4]
+    ends = []
     for k in (0, 2):
         x, y = rows[:, k], rows[:, k + 1]
-        li = rows[:, 4]
         at1 = (x == lines[li, 0]) & (y == lines[li, 1])
         at2 = (x == lines[li, 0] + lines[li, 2]) & (y == lines[li, 1] + lines[li, 3])
-        idx = np.where(at1, ld["v1"][li].astype(np.int64),
-                       np.where(at2, ld["v2"][li].astype(np.int64), -1))
-        for j in np.flatnonzero(idx < 0).tolist():
-            key = (int(x[j]), int(y[j]))
-            v = lookup.get(key)
-            if v is None:
-                v = lookup[key] = len(own) + len(extra)
-                extra.append(key)
-            idx[j] = v
-        ends.append(idx)
-    vertexes = np.concatenate([own, np.array(extra, np.int64).reshape(-1, 2)])
-    return vertexes, ends[0], ends[1]
+        ends.append(np.where(at1, ld["v1"][li].astype(np.int64),
+                             np.where(at2, ld["v2"][li].astype(np.int64), -1)))
+    pts = np.concatenate([rows[:, 0:2], rows[:, 2:4]])
+    idx = np.concatenate(ends)
+    need = np.flatnonzero(idx < 0)
+    extra = np.zeros((0, 2), np.int64)
+    if len(need):
+        key = _point_key(pts[need])
+        own_key = _point_key(own)
+        own_sorted, own_first = np.unique(own_key, return_index=True)
+        at = np.minimum(np.searchsorted(own_sorted, key), max(len(own_sorted) - 1, 0))
+        hit = (own_sorted[at] == key) if len(own_sorted) else np.zeros(len(key), bool)
+        idx[need[hit]] = own_first[at[hit]]
+        rest = need[~hit]
+        uniq, first, inverse = np.unique(_point_key(pts[rest]), return_index=True,
+                                         return_inverse=True)
+        rank = np.empty(len(uniq), np.int64)
+        rank[np.argsort(first, kind="stable")] = np.arange(len(uniq))
+        idx[rest] = len(own) + rank[inverse.reshape(-1)]
+        extra = pts[rest][np.sort(first)]
+    vertexes = np.concatenate([own, extra])
+    return vertexes, idx[:len(rows)], idx[len(rows):]
+
+
+def _point_key(p):
+    return (p[:, 0] + (1 << 31)) * (1 << 32) + (p[:, 1] + (1 << 31))
 
 
 def own_vertex_count(m: MapData) -> int:
     """The map's own vertexes: up to the last one a linedef uses (the rest of VERTEXES is
-    an earlier node builder's split points)."""
+    an earlier node builder's split points; a UDMF map's are all its own)."""
     ld = m.linedefs
+    if m.udmf:
+        return len(m.vertexes)
     return int(max(ld["v1"].max(), ld["v2"].max())) + 1 if len(ld) else 0
 
 
@@ -194,15 +223,7 @@ def _node_records(node, box):
 
 def _depth(node) -> int:
     """The most nodes on a path from the root to a subsector."""
-    n = len(node)
-    depth = np.zeros(n, np.int64)
-    if n:
-        depth[0] = 1
-    for m in range(n):                 # pre-order: a parent before its children
-        for c in node[m, 4:6]:
-            if c >= 0:
-                depth[c] = depth[m] + 1
-    return int(depth.max()) if n else 0
+    return int(tree_depth(node, len(node))) if len(node) else 0
 
 
 _WIDE_SEG = np.dtype([(name, np.int64) for name in SEG.names])

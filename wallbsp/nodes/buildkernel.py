@@ -1,5 +1,6 @@
-"""The depth-first build loop (``build_kernel``) and the nodes' bounding boxes
-(``node_boxes``); the choices it makes are ``partition``'s.
+"""The depth-first build loop (``build_kernel``), the nodes' bounding boxes (``node_boxes``)
+and the tree's depth (``tree_depth``); the choices it makes are ``partition``'s, or
+``lookahead``'s when ``params[4] > 1``.
 
 Arrays: ``seg`` (capacity, 7) int64 rows ``x1, y1, x2, y2, linedef, side, sector`` (the first
 ``nseg`` filled; splits append); ``lines`` (linedefs, 5) ``x, y, dx, dy, plane``.  Out:
@@ -14,15 +15,16 @@ import numpy as np
 
 from wallbsp.jit import kernel
 
-from .partition import (BACK, FRONT, ON_FRONT, SPLIT, choose_partition, one_sector, seg_dir,
-                        seg_line, seg_side, split_point)
+from .partition import choose_partition, one_sector, seg_line
+from .splitcell import split_cell
+from .lookahead import choose_ahead
 
 FULL = -1          # a capacity ran out: the caller retries with more room
 
 
 @kernel
 def build_kernel(seg, nseg, lines, work, sides, node, leaf, leaf_segs, stack, params, tried,
-                 banned):
+                 banned, scratch):
     """Build the tree; returns ``(segs, nodes, leaves)`` or ``(FULL, 0, 0)``."""
     for i in range(nseg):
         work[i] = i
@@ -40,7 +42,11 @@ def build_kernel(seg, nseg, lines, work, sides, node, leaf, leaf_segs, stack, pa
         made = -1
         while n > 1 or not one_sector(cell, n, seg):
             tries += 1
-            c = choose_partition(cell, n, seg, lines, params, tried, tries, banned, cells)
+            if params[4] > 1:
+                c = choose_ahead(cell, n, seg, lines, params, tried, tries, banned, cells,
+                                 scratch)
+            else:
+                c = choose_partition(cell, n, seg, lines, params, tried, tries, banned, cells)
             if c < 0:
                 break
             if free + 2 * n + 2 > len(work) or nseg + n > len(seg) or nnode >= len(node) \
@@ -49,7 +55,7 @@ def build_kernel(seg, nseg, lines, work, sides, node, leaf, leaf_segs, stack, pa
             s0 = cell[c]
             px, py, pdx, pdy = seg_line(s0, seg, lines)
             plane = lines[seg[s0, 4], 4]
-            nseg, nf, nb = _split_cell(cell, n, seg, nseg, lines, px, py, pdx, pdy, plane,
+            nseg, nf, nb = split_cell(cell, n, seg, nseg, lines, px, py, pdx, pdy, plane,
                                        work, free, sides)
             if nf and nb:
                 made = nnode
@@ -83,65 +89,6 @@ def build_kernel(seg, nseg, lines, work, sides, node, leaf, leaf_segs, stack, pa
 
 
 @kernel
-def _split_cell(cell, n, seg, nseg, lines, px, py, pdx, pdy, plane, work, free, sides):
-    """Sort the cell's segs into front (at ``work[free:]``) and back (after the front),
-    splitting those the line crosses; returns ``(nseg, front count, back count)``."""
-    thr = 0.25 * float(pdx * pdx + pdy * pdy)
-    nf = 0
-    for i in range(n):          # fronts first; backs and splits marked in sides
-        s = cell[i]
-        sdx, sdy = seg_dir(s, seg, lines)
-        side = seg_side(px, py, pdx, pdy, thr, plane, seg[s, 0], seg[s, 1], seg[s, 2],
-                        seg[s, 3], lines[seg[s, 4], 4], sdx, sdy)
-        if side == SPLIT:
-            side, nseg = _cut(s, seg, nseg, lines, px, py, pdx, pdy)
-            if side == SPLIT:   # seg s is now the piece at the front, nseg - 1 the back
-                work[free + nf] = s
-                nf += 1
-                sides[i] = nseg - 1
-                continue
-        if side == FRONT or side == ON_FRONT:
-            work[free + nf] = s
-            nf += 1
-            sides[i] = -1
-        else:
-            sides[i] = s
-    nb = 0
-    for i in range(n):
-        if sides[i] >= 0:
-            work[free + nf + nb] = sides[i]
-            nb += 1
-    return nseg, nf, nb
-
-
-@kernel
-def _cut(s, seg, nseg, lines, px, py, pdx, pdy):
-    """Split seg ``s``: it keeps the piece in front, row ``nseg`` gets the back piece.
-    Returns ``(SPLIT, nseg + 1)``, or ``(FRONT or BACK, nseg)`` when the rounded point is an
-    end of the seg (no split)."""
-    x1, y1, x2, y2 = seg[s, 0], seg[s, 1], seg[s, 2], seg[s, 3]
-    s1 = pdx * (y1 - py) - pdy * (x1 - px)
-    s2 = pdx * (y2 - py) - pdy * (x2 - px)
-    ld = seg[s, 4]
-    x, y = split_point(x1, y1, x2, y2, s1, s2, lines[ld, 0], lines[ld, 1], lines[ld, 2],
-                       lines[ld, 3])
-    if x == x1 and y == y1:
-        return (FRONT if s2 < 0 else BACK), nseg
-    if x == x2 and y == y2:
-        return (FRONT if s1 < 0 else BACK), nseg
-    t = nseg
-    for k in range(4, 7):
-        seg[t, k] = seg[s, k]
-    if s1 < 0:                  # the start is in front: s keeps (p1, x), t gets (x, p2)
-        seg[s, 2], seg[s, 3] = x, y
-        seg[t, 0], seg[t, 1], seg[t, 2], seg[t, 3] = x, y, x2, y2
-    else:                       # the end is in front: s keeps (x, p2), t gets (p1, x)
-        seg[s, 0], seg[s, 1] = x, y
-        seg[t, 0], seg[t, 1], seg[t, 2], seg[t, 3] = x1, y1, x, y
-    return SPLIT, nseg + 1
-
-
-@kernel
 def node_boxes(node, nnode, leaf, nleaf, leaf_segs, seg, box):
     """``box`` (nnode, 2, 4): each child's ``top, bottom, left, right`` over its segs."""
     leaf_box = np.empty((nleaf, 4), np.int64)      # top, bottom, left, right per leaf
@@ -166,3 +113,18 @@ def node_boxes(node, nnode, leaf, nleaf, leaf_segs, seg, box):
                     box[m, slot, k] = v
                 else:
                     box[m, slot, k] = leaf_box[~child, k]
+
+
+@kernel
+def tree_depth(node, nnode):
+    """The most nodes on a path from the root (node 0) to a subsector."""
+    depth = np.zeros(nnode, np.int64)
+    depth[0] = 1
+    deepest = 1
+    for m in range(nnode):                 # pre-order: a parent before its children
+        for slot in range(2):
+            c = node[m, 4 + slot]
+            if c >= 0:
+                depth[c] = depth[m] + 1
+                deepest = max(deepest, depth[c])
+    return deepest

@@ -13,7 +13,8 @@ middle texture gets ``DEFAULT_WALL``); sectors keep heights (rounded), light, fl
 sector's ceiling is ``F_SKY1``, a missing flat ``DEFAULT_FLAT``), special and tag; things
 keep x, y, angle, type and flags (a thing of a type the level defines itself, which no
 DOOM port knows, is left out with a note), and the start becomes player 1's start unless a thing of
-type 1 is there already.  Then the node builder makes the rest (``wadnodes.rebuild_map``).
+type 1 is there already.  Then the node builder makes the rest (``wadnodes.rebuild_map``; for
+UDMF, TEXTMAP and its ZNODES, ``wadnodes.rebuild_udmf_map``).
 
 Our PNG resources are not converted: a texture or flat the level names must be in the WAD
 the map is played with.  With ``iwad`` given, names it lacks are replaced by its defaults
@@ -29,7 +30,7 @@ from wallbsp.assets.wadwrite import Lump, WadImage
 from wallbsp.level.model import Level
 
 from .mapdata import LINEDEF, SECTOR, SIDEDEF, THING, VERTEX
-from .wadnodes import NodeOptions, rebuild_map
+from .wadnodes import NodeOptions, rebuild_map, rebuild_udmf_map
 
 DEFAULT_WALL, DEFAULT_FLAT, SKY_FLAT = "STARTAN3", "FLOOR4_8", "F_SKY1"
 ML_BLOCKING, ML_TWOSIDED, ML_DONTPEGTOP, ML_DONTPEGBOTTOM = 1, 4, 8, 16
@@ -150,8 +151,9 @@ def export_level(level: Level, path, map_name: str = "MAP01", fmt: str = "doom",
         notes.append(f"{own_types} things of the level's own types left out (no DOOM port "
                      f"knows them)")
     if fmt == "udmf":
-        body = [Lump("TEXTMAP", udmf_text(level, lumps).encode()), Lump("ENDMAP", b"")]
-        notes.append("UDMF: no ZNODES written; ports that read UDMF build their own nodes")
+        body, _ = rebuild_udmf_map(str(level.source), map_name, [
+            Lump("TEXTMAP", udmf_text(level, lumps).encode()), Lump("ENDMAP", b"")],
+            NodeOptions())
     else:
         own = {k: Lump(k, v) for k, v in lumps.items()}
         body, report = rebuild_map(str(level.source), map_name, own, NodeOptions())

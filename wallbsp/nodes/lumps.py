@@ -1,7 +1,8 @@
 """A built tree as lumps: vanilla VERTEXES, SEGS, SSECTORS and NODES, or ZDoom's extended
 nodes (XNOD in NODES, SEGS and SSECTORS empty) when the tree passes vanilla's limits.
 
-``node_lumps(nodes, where) -> (lumps dict, warnings list)``.  Vanilla's limits: every count
+``node_lumps(nodes, n_own, where, extended=False) -> (lumps dict, warnings list)``
+(``extended``: XNOD whatever the size, as zdbsp ``-X``).  Vanilla's limits: every count
 and index in a signed 16-bit field (vertexes, segs, subsectors, nodes at most 32767; a
 node's child numbers below ``NF_SUBSECTOR``), coordinates and a partition's ``dx, dy`` in
 -32768..32767, a seg's offset too.  XNOD (uncompressed, as zdbsp ``-X`` writes it): the
@@ -16,6 +17,7 @@ import struct
 import numpy as np
 
 from .builder import LEAF_FLAG
+from .gllumps import nodes_v5
 from .mapdata import NODE, SEG, SUBSECTOR, VERTEX
 
 VANILLA_MAX = 32767
@@ -76,22 +78,20 @@ def xnod_lump(nodes, n_own: int) -> bytes:
     rows["v1"], rows["v2"], rows["linedef"], rows["side"] = (segs["v1"], segs["v2"],
                                                               segs["linedef"], segs["side"])
     parts += [struct.pack("<I", len(segs)), rows.tobytes()]
-    nd = nodes.nodes
-    rows = np.zeros(len(nd), np.dtype([("xy", "<i2", (4,)), ("bbox", "<i2", (2, 4)),
-                                       ("child", "<u4", (2,))]))
-    rows["xy"] = np.stack([nd["x"], nd["y"], nd["dx"], nd["dy"]], axis=1)
-    rows["bbox"] = nd["bbox"]
-    rows["child"] = _children(nd["child"], 0x80000000)
-    parts += [struct.pack("<I", len(nd)), rows.tobytes()]
+    parts += [struct.pack("<I", len(nodes.nodes)), nodes_v5(nodes.nodes)]
     return b"".join(parts)
 
 
-def node_lumps(nodes, n_own: int, where: str) -> tuple[dict, list[str]]:
+def node_lumps(nodes, n_own: int, where: str, extended: bool = False
+               ) -> tuple[dict, list[str]]:
+    """The lumps; XNOD where vanilla's limits do not hold (a warning) or ``extended``."""
     problems = vanilla_limits(nodes, n_own)
-    if not problems:
+    if not problems and not extended:
         return vanilla_lumps(nodes), []
     own = nodes.vertexes[:n_own]
     lumps = {"VERTEXES": _records(VERTEX, {"x": own[:, 0], "y": own[:, 1]}, n_own),
              "SEGS": b"", "SSECTORS": b"", "NODES": xnod_lump(nodes, n_own)}
+    if not problems:
+        return lumps, []
     return lumps, [f"{where}: past vanilla's limits ({'; '.join(problems)}): ZDoom extended "
                    f"nodes (XNOD) written; vanilla DOOM and Chocolate Doom cannot load it"]

@@ -4,6 +4,8 @@ Public API:
 - ``MapData``: ``name``, ``where`` (for messages), ``lumps`` (name -> bytes, the map's own),
   ``things``, ``linedefs``, ``sidedefs``, ``vertexes``, ``sectors`` (numpy records);
 - ``map_data(label, name, lumps) -> MapData``: from a map's lumps (``WadImage.map_span``);
+  a UDMF map's (TEXTMAP) through ``level.udmfmap`` (wider integer fields, ``udmf`` set:
+  its vertexes are all its own, and its nodes go in ZNODES);
 - the record dtypes ``THING``, ``LINEDEF``, ``SIDEDEF``, ``VERTEX``, ``SECTOR``, ``SEG``,
   ``SUBSECTOR``, ``NODE`` (doomdata.h's, little-endian), and ``NO_SIDE``.
 
@@ -17,6 +19,7 @@ from dataclasses import dataclass
 import numpy as np
 
 from wallbsp.files import LevelError
+from wallbsp.level.udmfmap import read_textmap
 
 NO_SIDE = 0xFFFF
 THING = np.dtype([("x", "<i2"), ("y", "<i2"), ("angle", "<i2"), ("type", "<u2"),
@@ -48,6 +51,7 @@ class MapData:
     sidedefs: np.ndarray
     vertexes: np.ndarray
     sectors: np.ndarray
+    udmf: bool = False
 
 
 def records(where: str, lump: str, raw: bytes, dtype) -> np.ndarray:
@@ -61,8 +65,7 @@ def map_data(label: str, name: str, lumps: dict) -> MapData:
     """The checked records of map ``name`` from its lumps (name -> bytes)."""
     where = f"{label}: {name}"
     if "TEXTMAP" in lumps:
-        raise LevelError(f"{where}: UDMF maps (TEXTMAP) are not rebuilt; a UDMF map's ZNODES "
-                         f"are left as they are")
+        return udmf_map_data(where, name, lumps)
     if "BEHAVIOR" in lumps:
         raise LevelError(f"{where}: Hexen-format maps (BEHAVIOR) are not supported")
     for lump in _NEEDED:
@@ -99,3 +102,11 @@ def _check(m: MapData) -> None:
     if i is not None:
         raise LevelError(f"{m.where}: SIDEDEFS[{i}]: sector {m.sidedefs['sector'][i]} does "
                          f"not exist ({nsec} sectors)")
+
+
+def udmf_map_data(where: str, name: str, lumps: dict) -> MapData:
+    """A UDMF map's records (``udmfmap``'s: coordinates rounded to whole units)."""
+    things, linedefs, sidedefs, vertexes, sectors = read_textmap(lumps["TEXTMAP"], where, [])
+    data = MapData(name, where, lumps, things, linedefs, sidedefs, vertexes, sectors, True)
+    _check(data)
+    return data

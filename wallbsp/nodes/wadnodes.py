@@ -3,15 +3,18 @@
 Public API:
 - ``NodeOptions``: the build's ``BuildOptions``, ``maps`` (names, or None: every map),
   ``reject`` (``"sight"``: ``reject``'s table; ``"zero"``: all zeros; ``"keep"``: the map's
-  own when it has the right size, as zdbsp ``-E``);
+  own when it has the right size, as zdbsp ``-E``), ``gl`` (v5 GL nodes after each
+  DOOM-format map, ``gllumps``), ``extended`` (XNOD even within vanilla's limits),
+  ``compress`` (a UDMF map's ZNODES as ZGLN rather than XGLN);
 - ``rebuild_wad(image, label, options) -> list[MapReport]``: every chosen DOOM-format map of
   the ``WadImage`` gets new VERTEXES, SEGS, SSECTORS, NODES, REJECT and BLOCKMAP, in DOOM's
   lump order; every other lump (and a map's own THINGS, LINEDEFS, SIDEDEFS, SECTORS) keeps
   its bytes.  A map's old GL nodes (``GL_<map>``) are dropped: they would not match.
-  UDMF maps are left as they are, with a warning;
+  A UDMF map (TEXTMAP) keeps its lumps and gets new ZNODES (ZDoom's GL nodes), after
+  TEXTMAP;
 - ``MapReport``: per map ``name``, ``segs``, ``subsectors``, ``nodes``, ``vertexes`` (split
   ones), ``depth``, ``seg_ratio`` (SEGS entries / (one-sided + 2 x two-sided linedefs)),
-  ``seconds``, ``extended`` and ``warnings``.
+  ``seconds``, ``extended``, ``warnings``, and with GL nodes ``gl_segs``, ``minisegs``.
 """
 from __future__ import annotations
 
@@ -23,6 +26,8 @@ from wallbsp.assets.wadwrite import MAP_LUMPS, Lump, WadImage
 
 from .blockmap import BlockmapTooBig, blockmap_lump
 from .builder import BuildOptions, build_nodes
+from .gllumps import gl_v5_lumps, znodes_lump
+from .glnodes import gl_nodes
 from .lumps import node_lumps
 from .mapdata import NO_SIDE, map_data
 from .reject import reject_lump
@@ -33,6 +38,9 @@ class NodeOptions:
     build: BuildOptions = BuildOptions()
     maps: tuple | None = None
     reject: str = "sight"
+    gl: bool = False            # add v5 GL nodes after each DOOM-format map
+    extended: bool = False      # XNOD even where vanilla's limits hold (zdbsp -X)
+    compress: bool = True       # a UDMF map's ZNODES as ZGLN (else XGLN)
 
 
 @dataclass
@@ -47,6 +55,8 @@ class MapReport:
     seconds: float = 0.0
     extended: bool = False
     warnings: list = field(default_factory=list)
+    gl_segs: int = 0
+    minisegs: int = 0
 
 
 def seg_denominator(linedefs) -> int:
@@ -60,7 +70,7 @@ def rebuild_map(label: str, name: str, own: dict, options: NodeOptions):
     started = time.perf_counter()
     m = map_data(label, name, {k: lump.data for k, lump in own.items()})
     nodes = build_nodes(m, options.build)
-    new, warnings = node_lumps(nodes, nodes.own_vertexes, m.where)
+    new, warnings = node_lumps(nodes, nodes.own_vertexes, m.where, options.extended)
     try:
         new["BLOCKMAP"] = blockmap_lump(m.linedefs, m.vertexes, m.where)
     except BlockmapTooBig as err:
@@ -77,8 +87,31 @@ def rebuild_map(label: str, name: str, own: dict, options: NodeOptions):
     report = MapReport(name, len(nodes.segs), len(nodes.subsectors), len(nodes.nodes),
                        len(nodes.vertexes) - nodes.own_vertexes, nodes.depth,
                        len(nodes.segs) / max(1, seg_denominator(m.linedefs)),
-                       time.perf_counter() - started, bool(warnings and new["SEGS"] == b""),
-                       warnings)
+                       time.perf_counter() - started, new["NODES"][:4] == b"XNOD", warnings)
+    if options.gl:
+        gl = gl_nodes(m, nodes)
+        out += gl_v5_lumps(name, gl, len(new["VERTEXES"]) // 4, new["VERTEXES"],
+                           own["LINEDEFS"].data)
+        report.gl_segs, report.minisegs = len(gl.segs), gl.minisegs
+        report.seconds = time.perf_counter() - started
+    return out, report
+
+
+def rebuild_udmf_map(label: str, name: str, own: list, options: NodeOptions):
+    """A UDMF map's lumps (TEXTMAP ... ENDMAP, ``[Lump]``) with new ZNODES, and its report."""
+    started = time.perf_counter()
+    m = map_data(label, name, {lump.name: lump.data for lump in own})
+    nodes = build_nodes(m, options.build)
+    gl = gl_nodes(m, nodes)
+    znodes = Lump("ZNODES", znodes_lump(gl, nodes.own_vertexes, options.compress))
+    out = [lump for lump in own if lump.name not in ("ZNODES", "ENDMAP")]
+    out[1:1] = [znodes]                      # TEXTMAP, ZNODES, ... (ZDoom's order)
+    out.append(Lump("ENDMAP", b""))
+    report = MapReport(name, len(nodes.segs), len(gl.subsectors), len(nodes.nodes),
+                       len(nodes.vertexes) - nodes.own_vertexes, nodes.depth,
+                       len(nodes.segs) / max(1, seg_denominator(m.linedefs)),
+                       time.perf_counter() - started, True, [])
+    report.gl_segs, report.minisegs = len(gl.segs), gl.minisegs
     return out, report
 
 
@@ -99,8 +132,9 @@ def rebuild_wad(image: WadImage, label: str, options: NodeOptions = NodeOptions(
         start, stop = image.map_span(marker)
         own = image.lumps[start + 1:stop]
         if own and own[0].name == "TEXTMAP":
-            reports.append(MapReport(name, warnings=[f"{label}: {name}: a UDMF map; left as "
-                                                     f"it is (its ZNODES are not rebuilt)"]))
+            lumps, report = rebuild_udmf_map(label, name, own, options)
+            image.replace_span(start + 1, stop, lumps)
+            reports.append(report)
             continue
         by_name = {lump.name: lump for lump in own if not lump.name.startswith("GL_")}
         lumps, report = rebuild_map(label, name, by_name, options)

@@ -15,6 +15,8 @@ Both answer the same questions:
   to a value of palette 0 (they are per-channel functions of palette 0 in DOOM's and
   Freedoom's PLAYPAL; values palette 0 lacks are interpolated), so a screen flash is three
   table look-ups on an RGB frame;
+- ``flat(name)``: a 64 × 64 flat as a ``Picture`` (the widescreen status bar's border),
+  or None;
 - ``invert(frame)``: the invulnerability colour map (COLORMAP row 32) applied to an RGB
   frame in place; ``fuzz_tables(row)`` what the fuzz darkens by (COLORMAP row ``row``).
 
@@ -31,7 +33,7 @@ from pathlib import Path
 import numpy as np
 
 from wallbsp.assets.pictures import (COLORMAP_ROWS, LIGHT_LEVELS, Picture, decode_colormap,
-                                     decode_picture)
+                                     decode_flat, decode_picture)
 from wallbsp.assets.wad import open_wad
 from wallbsp.screen.remap import grey_inverse, invert
 
@@ -100,6 +102,14 @@ class WadArt(_Art):
                                    if found else None)
         return self._patches[name]
 
+    def flat(self, name: str):
+        key = ("flat", name)
+        if key not in self._patches:
+            found = self._lump(name)
+            self._patches[key] = decode_flat(found[1], f"{found[0]}: {name}") if found \
+                else None
+        return self._patches[key]
+
     def sprite(self, name: str, frame: str):
         if self._sprites is None:
             self._sprites = {}
@@ -157,13 +167,22 @@ class OwnArt(_Art):
         super().__init__()
         from wallbsp.assets.resources import ResourceSet
         self.folder = Path(folder)
-        self._set = ResourceSet([*before, self.folder])
+        self._set_paths = [*before, self.folder]
+        self._set = ResourceSet(self._set_paths)
         self._placed: dict = {}
         self.colormap = None
         self.tints = blend_tints()
 
     def patch(self, name: str):
         return self._set.wall(name)
+
+    def flat(self, name: str):
+        """A flat of these folders, else of our own textures (``assets.catalogue``)."""
+        from wallbsp.assets.catalogue import TEXTURE_DIR
+        from wallbsp.assets.resources import ResourceSet
+        if not hasattr(self, "_flats"):
+            self._flats = ResourceSet([*self._set_paths, TEXTURE_DIR])
+        return self._flats.flat(name)
 
     def sprite(self, name: str, frame: str):
         for key in (name + frame, name):

@@ -12,15 +12,17 @@ without the prefix, for the sound system: ``pstop`` moving the cursor, ``swtchn`
 opening, ``swtchx`` closing, ``pistol`` choosing, ``stnmov`` a slider, ``oof`` refused)
 and the game's actions: ``NewGame(episode, skill)`` (skill 1-5 as ``World`` takes it),
 ``LoadGame(slot)``, ``SaveGame(slot, name)``, ``EndGame()``, ``Quit(sound)`` and
-``Option(name, value)`` for ``messages``, ``detail``, ``screen_size``, ``mouse``, ``sfx``
-and ``music``.
+``Option(name, value)`` for ``messages``, ``detail``, ``screen_size``, ``mouse``, ``sfx``,
+``music`` and ``widescreen`` (our row: the view widened to the window, Crispy Doom's).
 
 The menus are DOOM's ``menu_t`` tables (``MENUS``: item lumps, alpha keys, ``x``/``y``),
 with Doom II's main menu for every game (no Read This!: the help screens are not drawn);
-Doom II (``commercial``) has no episode menu.  What DOOM asks to be confirmed is a
-``message`` (text drawn centred; ``y``, ``n``, space or escape answer it, and answering
-closes the menu, as M_Responder does).  Save slots: ``read_slots()`` gives six
-descriptions (None: an empty slot), read each time the load or save menu opens.
+Doom II (``commercial``) has no episode menu.  A game of one's own (a game folder) names
+its episode and skills (``episode_names``, ``skill_names``): its rows are those names in
+DOOM's font, and New Game asks the episode first even in Doom II's mode.  What DOOM asks
+to be confirmed is a ``message`` (text drawn centred; ``y``, ``n``, space or escape answer
+it, and answering closes the menu, as M_Responder does).  Save slots: ``read_slots()``
+gives six descriptions (None: an empty slot), read each time the load or save menu opens.
 """
 from __future__ import annotations
 
@@ -65,6 +67,8 @@ class Menu(KeysMenu):
     in_game: bool = True                  # a game is being played (DOOM's usergame)
     in_level: bool = True                 # ... and it is in a level (saving is allowed)
     episode_chosen: int = 0
+    episode_names: tuple = ()             # a game's own (game folder): rows in the font
+    skill_names: tuple = ()               # ... its skills, easiest first (up to five)
     which_skull: int = 0
     skull_counter: int = 10
     tics: int = 0
@@ -77,15 +81,26 @@ class Menu(KeysMenu):
         return self.items_of(self.current)
 
     def items_of(self, name: str) -> MenuDef:
-        """``MENUS[name]`` as this game has it (Doom II: no episodes; fewer episodes)."""
+        """``MENUS[name]`` as this game has it (Doom II: no episodes; fewer episodes; a
+        game's own episode and skill names, written in the font, instead of DOOM's)."""
         if name == "keys":
             return self.keys_def()
         found = MENUS[name]
         if name == "episode":
+            if self.episode_names:
+                return found._replace(items=_named(found.items[0], self.episode_names))
             return found._replace(items=found.items[:max(1, min(4, self.episodes))])
-        if name == "skill" and self.commercial:
-            return found._replace(previous="main")
+        if name == "skill":
+            if self.skill_names:
+                found = found._replace(items=_named(found.items[0], self.skill_names))
+            if not self.has_episodes:
+                found = found._replace(previous="main")
         return found
+
+    @property
+    def has_episodes(self) -> bool:
+        """New Game asks the episode first: Doom's, or a game naming its own."""
+        return not self.commercial or bool(self.episode_names)
 
     def slot_text(self, slot: int) -> str:
         """What a slot row shows (the name being typed while it is typed)."""
@@ -113,8 +128,9 @@ class Menu(KeysMenu):
         self.active, self.message, self.save_entry, self.awaiting = False, None, False, None
 
     def _setup(self, name: str) -> None:
-        """M_SetupNextMenu."""
-        self.current, self.item_on = name, self.last_on[name]
+        """M_SetupNextMenu (the cursor kept within a game's fewer rows)."""
+        self.current = name
+        self.item_on = min(self.last_on[name], len(self.menu.items) - 1)
 
     def _ask(self, text: str, answer: str | None, needs_input: bool) -> list:
         """M_StartMessage: the text drawn over everything until a key answers it."""
@@ -246,7 +262,7 @@ class Menu(KeysMenu):
 
     # -- the items' routines --------------------------------------------------------------
     def new_game(self) -> list:
-        self._setup("skill" if self.commercial else "episode")
+        self._setup("episode" if self.has_episodes else "skill")
         return []
 
     def episode(self) -> list:
@@ -323,6 +339,10 @@ class Menu(KeysMenu):
         self.options["detail"] ^= 1
         return [Option("detail", self.options["detail"])]
 
+    def widescreen(self) -> list:
+        self.options["widescreen"] = not self.options["widescreen"]
+        return [Option("widescreen", self.options["widescreen"])]
+
     def sound(self) -> list:
         self._setup("sound")
         return []
@@ -357,3 +377,10 @@ class Menu(KeysMenu):
 
     def _quick_name(self) -> str:
         return self.slots[self.quick_slot] or EMPTY_SLOT
+
+
+def _named(item: Item, names) -> tuple:
+    """Rows of ``item``'s kind labelled ``names`` (a game's own), each name's first letter
+    its alpha key."""
+    return tuple(item._replace(patch="", key=(str(n)[:1] or " ").lower(), label=str(n))
+                 for n in names)

@@ -109,7 +109,8 @@ MENUS = {
                               (2, "M_SCRNSZ", "screen_size", "s"), BLANK,
                               (2, "M_MSENS", "mouse", "m"), BLANK,
                               (1, "M_SVOL", "sound", "s"),
-                              (1, "", "keys_menu", "c", "controls")), "main", 60, 37, 0),
+                              (1, "", "keys_menu", "c", "controls"),
+                              (1, "", "widescreen", "w", "widescreen")), "main", 60, 37, 0),
     "sound": MenuDef(_items((2, "M_SFXVOL", "sfx", "s"), BLANK,
                             (2, "M_MUSVOL", "music", "m"), BLANK), "options", 80, 64, 0),
     "load": MenuDef(_items(*[(1, "", "choose_load", str(n)) for n in range(1, 7)]),
@@ -120,4 +121,4 @@ MENUS = {
 # the options' rows, their ranges and where DOOM starts them (screenblocks 10: size 7)
 RANGES = {"screen_size": 8, "mouse": 9, "sfx": 15, "music": 15}
 DEFAULTS = {"messages": True, "detail": 0, "screen_size": 7, "mouse": 5, "sfx": 8,
-            "music": 8}
+            "music": 8, "widescreen": False}

@@ -220,6 +220,9 @@ def _options(canvas, art, menu):
                  spec.y + LINEHEIGHT * 2)
     canvas.patch(art, ("M_MSGOFF", "M_MSGON")[bool(opts["messages"])], spec.x + 120,
                  spec.y + LINEHEIGHT * 1)
+    row = next(i for i, item in enumerate(spec.items) if item.routine == "widescreen")
+    canvas.text(art, spec.x + 120, spec.y + LINEHEIGHT * row + 3,
+                "on" if opts.get("widescreen") else "off")
     _thermo(canvas, art, spec.x, spec.y + LINEHEIGHT * 6, THERMO_WIDTH["mouse"], opts["mouse"])
     _thermo(canvas, art, spec.x, spec.y + LINEHEIGHT * 4, THERMO_WIDTH["screen_size"],
             opts["screen_size"])

@@ -42,8 +42,11 @@ def bind_tables(play, tables):
     with_actions = game_class(type(play), tables)
     if with_actions is not type(play):
         play.__class__ = with_actions
-    for p in getattr(play, "players", ()):        # room for a game's own weapons
+    count = doom_tables.ammo_count(tables)
+    for p in getattr(play, "players", ()):        # room for a game's own weapons and ammo
         p.weaponowned += [0] * (len(tables.weaponinfo) - len(p.weaponowned))
+        p.ammo += [0] * (count - len(p.ammo))
+        p.maxammo += [0] * (count - len(p.maxammo))
 
 
 def game_class(cls, tables):

@@ -56,6 +56,11 @@ class GamePlayers:
         p.weaponowned[info.wp_pistol] = True
         p.ammo[info.am_clip] = INITIAL_BULLETS
         p.maxammo = list(MAXAMMO[:NUMAMMO])
+        own = self.tables.ammo                      # a game's own ammunition, after DOOM's
+        if own:
+            p.maxammo += [own[n].max_amount if n in own else 0
+                          for n in range(NUMAMMO, max(own) + 1)]
+            p.ammo += [0] * (len(p.maxammo) - NUMAMMO)
 
     def g_player_finish_level(self, player):
         p = self.players[player]

@@ -97,13 +97,18 @@ class Interact:
         if ammo == info.am_noammo:
             return False
         if ammo >= NUMAMMO:
-            raise ValueError("P_GiveAmmo: bad type %i" % ammo)
+            own = self.tables.ammo.get(ammo)        # a game's own (wallbsp.content)
+            if own is None:
+                raise ValueError("P_GiveAmmo: bad type %i" % ammo)
+            clip = own.clip
+        else:
+            clip = CLIPAMMO[ammo]
         if player.ammo[ammo] == player.maxammo[ammo]:
             return False
         if num:
-            num *= CLIPAMMO[ammo]
+            num *= clip
         else:
-            num = CLIPAMMO[ammo] // 2
+            num = clip // 2
         if self.gameskill == SK_BABY or self.gameskill == SK_NIGHTMARE:
             # double ammo in trainer mode, you'll need it in nightmare
             num <<= 1
@@ -323,8 +328,10 @@ class Interact:
             if not player.backpack:
                 for i in range(NUMAMMO):
                     player.maxammo[i] *= 2
+                for i, own in self.tables.ammo.items():
+                    player.maxammo[i] = own.backpack_max
                 player.backpack = True
-            for i in range(NUMAMMO):
+            for i in [*range(NUMAMMO), *self.tables.ammo]:
                 self.p_give_ammo(player, i, 1)
             player.message = "Picked up a backpack full of ammo!"
         # weapons

@@ -1,6 +1,8 @@
 """``p_setup.c``: a map's lumps from a WAD into DOOM's structures (vertexes, sectors,
 sides, lines, subsectors, nodes, segs, the blockmap and the reject matrix, then
-P_GroupLines) and the map's things handed to P_SpawnMapThing.  ``r_main.c``'s
+P_GroupLines) and the map's things handed to P_SpawnMapThing.  A NODES lump holding
+ZDoom's extended nodes (XNOD, ZNOD) is read by ``extnodes`` instead of SSECTORS, NODES and
+SEGS.  ``r_main.c``'s
 R_PointOnSide / R_PointInSubsector, which walk the map's own BSP nodes, are in the base
 class ``BspTables`` (``bsptables.py``).
 
@@ -158,9 +160,12 @@ class MapLoad(BspTables):
         self.p_load_sectors(lumps[info.ML_SECTORS])
         self.p_load_side_defs(lumps[info.ML_SIDEDEFS])
         self.p_load_line_defs(lumps[info.ML_LINEDEFS])
-        self.p_load_subsectors(lumps[info.ML_SSECTORS])
-        self.p_load_nodes(lumps[info.ML_NODES])
-        self.p_load_segs(lumps[info.ML_SEGS])
+        if lumps[info.ML_NODES][:4] in (b"XNOD", b"ZNOD"):     # ZDoom's (``extnodes``)
+            self.p_load_extended_nodes(lumps[info.ML_NODES])
+        else:
+            self.p_load_subsectors(lumps[info.ML_SSECTORS])
+            self.p_load_nodes(lumps[info.ML_NODES])
+            self.p_load_segs(lumps[info.ML_SEGS])
         self.p_group_lines()
         self.p_load_reject(lumps[info.ML_REJECT])
 

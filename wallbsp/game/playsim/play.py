@@ -30,6 +30,7 @@ from .levelbsp import LevelBsp
 from .levelmap import LevelMap
 from .lights import Lights
 from .linespecials import LineSpecials
+from .extnodes import ExtNodes
 from .mapload import MapLoad
 from .maputil import MapUtil
 from .mobjs import Mobjs
@@ -54,7 +55,7 @@ MIXINS = (
     Game, GamePlayers,                          # g_game.c
     Intermission,                               # wi_stuff.c, f_finale.c (their timing)
     WadLumps,                                   # w_wad.c, r_data.c
-    MapLoad, LevelMap, LevelBsp,                # p_setup.c (and our levels as maps)
+    MapLoad, ExtNodes, LevelMap, LevelBsp,      # p_setup.c (ZDoom's XNOD, our levels)
     Ticker,                                     # p_tick.c
     MapUtil, PathTraverse,                      # p_maputl.c
     Sight, BspTables,                           # p_sight.c, r_main.c

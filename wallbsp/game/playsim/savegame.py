@@ -45,7 +45,8 @@ from array import array
 from wallbsp.files import InputError, read_input, write_atomically
 
 from . import game as _game
-from .savelimits import MAX_BODY_BYTES, MAX_HEADER_BYTES, MAX_PARSED_BYTES, parsed_size_bound
+from .savelimits import (MAX_BODY_BYTES, MAX_HEADER_BYTES, MAX_PARSED_BYTES,
+                         check_script_state, parsed_size_bound)
 from .saverestore import Decoder
 from .savestate import Encoder, SaveError
 from .structs import COMMERCIAL, EXE_DOOM_1_9
@@ -117,6 +118,7 @@ def save_game(play, description=""):
     """The save of ``play`` as bytes (the module docstring's format)."""
     if not getattr(play, "mapname", None) or play.gamestate == _game.GS_DEMOSCREEN:
         raise SaveError("no level is loaded: nothing to save")
+    check_script_state(play)                # a level script's values: JSON ones only
     level = _level_name(play)
     wads = [] if play.wad_path is None else [wad_identity(play.wad_path)]
     wads += [wad_identity(f) for f in play.wad_files]

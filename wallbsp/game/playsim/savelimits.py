@@ -19,8 +19,15 @@ fields that index DOOM's tables (a mobj's type, state and sprite, a player's wea
 weapon sprite's state) are within their tables; the fixed-length lists of a player keep
 their lengths; and the counts the map's own load sets (``numsectors``, the blockmap's
 size, ...) are the map's.
+
+A level script's saved state (``game.leveltimers``: ``play.level_script``) is JSON values
+only — numbers within 32 bits, finite floats, strings, True/False/None, lists and
+dictionaries with string keys — at most ``MAX_SCRIPT_VALUES`` of them nested at most
+``MAX_SCRIPT_DEPTH`` deep, checked when a game is saved and when it is loaded
+(``check_script_state``).
 """
 from wallbsp.doom import info
+from wallbsp.doom.tables import ammo_count
 
 from .savestate import SaveError
 from .structs import (MAXPLAYERS, NUMAMMO, NUMCARDS, NUMPOWERS, NUMPSPRITES, NUMWEAPONS,
@@ -28,7 +35,8 @@ from .structs import (MAXPLAYERS, NUMAMMO, NUMCARDS, NUMPOWERS, NUMPSPRITES, NUM
 
 __all__ = ["MAX_BODY_BYTES", "MAX_PARSED_BYTES", "MAX_THINKERS", "MAX_HEADER_BYTES",
            "INT_LOW", "INT_HIGH", "parsed_size_bound", "check_thinker_count", "unlisted_limit",
-           "check_map_counts", "check_loaded", "MAP_COUNTS"]
+           "check_map_counts", "check_loaded", "MAP_COUNTS", "SCRIPT_STATE", "SCRIPT_KEYS",
+           "check_script_state", "check_script_value"]
 
 MAX_BODY_BYTES = 32 << 20
 MAX_PARSED_BYTES = 192 << 20
@@ -43,6 +51,12 @@ _OBJECT_COST, _ARRAY_COST, _ELEMENT_COST, _BYTE_COST = 240, 104, 64, 3
 MAP_COUNTS = ("numvertexes", "numsectors", "numsides", "numlines", "numsegs",
               "numsubsectors", "numnodes", "bmapwidth", "bmapheight", "bmaporgx",
               "bmaporgy")
+
+
+SCRIPT_STATE = "level_script"
+SCRIPT_KEYS = ("script", "loads", "tic", "order", "state", "timers")
+MAX_SCRIPT_VALUES = 1 << 16
+MAX_SCRIPT_DEPTH = 32
 
 
 def parsed_size_bound(raw: bytes) -> int:
@@ -93,10 +107,75 @@ def check_loaded(play, thinkers) -> None:
                       ("lines", play.lines)):
         for i, obj in enumerate(seq):
             _check_words(obj, _MAP_WORDS[name], f"{name}[{i}]")
+    check_script_state(play)
     width, height = getattr(play, "bmapwidth", 0), getattr(play, "bmapheight", 0)
     links = getattr(play, "blocklinks", None)
     if links is not None and (type(links) is not list or len(links) != width * height):
         raise SaveError(f"globals.blocklinks: not the map's {width}x{height} blocks")
+
+
+def check_script_state(play) -> None:
+    """``play``'s level script state, if it has one (module docstring)."""
+    data = vars(play).get(SCRIPT_STATE)
+    if data is None:
+        return
+    where = f"globals.{SCRIPT_STATE}"
+    if type(data) is not dict or sorted(data) != sorted(SCRIPT_KEYS):
+        raise SaveError(f"{where}: not a level script's state ({', '.join(SCRIPT_KEYS)})")
+    if type(data["script"]) is not str:
+        raise SaveError(f"{where}.script: {_short(data['script'])} is not a file name")
+    for key in ("loads", "tic", "order"):
+        _ranged_value(data[key], 0, INT32[1], f"{where}.{key}")
+    if type(data["state"]) is not dict:
+        raise SaveError(f"{where}.state: not a dictionary")
+    timers = data["timers"]
+    if type(timers) is not list:
+        raise SaveError(f"{where}.timers: not a list")
+    for i, timer in enumerate(timers):
+        here = f"{where}.timers[{i}]"
+        if type(timer) is not list or len(timer) != 5:
+            raise SaveError(f"{here}: not [due, order, period, name, arguments]")
+        for k, low in ((0, 0), (1, 0), (2, 0)):
+            _ranged_value(timer[k], low, INT32[1], here)
+        if type(timer[3]) is not str or not timer[3].removeprefix("level.").isidentifier():
+            raise SaveError(f"{here}: {_short(timer[3])} is not a function's name")
+        if type(timer[4]) is not list:
+            raise SaveError(f"{here}: its arguments are not a list")
+    check_script_value(data["state"], f"{where}.state")
+    check_script_value(timers, f"{where}.timers")
+
+
+def check_script_value(value, where) -> None:
+    """``value`` is JSON values only, within the bounds (module docstring)."""
+    stack, count = [(value, where, 0)], 0
+    while stack:
+        v, here, depth = stack.pop()
+        count += 1
+        if count > MAX_SCRIPT_VALUES:
+            raise SaveError(f"{where}: more than {MAX_SCRIPT_VALUES} values")
+        if depth > MAX_SCRIPT_DEPTH:
+            raise SaveError(f"{here}: nested deeper than {MAX_SCRIPT_DEPTH}")
+        t = type(v)
+        if t is int:
+            _ranged_value(v, *INT32, here)
+        elif t is float:
+            if v != v or v in (float("inf"), float("-inf")):
+                raise SaveError(f"{here}: {v} is not a finite number")
+        elif t is list:
+            stack.extend((x, f"{here}[{k}]", depth + 1) for k, x in enumerate(v))
+        elif t is dict:
+            for k, x in v.items():
+                if type(k) is not str:
+                    raise SaveError(f"{here}: the key {_short(k)} is not a string")
+                stack.append((x, f"{here}[{k!r}]", depth + 1))
+        elif not (t is str or t is bool or v is None):
+            raise SaveError(f"{here}: a {t.__name__} is not a value a save holds (numbers, "
+                            f"strings, True, False, None, lists and dictionaries of them)")
+
+
+def _ranged_value(value, low, high, where) -> None:
+    if type(value) is not int or not low <= value <= high:
+        raise SaveError(f"{where}: {_short(value)} is not an integer from {low} to {high}")
 
 
 _MOBJ_WORDS = ("x", "y", "z", "floorz", "ceilingz", "radius", "height", "momx", "momy",
@@ -149,7 +228,8 @@ def _check_player(p, tables, where) -> None:
     if p.mo is not None and not isinstance(p.mo, Mobj):
         raise SaveError(f"{where}.mo: not a map object")
     for name, length in _PLAYER_LISTS:
-        length = weapons if name == "weaponowned" else length
+        length = weapons if name == "weaponowned" else \
+            ammo_count(tables) if name in ("ammo", "maxammo") else length
         value = getattr(p, name, None)
         if type(value) is not list or len(value) != length or \
                 any(type(v) not in (int, bool) for v in value):

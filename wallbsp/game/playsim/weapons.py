@@ -247,16 +247,17 @@ class Weapons:
 
 def ammo_at(player, ammonum):
     """``player->ammo[ammonum]`` as C reads it: past ``NUMAMMO`` (am_noammo) it reads into
-    ``maxammo``, which follows ``ammo`` in ``player_t``."""
-    if ammonum < NUMAMMO:
+    ``maxammo``, which follows ``ammo`` in ``player_t`` (a game's own ammunition, after
+    am_noammo, is in ``ammo``)."""
+    if ammonum < NUMAMMO or info.am_noammo < ammonum < len(player.ammo):
         return player.ammo[ammonum]
     return player.maxammo[ammonum - NUMAMMO]
 
 
 def decrease_ammo(player, ammonum, amount):
     """Chocolate Doom's DecreaseAmmo: vanilla doesn't check the ammo number, so an ammo type
-    past ``NUMAMMO`` decreases ``maxammo`` instead."""
-    if ammonum < NUMAMMO:
+    past ``NUMAMMO`` decreases ``maxammo`` instead (but a game's own, after am_noammo)."""
+    if ammonum < NUMAMMO or info.am_noammo < ammonum < len(player.ammo):
         player.ammo[ammonum] -= amount
     else:
         player.maxammo[ammonum - NUMAMMO] -= amount
