@@ -83,6 +83,24 @@ def test_deathmatch_rewards_a_frag_and_punishes_the_death():
     assert not truncs["player_0"]
 
 
+def test_damage_reward_is_the_health_taken_from_the_other_player_in_the_duel_room():
+    env = parallel_env(players=2, mode="deathmatch", level="duel", size=(32, 24),
+                       max_tics=2000, frag_reward=0.0, death_penalty=0.0, damage_reward=1.0,
+                       observations=("pose",))
+    env.reset(seed=0)
+    env.world.place_player(0, -150, 90, player=0)
+    env.world.place_player(0, 150, 270, player=1)
+    total = {"player_0": 0.0, "player_1": 0.0}
+    for _ in range(60):                             # the weapon comes up, shots miss
+        _, rewards, _, _, infos = env.step({"player_0": ATTACK, "player_1": 0})
+        for agent, r in rewards.items():
+            total[agent] += r
+        if infos["player_1"]["health"] < 40:       # before a death (its overkill counts)
+            break
+    taken = 100 - infos["player_1"]["health"]
+    assert taken > 0 and total == {"player_0": float(taken), "player_1": 0.0}
+
+
 def test_cooperative_players_share_a_kill_and_the_dead_come_back():
     env = parallel_env(players=2, mode="coop", size=(32, 24), max_tics=2000,
                        observations=("pose",))

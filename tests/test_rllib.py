@@ -132,3 +132,22 @@ def test_train_two_iterations_writes_progress_and_a_checkpoint(tmp_path):
     assert sum(lines[0]["env_steps_node"].values()) == lines[0]["env_steps"]
     assert any((tmp_path / "checkpoints").rglob("*.pt")) or \
         any((tmp_path / "checkpoints").rglob("module_state*"))
+
+
+@pytest.mark.skipif(not HAVE_RLLIB or not importlib.util.find_spec("pettingzoo"),
+                    reason='Ray RLlib, torch and pettingzoo are the optional "rl" extra '
+                           '(pip install -e ".[rl]"); CI has none of them')
+def test_two_agents_share_one_policy_through_rllibs_multi_agent_api(tmp_path):
+    from toolscripts import tool_script
+    train = tool_script("train")
+    args = train.parse(["deathmatch", "--agents", "2", "--level", "duel", "--max-tics", "140",
+                        "--damage-reward", "0.01", "--iterations", "1", "--runners", "0",
+                        "--batch", "96", "--minibatch", "48", "--epochs", "1", "--size", "42",
+                        "--cpus", "1", "--checkpoint-every", "0", "--out", str(tmp_path)])
+    args.reward_scale = 1.0                     # as main() sets it for deathmatch
+    lines = train.train(args)
+    assert len(lines) == 1 and lines[0]["env_steps"] >= 96
+    # 35 steps an episode (140 tics, frame skip 4): both agents' episodes end in it
+    assert lines[0]["episodes"] >= 2
+    assert sorted(lines[0]["agent_return_mean"]) == ["player_0", "player_1"]
+    assert lines[0]["entropy"] is not None

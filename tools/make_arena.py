@@ -1,5 +1,7 @@
 """Write ``wallbsp/data/arena.json``: a small arena for several players (the multi-agent
-environment's default map, ``wallbsp.envs.multiagent``), made of our own textures.
+environment's default map, ``wallbsp.envs.multiagent``), made of our own textures; and
+``wallbsp/data/duel.json``: one bare 384 x 384 room (``level="duel"``), where two players
+with pistols meet at once (docs/learning.md's two agents).
 
 A 1024 x 1024 room with four square pillars in a pinwheel (none on a start's line of
 sight to the middle) and a raised platform (one step, 24 units) in
@@ -15,7 +17,9 @@ import json
 import sys
 from pathlib import Path
 
-OUT = Path(__file__).resolve().parent.parent / "wallbsp" / "data" / "arena.json"
+DATA = Path(__file__).resolve().parent.parent / "wallbsp" / "data"
+OUT = DATA / "arena.json"
+DUEL_HALF, DUEL_CORNER = 192, 128
 HALF, PILLAR, PLATFORM, CORNER, ITEM = 512, 48, 96, 416, 288
 PILLARS = ((-320, 160), (160, 320), (320, -160), (-160, -320))     # a quarter turn apart
 FLOOR, CEILING, STEP, LIGHT = 0, 160, 24, 192
@@ -78,9 +82,30 @@ def arena() -> dict:
             "things": things}
 
 
+def duel() -> dict:
+    """A 384 x 384 room, nothing in it: starts 1-4 and four deathmatch starts in the
+    corners, 128 units from the middle, facing it."""
+    walls = [{"v1": i, "v2": (i + 1) % 4, "front": 0, "back": None, "color": "#7a6a5a",
+              "front_side": {"middle": "BRICK1"}} for i in range(4)]
+    sector = {"floor": FLOOR, "ceiling": CEILING, "light": LIGHT, "floor_color": "#4b4137",
+              "ceiling_color": "#2e2e38", "floor_texture": "FLOOR3", "ceiling_texture": "CEIL1"}
+    c = DUEL_CORNER
+    corners = [(-c, -c, 45), (c, c, 225), (c, -c, 135), (-c, c, 315)]
+    things = [{"x": x, "y": y, "angle": angle, "type": kind, "flags": 7}
+              for kinds in ((1, 2, 3, 4), (DEATHMATCH_START,) * 4)
+              for kind, (x, y, angle) in zip(kinds, corners)]
+    x, y, angle = corners[0]
+    return {"format": "wallbsp-level", "version": 2, "name": "Duel (two players, one room)",
+            "vertices": [list(v) for v in square(0, 0, DUEL_HALF)[::-1]],
+            "sectors": [sector], "walls": walls,
+            "start": {"x": x, "y": y, "angle": angle}, "resources": ["textures"],
+            "things": things}
+
+
 def main(argv=None) -> int:
-    OUT.write_text(json.dumps(arena(), indent=1) + "\n")
-    print(OUT)
+    for out, level in ((OUT, arena()), (DATA / "duel.json", duel())):
+        out.write_text(json.dumps(level, indent=1) + "\n")
+        print(out)
     return 0
 
 

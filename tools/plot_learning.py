@@ -3,8 +3,10 @@
 
     python tools/plot_learning.py OUT.png RUN_DIR... [--title TITLE] [--target 60]
 
-Runs are grouped by what they trained on (config.json's ``vizdoom``): each group's mean
-return per iteration against env steps, one thin line a seed and, with several seeds,
+Runs are grouped by what they trained on (config.json's ``vizdoom``, and for wallbsp
+whether its frames had the weapon: ``weapon``, absent in runs from before
+``render_weapon``, which had none): each group's mean return per iteration against env
+steps, one thin line a seed and, with several seeds,
 their mean and min-max band on a common step grid.  Needs matplotlib (``.[bench]``).
 """
 from __future__ import annotations
@@ -16,7 +18,7 @@ from pathlib import Path
 
 import numpy as np
 
-COLOURS = {"wallbsp": "tab:blue", "ViZDoom": "tab:orange"}
+COLOURS = {"wallbsp": "tab:blue", "ViZDoom": "tab:orange", "wallbsp, weapon": "tab:green"}
 
 
 def load(run: Path) -> tuple[str, np.ndarray, np.ndarray]:
@@ -26,7 +28,15 @@ def load(run: Path) -> tuple[str, np.ndarray, np.ndarray]:
     lines = [l for l in lines if l.get("return_mean") is not None]
     steps = np.array([l["env_steps"] for l in lines], float)
     returns = np.array([l["return_mean"] for l in lines], float)
-    return ("ViZDoom" if config.get("vizdoom") else "wallbsp"), steps, returns
+    return source(config), steps, returns
+
+
+def source(config: dict) -> str:
+    """The group of a run: ViZDoom, wallbsp with the weapon drawn, or wallbsp without."""
+    if config.get("vizdoom"):
+        return "ViZDoom"
+    several = config.get("scenario") == "deathmatch"      # the net game draws no weapon
+    return "wallbsp, weapon" if config.get("weapon") and not several else "wallbsp"
 
 
 def smoothed(values: np.ndarray, window: int = 5) -> np.ndarray:
@@ -37,7 +47,8 @@ def smoothed(values: np.ndarray, window: int = 5) -> np.ndarray:
     return (sums[idx] - sums[lo]) / (idx - lo)
 
 
-def plot(out: Path, runs: list[Path], title: str, target: float | None) -> None:
+def plot(out: Path, runs: list[Path], title: str, target: float | None,
+         ylabel: str = "mean episode return") -> None:
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
@@ -64,7 +75,7 @@ def plot(out: Path, runs: list[Path], title: str, target: float | None) -> None:
     if target is not None:
         ax.axhline(target, color="grey", ls="--", lw=1, label=f"target {target:g}")
     ax.set_xlabel("environment steps (frame skip 4)")
-    ax.set_ylabel("mean episode return")
+    ax.set_ylabel(ylabel)
     ax.set_title(title)
     ax.grid(alpha=0.3)
     ax.legend(loc="lower right")
@@ -80,12 +91,13 @@ def main(argv=None) -> int:
     p.add_argument("runs", type=Path, nargs="+")
     p.add_argument("--title", default="PPO (RLlib) on basic: wallbsp and ViZDoom")
     p.add_argument("--target", type=float, default=None)
+    p.add_argument("--ylabel", default="mean episode return")
     args = p.parse_args(argv)
     for run in args.runs:
         if not (run / "progress.jsonl").is_file():
             print(f"plot_learning.py: {run}: no progress.jsonl", file=sys.stderr)
             return 2
-    plot(args.out, args.runs, args.title, args.target)
+    plot(args.out, args.runs, args.title, args.target, args.ylabel)
     return 0
 
 

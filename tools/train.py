@@ -37,6 +37,12 @@ def parse(argv=None):
                                     "deathmatch: two agents, one shared policy")
     p.add_argument("--max-tics", type=int, default=1050,
                    help="deathmatch: episode length in tics (1050: 30 s)")
+    p.add_argument("--agents", type=int, default=2, help="deathmatch: players (2-4)")
+    p.add_argument("--level", default="arena",
+                   help="deathmatch: arena (1024x1024, pillars), duel (a bare 384x384 room) "
+                        "or a level file")
+    p.add_argument("--damage-reward", type=float, default=0.0,
+                   help="deathmatch: reward per point of health taken from another player")
     p.add_argument("--vizdoom", action="store_true", help="ViZDoom's own environments")
     p.add_argument("--seed", type=int, default=0)
     p.add_argument("--steps", type=int, default=300_000, help="env steps to train for")
@@ -56,6 +62,9 @@ def parse(argv=None):
     p.add_argument("--entropy", type=float, default=0.01)
     p.add_argument("--size", type=int, default=64, choices=(42, 64, 84, 96))
     p.add_argument("--rgb", action="store_true", help="colour instead of gray")
+    p.add_argument("--no-weapon", dest="weapon", action="store_false",
+                   help="wallbsp: no weapon in the frame (default: the scenario's, drawn "
+                        "where ViZDoom draws it)")
     p.add_argument("--reward-scale", type=float, default=0.01)
     p.add_argument("--cluster", default=None, metavar="ADDRESS",
                    help="join a running Ray cluster (HOST:PORT or 'auto')")
@@ -76,7 +85,8 @@ def parse(argv=None):
 def env_config(args) -> dict:
     return {"source": "vizdoom" if args.vizdoom else "wallbsp", "scenario": args.scenario,
             "frame_skip": 4, "screen": (160, 120), "size": args.size, "gray": not args.rgb,
-            "reward_scale": args.reward_scale, "env_workers": args.env_workers}
+            "reward_scale": args.reward_scale, "env_workers": args.env_workers,
+            "render_weapon": None if args.weapon else False}
 
 
 def start_ray(args):
@@ -143,13 +153,15 @@ def register_single() -> str:
 
 
 def deathmatch(config, args, model):
-    """Two players in the arena (PettingZoo's ``parallel_env``), one policy for both."""
+    """``--agents`` players in ``--level`` (PettingZoo's ``parallel_env``), one policy for
+    all of them."""
     from ray.rllib.core.rl_module.multi_rl_module import MultiRLModuleSpec
     from ray.rllib.core.rl_module.rl_module import RLModuleSpec
     from ray.tune.registry import register_env
     from wallbsp.envs.rllib import multiagent_env
     register_env("wallbsp-deathmatch", multiagent_env)
-    options = {"players": 2, "mode": "deathmatch", "max_tics": args.max_tics,
+    options = {"players": args.agents, "mode": "deathmatch", "max_tics": args.max_tics,
+               "level": args.level, "damage_reward": args.damage_reward,
                "size": args.size, "gray": not args.rgb}
     return (config.environment("wallbsp-deathmatch", env_config=options)
             .multi_agent(policies={"shared"}, policy_mapping_fn=shared_policy)

@@ -20,7 +20,12 @@ Options (keyword arguments of ``gymnasium.make``):
   is rendered above the bar (``screen.view_size``) and ``screen.Hud`` draws the bar,
   weapon, messages and flashes, ticked after every tic as DOOM's ``ST_Ticker`` is;
   ``depth`` and ``labels`` are of the view, their status-bar rows "nothing" (``inf``,
-  kind 0, index -1), the weapon not in them.
+  kind 0, index -1), the weapon not in them;
+- ``render_weapon``: the player's weapon and its flash drawn over the view (ViZDoom's
+  ``render_weapon``, which it separates from ``render_hud``): True without ``hud`` draws
+  them alone over the whole ``rgb`` frame, placed as ZDoom places them in a 4:3 view (the
+  weapon's bottom on the frame's, ``screen.weapon``'s ``stretched``); None (default) draws
+  them only with ``hud``; False never.  ``depth`` and ``labels`` do not see the weapon.
 
 An episode ends (``terminated``) when the task says so or the player dies; it is truncated
 after ``max_tics`` tics.  ``info`` has ``tics``, ``exited`` (None, "normal" or "secret"),
@@ -37,7 +42,9 @@ from wallbsp.render import render
 from wallbsp.envs import actions, checks
 from wallbsp.envs.observations import (VIEW_KEYS, Automap, check_observations,
     hud_observation, observation_space, pose_of, view_observation)
+from wallbsp.screen.art import art_for
 from wallbsp.screen.hud import Hud, view_size
+from wallbsp.screen.weapon import draw_psprites
 
 __all__ = ["WallbspEnv", "DEFAULT_OBSERVATIONS", "TICRATE"]
 
@@ -58,7 +65,7 @@ class WallbspEnv(gym.Env):
     def __init__(self, size=(160, 120), frame_skip: int = 1, fov: float = 90.0,
                  textures: bool = True, observations=DEFAULT_OBSERVATIONS, max_tics=None,
                  action_space: str = "discrete", render_mode=None, skill: int = 3,
-                 hud: bool = False):
+                 hud: bool = False, render_weapon=None):
         self.width, self.height = checks.check_size(size)
         self.frame_skip = checks.check_count("frame_skip", frame_skip, 1, checks.MAX_FRAME_SKIP)
         self.max_tics = checks.check_count("max_tics", self.default_max_tics if max_tics is None
@@ -77,6 +84,11 @@ class WallbspEnv(gym.Env):
         self.observation_space = observation_space(self.keys, self.width, self.height)
         self.metadata = {**self.metadata, "render_fps": TICRATE / self.frame_skip}
         self.hud = checks.check_flag("hud", hud)
+        self.render_weapon = self.hud if render_weapon is None else \
+            checks.check_flag("render_weapon", render_weapon)
+        self._weapon_alone = self.render_weapon and not self.hud
+        self._art = None                         # (play, the art its weapon is drawn from)
+        self._fuzz = 0
         self.world = None
         self.frame = None
         self._hud = self._picture = None         # the Hud and the last picture it drew on
@@ -130,7 +142,12 @@ class WallbspEnv(gym.Env):
     def render(self):
         if self.render_mode is None or self.world is None:
             return None
-        rgb = self._view().rows("rgb") if self._hud is None else self._hud_picture().copy()
+        if self._hud is None:
+            rgb = self._view().rows("rgb")
+            if self._weapon_alone:
+                self._draw_weapon(rgb)
+        else:
+            rgb = self._hud_picture().copy()
         if self.render_mode == "rgb_array":
             return rgb
         if self._window is None:
@@ -167,7 +184,7 @@ class WallbspEnv(gym.Env):
     # -- the status bar and weapon (``hud``) --------------------------------------------------
     def _start_hud(self) -> None:
         """A fresh Hud for the episode's world (with ``hud``; DOOM's straight face)."""
-        self._hud = Hud() if self.hud else None
+        self._hud = Hud(weapon=self.render_weapon, art=self.screen_art()) if self.hud else None
         self._seen_message = self.world.messages[-1] if self.world.messages else None
 
     def _tic_hud(self) -> None:
@@ -182,6 +199,22 @@ class WallbspEnv(gym.Env):
         if newest is not self._seen_message:
             self._seen_message = newest
             hud.say(newest[1])
+
+    def screen_art(self):
+        """The pictures of the weapon and status bar (``screen.art``); None: the play's
+        (``art_for``)."""
+        return None
+
+    def _draw_weapon(self, rgb: np.ndarray) -> np.ndarray:
+        """``render_weapon`` without ``hud``: the weapon and its flash over ``rgb`` (the
+        whole view), placed as ZDoom places them (``stretched``)."""
+        play = self.world.play
+        if self._art is None or self._art[0] is not play:
+            self._art = (play, self.screen_art() or art_for(play))
+        self._fuzz = draw_psprites(rgb, play.players[play.consoleplayer], self._art[1],
+                                   self.width, self.height, self._fuzz, play.tables,
+                                   stretched=True)
+        return rgb
 
     def _hud_picture(self) -> np.ndarray:
         """The view with the status bar and weapon, ``(H, W, 3)`` (drawn once per step)."""
@@ -198,6 +231,8 @@ class WallbspEnv(gym.Env):
             obs = hud_observation(self._view(), self._hud_picture(), self.keys)
         else:
             obs = view_observation(self._view(), self.keys) if self._views else {}
+            if self._weapon_alone and "rgb" in obs:
+                self._draw_weapon(obs["rgb"])
         if "automap" in self.keys:
             obs["automap"] = self._map_picture()
         if "pose" in self.keys:

@@ -9,6 +9,7 @@ Agents ``player_0`` .. ``player_{N-1}`` are DOOM's players 1..N.  Options:
 
 - ``level``: ``"arena"`` (default: ``wallbsp/data/arena.json``, our textures, Freedoom's
   IWAD added as a picture source when installed, for the players' and weapons' sprites),
+  ``"duel"`` (``wallbsp/data/duel.json``: one bare 384 x 384 room, the same way),
   or what ``Exit-v0`` takes (a level file, a ``.wbsp`` tree, ``"WAD:MAP"`` such as
   ``freedoom2.wad:MAP01``); starts the level lacks are made (``game.multiplayer``);
 - ``players`` (2-4), ``mode``: ``"deathmatch"`` (DOOM's deathmatch 1: weapons stay),
@@ -25,7 +26,8 @@ Agents ``player_0`` .. ``player_{N-1}`` are DOOM's players 1..N.  Options:
   is pressed for it, so it comes back on the next tic, as ViZDoom's ``respawn_player()``;
   False: the agent must press ``USE`` itself);
 - rewards: ``frag_reward`` (1), ``death_penalty`` (1), ``kill_reward`` (1),
-  ``exit_reward`` (10).
+  ``exit_reward`` (10), ``damage_reward`` (0: deathmatch, per point of health the agent
+  takes from another player, from the play's event log).
 
 Rewards.  Deathmatch: ``+frag_reward`` for each other player the agent kills,
 ``-death_penalty`` for each of its deaths (killed by a player, itself, a monster or the
@@ -61,6 +63,7 @@ from wallbsp.envs.levels import given_tree
 from wallbsp.envs.observations import observation_space, pose_of, view_observation
 from wallbsp.envs.scenarios import installed_iwad, our_resources
 from wallbsp.game.arguments import describe
+from wallbsp.game.playsim.events import Damaged
 from wallbsp.game.playsim.structs import BT_USE
 from wallbsp.game.world import TICRATE, World
 from wallbsp.render import render
@@ -76,23 +79,24 @@ OBSERVATIONS = ("rgb", "depth", "labels", "pose", "gamevars")
 VIEW_KEYS = ("rgb", "depth", "labels")
 ACTION_KINDS = ("discrete", "multibinary", "box")
 ARENA = Path(__file__).resolve().parent.parent / "data" / "arena.json"
+ARENAS = {"arena": ARENA, "duel": ARENA.with_name("duel.json")}
 DEATHMATCH_START = 11
 _ARENA: dict = {}
 
 
-def arena_tree():
-    """The bundled arena compiled (once per process), Freedoom's IWAD added as a picture
-    source when installed (``WALLBSP_IWAD`` names another), else our own sprites (the
-    players' PLAY frames of the game level's folder)."""
+def arena_tree(name: str = "arena"):
+    """A bundled arena (``ARENAS``) compiled (once per process), Freedoom's IWAD added as a
+    picture source when installed (``WALLBSP_IWAD`` names another), else our own sprites
+    (the players' PLAY frames of the game level's folder)."""
     iwad = installed_iwad()
-    if iwad not in _ARENA:
+    if (name, iwad) not in _ARENA:
         from wallbsp.bsp.build import compile_level
         from wallbsp.level.io import load_level
-        level = load_level(ARENA)
+        level = load_level(ARENAS[name])
         extra = (iwad,) if iwad else tuple(our_resources())
         level = dataclasses.replace(level, resources=tuple(level.resources) + extra)
-        _ARENA[iwad] = compile_level(level)
-    return _ARENA[iwad]
+        _ARENA[name, iwad] = compile_level(level)
+    return _ARENA[name, iwad]
 
 
 os.register_at_fork(after_in_child=_ARENA.clear)
@@ -110,7 +114,8 @@ class MultiAgentEnv(ParallelEnv):
                  buttons=DEFAULT_BUTTONS, action_space: str = "discrete", skill: int = 3,
                  max_tics: int = TICRATE * 120, frag_limit=None, respawn: bool = True,
                  frag_reward: float = 1.0, death_penalty: float = 1.0,
-                 kill_reward: float = 1.0, exit_reward: float = 10.0, render_mode=None):
+                 kill_reward: float = 1.0, exit_reward: float = 10.0,
+                 damage_reward: float = 0.0, render_mode=None):
         checks.check_choice("mode", mode, tuple(MODES))
         players = checks.check_count("players", players, 2, 4)
         checks.check_choice("action_space", action_space, ACTION_KINDS)
@@ -127,15 +132,17 @@ class MultiAgentEnv(ParallelEnv):
         self.frag_limit = None if frag_limit is None else \
             checks.check_count("frag_limit", frag_limit)
         self.respawn = checks.check_flag("respawn", respawn)
-        self.frag_reward, self.death_penalty, self.kill_reward, self.exit_reward = (
+        (self.frag_reward, self.death_penalty, self.kill_reward, self.exit_reward,
+         self.damage_reward) = (
             checks.check_number(name, value) for name, value in
             (("frag_reward", frag_reward), ("death_penalty", death_penalty),
-             ("kill_reward", kill_reward), ("exit_reward", exit_reward)))
+             ("kill_reward", kill_reward), ("exit_reward", exit_reward),
+             ("damage_reward", damage_reward)))
         self.render_mode = render_mode
         self.buttons = gamevars.check_buttons(buttons)
         self.variables = gamevars.check_variables(variables)
         self.action_kind = action_space
-        self.tree = arena_tree() if isinstance(level, str) and level == "arena" else \
+        self.tree = arena_tree(level) if isinstance(level, str) and level in ARENAS else \
             given_tree(checks.check_level(level))
         self.possible_agents = [f"player_{k}" for k in range(players)]
         self.agents = []
@@ -269,6 +276,8 @@ class MultiAgentEnv(ParallelEnv):
         if self.deathmatch:
             rewards += [self.frag_reward * (now[0] - before[0])
                         for now, before in zip(counts, self._counts)]
+            if self.damage_reward:
+                rewards += self.damage_reward * self._damage_dealt()
         else:
             kills = sum(c[1] for c in counts) - sum(c[1] for c in self._counts)
             rewards += self.kill_reward * kills
@@ -276,6 +285,18 @@ class MultiAgentEnv(ParallelEnv):
                 rewards += self.exit_reward
         self._counts = counts
         return rewards
+
+    def _damage_dealt(self) -> np.ndarray:
+        """Per player: health it took from other players this tic (the event log's
+        ``Damaged`` records, blamed on its body)."""
+        bodies = {id(p.mo): k for k, p in
+                  enumerate(self.world.play.players[:len(self.possible_agents)])}
+        dealt = np.zeros(len(self.possible_agents))
+        for e in self.world.play.take_events():
+            if type(e) is Damaged and e.source is not None and e.target.player is not None \
+                    and e.target is not e.source and id(e.source) in bodies:
+                dealt[bodies[id(e.source)]] += e.amount
+        return dealt
 
     def _ended(self) -> bool:
         if self.world.exited:

@@ -13,7 +13,9 @@ ViZDoom's own environments).  The env config says what to build:
 - ``frame_skip`` (4), ``screen`` (the rendered frame ``(W, H)``, default ViZDoom's
   160x120), ``size`` (the square the policy sees, 64: a shape RLlib's default CNN
   takes), ``gray`` (True), ``reward_scale`` (0.01: ViZDoom's rewards are in the hundreds);
-- ``env_workers``: ``make_vec``'s ``workers`` for each runner (0: in the runner's process).
+- ``env_workers``: ``make_vec``'s ``workers`` for each runner (0: in the runner's process);
+- ``render_weapon``: wallbsp's weapon in the frame (None: the scenario's default, on where
+  ViZDoom draws it; ViZDoom's own environments draw theirs as their ``.cfg`` says).
 
 ``multiagent_env`` is the PettingZoo deathmatch (``parallel_env``) as RLlib's
 ``MultiAgentEnv``, each agent seeing its own ``Screen``.
@@ -36,7 +38,8 @@ SCENARIOS = {"basic": ("wallbsp/Basic-v0", "VizdoomBasic-v1"),
              "health_gathering": ("wallbsp/HealthGathering-v0", "VizdoomHealthGathering-v1"),
              "take_cover": ("wallbsp/TakeCover-v0", "VizdoomTakeCover-v1")}
 DEFAULTS = {"source": "wallbsp", "scenario": "basic", "frame_skip": 4, "screen": (160, 120),
-            "size": 64, "gray": True, "reward_scale": 0.01, "env_workers": 0}
+            "size": 64, "gray": True, "reward_scale": 0.01, "env_workers": 0,
+            "render_weapon": None}
 GRAY = np.array([0.299, 0.587, 0.114], np.float32)        # ITU-R 601 luma
 
 
@@ -109,6 +112,8 @@ def make_env(config):
     if s["source"] == "wallbsp":
         import wallbsp.envs
         options = dict(size=(width, height), frame_skip=s["frame_skip"], observations=("rgb",))
+        if s["render_weapon"] is not None:
+            options["render_weapon"] = bool(s["render_weapon"])
         if num_envs is None:
             env = gym.make(wallbsp_id, **options)
         else:

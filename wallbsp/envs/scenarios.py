@@ -12,7 +12,13 @@ with ViZDoom's buttons, game variables, rewards and episode rules.
   value a button: binary buttons pressed above 0.5, the deltas as ``gamevars`` says);
 - ``observations=``: as ``WallbspEnv``'s plus ``"gamevars"`` (a float32 vector of the
   variables); default ``("rgb", "gamevars")``;
-- ``variables=``: ViZDoom's variable names for ``gamevars``, default the scenario's.
+- ``variables=``: ViZDoom's variable names for ``gamevars``, default the scenario's;
+- ``render_weapon=``: the player's weapon in ``rgb`` (``WallbspEnv``'s option), from
+  Freedoom's IWAD when installed; default the scenario's ``render_weapon``: on, as
+  ViZDoom's own default (basic, defend_the_center, defend_the_line, deadly_corridor and
+  predict_position show the gun in hand), off where ViZDoom's player holds nothing
+  (health_gathering, health_gathering_supreme, take_cover, my_way_home: ZDoom's
+  ``ClearInventory`` takes even the fist, which DOOM's player keeps).
 
 An episode: the level loads, DOOM's random index is drawn from the episode's generator,
 the scenario's ``reset`` runs, then ``start_tics`` tics with nothing pressed (ViZDoom's
@@ -37,6 +43,7 @@ from wallbsp.envs.vizdoom_source import CONVERTED, converted_level
 from wallbsp.game.playsim.game import GA_COMPLETED, GA_VICTORY
 from wallbsp.game.scenario import SCENARIO_DIR
 from wallbsp.game.world import World
+from wallbsp.screen.art import art_of
 
 __all__ = ["ScenarioEnv", "scenario_tree", "installed_iwad", "our_resources", "IWAD_PATHS"]
 
@@ -104,7 +111,8 @@ class ScenarioEnv(WallbspEnv):
     """A scenario as an environment (module docstring)."""
 
     def __init__(self, scenario, buttons=None, variables=None, action_space="discrete",
-                 observations=("rgb", "gamevars"), skill=None, max_tics=None, **options):
+                 observations=("rgb", "gamevars"), skill=None, max_tics=None,
+                 render_weapon=None, **options):
         self.scenario = scenario() if isinstance(scenario, type) else scenario
         sc = self.scenario
         self.default_max_tics = sc.start_tics + sc.timeout if sc.timeout else 10 ** 9
@@ -113,7 +121,9 @@ class ScenarioEnv(WallbspEnv):
         self.with_gamevars = "gamevars" in keys
         view_keys = tuple(k for k in keys if k != "gamevars") or ("pose",)
         super().__init__(observations=view_keys, max_tics=max_tics,
-                         skill=sc.skill if skill is None else skill, **options)
+                         skill=sc.skill if skill is None else skill,
+                         render_weapon=sc.render_weapon if render_weapon is None
+                         else render_weapon, **options)
         self._keys_wanted = tuple(k for k in keys if k != "gamevars")
         self.buttons = gamevars.check_buttons(sc.buttons if buttons is None else buttons)
         self.variables = gamevars.check_variables(sc.variables if variables is None
@@ -137,6 +147,12 @@ class ScenarioEnv(WallbspEnv):
         if self.with_gamevars:
             made["gamevars"] = spaces.Box(-np.inf, np.inf, (len(self.variables),), np.float32)
         return spaces.Dict(made)
+
+    def screen_art(self):
+        """The weapon's pictures from the IWAD the level's pictures come from (the play has
+        no WAD of its own), else the play's (our own)."""
+        iwad = installed_iwad()
+        return art_of((iwad,)) if iwad else None
 
     # -- episodes -----------------------------------------------------------------------------
     def episode_tree(self):

@@ -19,6 +19,7 @@ class MyWayHome(Scenario):
     living_reward = -0.0001
     buttons = ("TURN_LEFT", "TURN_RIGHT", "MOVE_FORWARD", "MOVE_LEFT", "MOVE_RIGHT")
     variables = ()
+    render_weapon = False               # ClearInventory: empty-handed in ViZDoom
 
     def reset(self, world, rng):
         things = map_spots(self.level)

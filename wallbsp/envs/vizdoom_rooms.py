@@ -101,6 +101,7 @@ class HealthGathering(Scenario):
     living_reward, death_penalty = 1.0, 100.0
     buttons = ("TURN_LEFT", "TURN_RIGHT", "MOVE_FORWARD")
     variables = ("HEALTH",)
+    render_weapon = False               # ClearInventory: empty-handed in ViZDoom
     size, first, every, item = 1216.0, 16, 30, "Medikit"
     acid, acid_every = 8, 32
 
@@ -138,6 +139,7 @@ class TakeCover(Scenario):
     living_reward = 1.0
     buttons = ("MOVE_LEFT", "MOVE_RIGHT")
     variables = ("HEALTH",)
+    render_weapon = False               # ClearInventory: empty-handed in ViZDoom
 
     def reset(self, world, rng):
         self.rng = rng

@@ -184,6 +184,9 @@ class Scenario:
     death_penalty = 0.0
     buttons: tuple = ()
     variables: tuple = ()
+    render_weapon = True      # the environment draws the weapon in hand (ViZDoom's default);
+                              # False where ZDoom's ClearInventory leaves no weapon at all
+                              # (DOOM's player always keeps the fist)
 
     def __init__(self):
         self.events: list[Event] = []

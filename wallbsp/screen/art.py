@@ -21,7 +21,8 @@ Both answer the same questions:
   frame in place; ``fuzz_tables(row)`` what the fuzz darkens by (COLORMAP row ``row``).
 
 ``art_for(play)`` chooses: the play's WAD and PWADs (a later lump of a name wins, as in
-``W_GetNumForName``), or our own pictures when the play has no WAD.
+``W_GetNumForName``), or our own pictures when the play has no WAD; ``art_of(paths)`` the
+art of given WADs (a scenario's pictures come from Freedoom's IWAD without a play WAD).
 """
 from __future__ import annotations
 
@@ -36,7 +37,7 @@ from wallbsp.assets.pictures import (COLORMAP_ROWS, LIGHT_LEVELS, Picture, decod
 from wallbsp.assets.wad import open_wad
 from wallbsp.screen.remap import grey_inverse, invert
 
-__all__ = ["WadArt", "OwnArt", "art_for", "OWN_ART", "NUM_PALETTES", "INVERSE", "blend_tints",
+__all__ = ["WadArt", "OwnArt", "art_for", "art_of", "OWN_ART", "NUM_PALETTES", "INVERSE", "blend_tints",
            "ColourIndex"]
 
 NUM_PALETTES = 14           # 0 normal, 1-8 red, 9-12 bonus gold, 13 radiation suit
@@ -217,6 +218,13 @@ def art_for(play):
     source = getattr(play, "levelsource", None)
     own = () if paths or not source else tuple(
         p / "hud" for p in source[0].resource_paths() if (p / "hud").is_dir())
+    return art_of(paths, own)
+
+
+def art_of(paths=(), own=()):
+    """The art of the WADs ``paths`` (in load order), or without any our own pictures after
+    the folders ``own``; cached per files (their paths and modification times)."""
+    paths, own = tuple(paths), tuple(own)
     key = tuple((os.path.realpath(p), os.stat(p).st_mtime_ns) for p in paths + own)
     art = _CACHE.get(key)
     if art is None:

@@ -15,6 +15,16 @@ the sector's light as ``spritelights[MAXLIGHTSCALE - 1]``: row ``(15 - lightnum)
 clamped to 0..31, ``lightnum = lightlevel / 16 + extralight``.  Invisibility draws the
 fuzz: the pixel a row above or below (DOOM's ``fuzzoffset`` table), darkened as COLORMAP
 row 6 darkens it.
+
+``stretched=True`` places the weapon as ZDoom (and so ViZDoom, whose ``render_weapon``
+draws it without the status bar) does in a 4:3 view: DOOM's 320 × 200 layout fills the
+view's whole height, the vertical scale ``view_height / 200`` instead of the horizontal
+``view_width / 320`` (ZDoom's ``pspriteyscale = pspritexscale * yaspectmul``), so the
+weapon's bottom is the view's bottom, as on a 320 × 200 screen shown at 4:3; and one unit
+to the left, ZDoom's weapon resting at x 0 where DOOM's ``A_WeaponReady`` puts ``sx`` at 1
+(ZDoom adds the bob when drawing).  With ViZDoom's own Freedoom sprites the weapon then
+covers the pixels ViZDoom's does at 160 × 120 but for 3-5 % of them, at its edges
+(defend_the_center's and defend_the_line's pistol, predict_position's launcher).
 """
 from __future__ import annotations
 
@@ -27,7 +37,7 @@ from wallbsp.doom.fixed import FRACBITS, FRACUNIT, fixed_mul
 
 __all__ = ["draw_psprites", "psprite_columns", "sprite_level", "WEAPONTOP", "FF_FULLBRIGHT"]
 
-SCREENWIDTH, BASEYCENTER = 320, 100
+SCREENWIDTH, SCREENHEIGHT, BASEYCENTER = 320, 200, 100
 WEAPONTOP = 32 * FRACUNIT
 FF_FULLBRIGHT, FF_FRAMEMASK = 0x8000, 0x7FFF
 LIGHTLEVELS, LIGHTSEGSHIFT, NUMCOLORMAPS = 16, 4, 32
@@ -49,15 +59,20 @@ def sprite_level(player) -> int:
                NUMCOLORMAPS - 1)
 
 
-def psprite_columns(sx, sy, picture, flipped, view_width, view_height):
+def psprite_columns(sx, sy, picture, flipped, view_width, view_height, stretched=False):
     """Where R_DrawPSprite puts a picture: ``(x1, texture columns, y1, texture rows)`` —
     screen columns ``x1 ..`` show the picture's columns ``cols``, rows ``y1 ..`` its rows
-    ``rows`` — or None when it is off the view."""
+    ``rows`` — or None when it is off the view.  ``stretched``: ZDoom's vertical scale
+    (module doc).  The columns and rows inside the picture are found by integer division
+    (the steps are monotonic), not by testing every one: an environment draws this every
+    step."""
     scale = FRACUNIT * view_width // SCREENWIDTH
     iscale = FRACUNIT * SCREENWIDTH // view_width
+    row_step = FRACUNIT * SCREENHEIGHT // view_height if stretched else iscale
     centerxfrac = (view_width // 2) << FRACBITS
     centery = view_height // 2
-    tx = sx - (SCREENWIDTH // 2) * FRACUNIT - (picture.left << FRACBITS)
+    rest = FRACUNIT if stretched else 0          # ZDoom's weapon rests at x 0, DOOM's at 1
+    tx = sx - rest - (SCREENWIDTH // 2) * FRACUNIT - (picture.left << FRACBITS)
     x1 = (centerxfrac + fixed_mul(tx, scale)) >> FRACBITS
     if x1 > view_width:
         return None
@@ -66,29 +81,39 @@ def psprite_columns(sx, sy, picture, flipped, view_width, view_height):
     if x2 < 0:
         return None
     vx1, vx2 = max(x1, 0), min(x2, view_width - 1)
-    if flipped:
-        step, start = -iscale, (picture.width << FRACBITS) - 1
-    else:
-        step, start = iscale, 0
-    start += step * (vx1 - x1)
-    cols = (start + step * np.arange(vx2 - vx1 + 1, dtype=np.int64)) >> FRACBITS
+    width = picture.width << FRACBITS
+    if flipped:         # column k: (start - iscale k) >> 16, kept while in [0, width)
+        start = width - 1 - iscale * (vx1 - x1)
+        first, last = (start - width) // iscale + 1, start // iscale
+        step = -iscale
+    else:               # column k: (start + iscale k) >> 16
+        start = iscale * (vx1 - x1)
+        first, last = _ceil_div(-start, iscale), _ceil_div(width - start, iscale) - 1
+        step = iscale
+    first, last = max(first, 0), min(last, vx2 - vx1)
     texturemid = (BASEYCENTER << FRACBITS) + FRACUNIT // 2 - (sy - (picture.top << FRACBITS))
-    rows = (texturemid + (np.arange(view_height, dtype=np.int64) - centery) * iscale) \
-        >> FRACBITS
-    inside = np.flatnonzero((rows >= 0) & (rows < picture.height))
-    keep = (cols >= 0) & (cols < picture.width)
-    if not inside.size or not keep.any():
+    # row y: (texturemid + (y - centery) row_step) >> 16, kept while in [0, height)
+    top = max(centery + _ceil_div(-texturemid, row_step), 0)
+    bottom = min(centery + _ceil_div((picture.height << FRACBITS) - texturemid, row_step) - 1,
+                 view_height - 1)
+    if first > last or top > bottom:
         return None
-    first = int(np.argmax(keep))
-    cols = cols[first:first + int(keep[first:].sum())]
-    return vx1 + first, cols, int(inside[0]), rows[inside[0]:inside[-1] + 1]
+    cols = (start + step * np.arange(first, last + 1, dtype=np.int64)) >> FRACBITS
+    rows = (texturemid + (np.arange(top, bottom + 1, dtype=np.int64) - centery) * row_step) \
+        >> FRACBITS
+    return vx1 + first, cols, top, rows
+
+
+def _ceil_div(a: int, b: int) -> int:
+    return -(-a // b)
 
 
 def draw_psprites(frame, player, art, view_width, view_height, fuzz_pos=0,
-                  tables=DOOM) -> int:
+                  tables=DOOM, stretched=False) -> int:
     """R_DrawPlayerSprites into ``frame`` (``(height, width, 3)``, the view at its top left);
     returns the fuzz position after (DOOM's ``fuzzpos`` runs on across frames).
-    ``tables``: the play's object tables (``play.tables``)."""
+    ``tables``: the play's object tables (``play.tables``); ``stretched``: placed as ZDoom
+    places it (module doc)."""
     invisible = player.powers[info.pw_invisibility]
     shadow = invisible > 4 * 32 or invisible & 8
     for psp in player.psprites:
@@ -100,7 +125,8 @@ def draw_psprites(frame, player, art, view_width, view_height, fuzz_pos=0,
         if found is None:
             continue
         picture, flipped = found
-        placed = psprite_columns(psp.sx, psp.sy, picture, flipped, view_width, view_height)
+        placed = psprite_columns(psp.sx, psp.sy, picture, flipped, view_width, view_height,
+                                 stretched)
         if placed is None:
             continue
         x1, cols, y1, rows = placed
