@@ -5,7 +5,8 @@ baseline revision in ONE process, taking turns block by block (issue 34's harnes
 
 - ``exit``: ``wallbsp/Exit-v0`` on freedoom1.wad E1M1 at 160x120, default observations;
 - ``basic``: ViZDoom's basic as wallbsp plays it (``wallbsp/Basic-v0``, 160x120 screen,
-  frame skip 4 as ViZDoom's examples step it).
+  frame skip 4 as ViZDoom's examples step it), this side drawing the weapon in hand as
+  ViZDoom does (new since the baseline), and ``basic, no weapon``: like for like.
 
     python tools/bench.py envstep [--rev REV] [--rounds N] [--steps N] [--quick] [--no-docs]
 
@@ -35,8 +36,12 @@ SIZE = (160, 120)
 def make_envs(package: str) -> dict:
     tasks = importlib.import_module(f"{package}.envs.tasks")
     vizdoom = importlib.import_module(f"{package}.envs.vizdoom")
+    # ee97f12 drew no weapon in the scenarios; basic now draws one by default, as
+    # ViZDoom's does (render_weapon): "basic, no weapon" is the like-for-like pair
+    unarmed = {} if package == "wallbsp_base" else {"render_weapon": False}
     return {"exit": lambda: tasks.ExitEnv(level=f"{FREEDOOM[0]}:E1M1", size=SIZE),
-            "basic": lambda: vizdoom.BasicEnv(size=SIZE, frame_skip=4)}
+            "basic": lambda: vizdoom.BasicEnv(size=SIZE, frame_skip=4),
+            "basic, no weapon": lambda: vizdoom.BasicEnv(size=SIZE, frame_skip=4, **unarmed)}
 
 
 def main(argv=None) -> int:
