@@ -190,7 +190,21 @@ def start_display(first: int):
     raise SystemExit("nodes_shots: no free X display")
 
 
-def shoot(wad: Path, warp: int, display: str, out: Path) -> None:
+def shoot(wad: Path, warp: int, display: str, out: Path, tries: int = 3) -> None:
+    """One launch's picture; a launch whose window never shows (seen: stuck in I_Init, or a
+    window gone before the picture) is tried again."""
+    for attempt in range(tries):
+        if out.exists():
+            return
+        try:
+            return launch(wad, warp, display, out)
+        except (RuntimeError, subprocess.SubprocessError) as error:
+            print(f"nodes_shots: {error}, attempt {attempt + 1}", file=sys.stderr)
+            out.unlink(missing_ok=True)
+    raise RuntimeError(f"no window for {wad} in {tries} launches")
+
+
+def launch(wad: Path, warp: int, display: str, out: Path) -> None:
     home = wad.parent / "home"
     folder = home / ".local" / "share" / "chocolate-doom"
     folder.mkdir(parents=True, exist_ok=True)
@@ -204,7 +218,7 @@ def shoot(wad: Path, warp: int, display: str, out: Path) -> None:
                              "-skill", "3", "-nosound"], env=env, stdin=subprocess.DEVNULL,
                             stdout=log, stderr=log)
     try:
-        window, end = "", time.time() + 60
+        window, end = "", time.time() + 20
         while not window and time.time() < end:
             window = subprocess.run(["xdotool", "search", "--pid", str(game.pid)], env=env,
                                     capture_output=True, text=True).stdout.split()
@@ -213,7 +227,11 @@ def shoot(wad: Path, warp: int, display: str, out: Path) -> None:
         if not window:
             raise RuntimeError(f"no window for {wad}")
         time.sleep(SHOT_DELAY)
-        subprocess.run(["import", "-window", window, f"png:{out}"], env=env, check=True)
+        window = subprocess.run(["xdotool", "search", "--pid", str(game.pid)], env=env,
+                                capture_output=True, text=True).stdout.split()[-1:] or [window]
+        window = window[0]                  # SDL may have made its window again
+        subprocess.run(["import", "-window", window, f"png:{out}"], env=env, check=True,
+                       timeout=15)
     finally:
         game.terminate()
         try:
@@ -259,6 +277,8 @@ def main(argv=None) -> int:
     parser.add_argument("--views", type=int, default=10)
     parser.add_argument("--out", default=str(ROOT / "docs"))
     parser.add_argument("--keep", help="keep the shots and WADs in this folder")
+    parser.add_argument("--control", action="store_true", help="the shipped WAD on both "
+                        "sides: what the moment of the picture alone changes")
     args = parser.parse_args(argv)
     for tool in (DOOM, "xdotool", "import", "Xvfb"):
         if shutil.which(tool) is None:
@@ -268,10 +288,14 @@ def main(argv=None) -> int:
     work = Path(args.keep) if args.keep else Path(tempfile.mkdtemp(prefix="nodes_shots-"))
     work.mkdir(parents=True, exist_ok=True)
     rebuilt_path = work / "rebuilt.wad"
-    if not rebuilt_path.exists():
+    if args.control:
+        rebuilt_path = Path(WAD)
+    if not rebuilt_path.exists() and not args.control:
         subprocess.run([sys.executable, "-m", "wallbsp", "nodes", WAD, "-o", str(rebuilt_path)],
                        check=True, cwd=ROOT)
     sources = {"shipped": Path(WAD).read_bytes(), "rebuilt": rebuilt_path.read_bytes()}
+    if args.control:
+        sources["rebuilt"] = sources["shipped"]
     displays = [start_display(71), start_display(81)]
     results, worst = {}, None
     try:
