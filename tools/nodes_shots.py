@@ -36,6 +36,7 @@ from pathlib import Path
 import numpy as np
 
 ROOT = Path(__file__).resolve().parent.parent
+os.environ.setdefault("PYGAME_HIDE_SUPPORT_PROMPT", "1")      # stdout is the JSON
 WAD = "/usr/share/games/doom/freedoom2.wad"
 DOOM = "/usr/games/chocolate-doom"
 VIEW_ROWS = 168                 # screenblocks 10: 200 rows less the 32-row status bar
@@ -292,7 +293,7 @@ def main(argv=None) -> int:
         rebuilt_path = Path(WAD)
     if not rebuilt_path.exists() and not args.control:
         subprocess.run([sys.executable, "-m", "wallbsp", "nodes", WAD, "-o", str(rebuilt_path)],
-                       check=True, cwd=ROOT)
+                       check=True, cwd=ROOT, stdout=sys.stderr)   # stdout is the JSON
     sources = {"shipped": Path(WAD).read_bytes(), "rebuilt": rebuilt_path.read_bytes()}
     if args.control:
         sources["rebuilt"] = sources["shipped"]
@@ -313,6 +314,8 @@ def main(argv=None) -> int:
                         jobs.append(pool.submit(shoot, wad, number, display, shots[side]))
                     for job in jobs:
                         job.result()
+                    for shot in shots.values():         # 28 MB a copy, 200 copies
+                        (shot.parent / "freedoom2.wad").unlink(missing_ok=True)
                     a, b = view_pixels(shots["shipped"]), view_pixels(shots["rebuilt"])
                     differing = int((a != b).any(2).sum())
                     views.append({"x": start[0], "y": start[1], "angle": start[2],
