@@ -13,7 +13,6 @@ NF_SUBSECTOR (0x8000), so a map of more than 32767 nodes or subsectors is refuse
 """
 import math
 
-from wallbsp.doom import info
 from wallbsp.doom.fixed import FRACBITS
 from wallbsp.doom.info import NF_SUBSECTOR
 from wallbsp.nodes.builder import LEAF_FLAG
@@ -103,14 +102,7 @@ class ExtNodes:
             li.angle = (round(math.atan2(dy, dx) / math.tau * 65536) & 0xFFFF) << FRACBITS
             li.offset = round(math.hypot(li.v1.x - start.x, li.v1.y - start.y)
                               / (1 << FRACBITS)) << FRACBITS
-            li.sidedef = sides[sidenum]
-            li.frontsector = sides[sidenum].sector
-            if ldef.flags & info.ML_TWOSIDED:
-                back = ldef.sidenum[side ^ 1]
-                li.backsector = sides[back].sector if 0 <= back < numsides \
-                    else self._null_sector()
-            else:
-                li.backsector = None
+            self.seg_sides(li, ldef, side, sides)
             segs.append(li)
         self.segs = segs
         self.numsegs = len(segs)

@@ -251,18 +251,23 @@ class MapLoad(BspTables):
             if not 0 <= sidenum < numsides:        # e6y's check, kept by Chocolate Doom
                 raise MapLoadError(f"P_LoadSegs: linedef {linedef} for seg {i} references "
                                    f"a non-existent sidedef {sidenum & 0xFFFFFFFF}")
-            li.sidedef = sides[sidenum]
-            li.frontsector = sides[sidenum].sector
-            if ldef.flags & info.ML_TWOSIDED:
-                back = ldef.sidenum[side ^ 1]
-                # a "glass hack" one-sided window: vanilla read a sector at address 0
-                li.backsector = sides[back].sector if 0 <= back < numsides \
-                    else self._null_sector()
-            else:
-                li.backsector = None
+            self.seg_sides(li, ldef, side, sides)
             segs.append(li)
         self.segs = segs
         self.numsegs = len(segs)
+
+    def seg_sides(self, li, ldef, side, sides):
+        """The seg's sidedef and the sectors in front of it and behind it (P_LoadSegs)."""
+        sidenum = ldef.sidenum[side]
+        li.sidedef = sides[sidenum]
+        li.frontsector = sides[sidenum].sector
+        if ldef.flags & info.ML_TWOSIDED:
+            back = ldef.sidenum[side ^ 1]
+            # a "glass hack" one-sided window: vanilla read a sector at address 0
+            li.backsector = sides[back].sector if 0 <= back < len(sides) \
+                else self._null_sector()
+        else:
+            li.backsector = None
 
     def _null_sector(self):
         """GetSectorAtNullAddress: one sector a level, its heights what DOS held there."""
