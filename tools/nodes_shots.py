@@ -4,6 +4,7 @@ MAP01-MAP10, 10 viewpoints each, the 3-D view with the shipped nodes against the
 ``wallbsp nodes``' (default options), counted pixel by pixel.
 
     python tools/nodes_shots.py [--maps 1-10] [--views 10] [--out docs] [--keep DIR]
+                                [--tries N] [--only MAP:VIEW,...] [--control]
 
 Viewpoints are chosen from the shipped map alone: a 32-unit grid over the map, each point
 put in its sector by walking the shipped NODES (R_PointInSubsector), the 10 largest sectors
@@ -272,6 +273,42 @@ def diff_picture(shipped: np.ndarray, rebuilt: np.ndarray, out: Path, title: str
     pygame.image.save(sheet, str(out))
 
 
+def shoot_pair(sources, name, number, k, start, work, displays, pool, tries):
+    """The view's pictures, shipped and rebuilt: of ``tries`` launches each, the pair that
+    differs least (an animated wall or flat, or a torch, caught at the same frame), kept as
+    ``shot.png`` in each side's folder."""
+    shots: dict = {side: [] for side in sources}
+    wads = {side: moved_start(source, name, start, work / name / f"{k}" / side)
+            for side, source in sources.items()}
+    for attempt in range(tries):
+        jobs = []
+        for (side, wad), (_, display) in zip(wads.items(), displays):
+            out = wad.parent / ("shot.png" if tries == 1 else f"shot{attempt}.png")
+            shots[side].append(out)
+            jobs.append(pool.submit(shoot, wad, number, display, out))
+        for job in jobs:
+            job.result()
+    for wad in wads.values():                   # 28 MB a copy, 200 copies
+        wad.unlink(missing_ok=True)
+    pictures = {side: [view_pixels(path) for path in paths] for side, paths in shots.items()}
+    best = min(((i, j) for i in range(tries) for j in range(tries)),
+               key=lambda ij: int((pictures["shipped"][ij[0]] != pictures["rebuilt"][ij[1]])
+                                  .any(2).sum()))
+    for side, pick in zip(shots, best):
+        if tries > 1:
+            shutil.copyfile(shots[side][pick], shots[side][pick].parent / "shot.png")
+    return pictures["shipped"][best[0]], pictures["rebuilt"][best[1]]
+
+
+def only_views(text: str) -> set:
+    """``"3:5,10:5"`` → {(3, 5), (10, 5)}: map numbers and view numbers."""
+    out = set()
+    for item in filter(None, text.split(",")):
+        number, _, view = item.partition(":")
+        out.add((int(number), int(view)))
+    return out
+
+
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--maps", default="1-10", help="first-last map numbers")
@@ -280,7 +317,16 @@ def main(argv=None) -> int:
     parser.add_argument("--keep", help="keep the shots and WADs in this folder")
     parser.add_argument("--control", action="store_true", help="the shipped WAD on both "
                         "sides: what the moment of the picture alone changes")
+    parser.add_argument("--tries", type=int, default=1, help="launches a side per view; "
+                        "the pair that differs least is compared (the moment's control)")
+    parser.add_argument("--only", default="", help="these views alone: MAP:VIEW,... "
+                        "(e.g. 3:5,10:5)")
     args = parser.parse_args(argv)
+    try:
+        only = only_views(args.only)
+    except ValueError:
+        print(f"nodes_shots: --only {args.only!r}: expected MAP:VIEW,...", file=sys.stderr)
+        return 2
     for tool in (DOOM, "xdotool", "import", "Xvfb"):
         if shutil.which(tool) is None:
             print(f"nodes_shots: {tool} is not installed", file=sys.stderr)
@@ -305,20 +351,12 @@ def main(argv=None) -> int:
                 name = f"MAP{number:02d}"
                 views = []
                 for k, start in enumerate(viewpoints(sources["shipped"], name, args.views)):
-                    shots = {}
-                    jobs = []
-                    for (side, source), (_, display) in zip(sources.items(), displays):
-                        folder = work / name / f"{k}" / side
-                        wad = moved_start(source, name, start, folder)
-                        shots[side] = folder / "shot.png"
-                        jobs.append(pool.submit(shoot, wad, number, display, shots[side]))
-                    for job in jobs:
-                        job.result()
-                    for shot in shots.values():         # 28 MB a copy, 200 copies
-                        (shot.parent / "freedoom2.wad").unlink(missing_ok=True)
-                    a, b = view_pixels(shots["shipped"]), view_pixels(shots["rebuilt"])
+                    if only and (number, k) not in only:
+                        continue
+                    a, b = shoot_pair(sources, name, number, k, start, work, displays, pool,
+                                      args.tries)
                     differing = int((a != b).any(2).sum())
-                    views.append({"x": start[0], "y": start[1], "angle": start[2],
+                    views.append({"view": k, "x": start[0], "y": start[1], "angle": start[2],
                                   "sector": start[3], "differing": differing})
                     if worst is None or differing > worst[0]:
                         worst = (differing, a, b, f"{name} ({start[0]}, {start[1]})")
