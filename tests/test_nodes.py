@@ -16,7 +16,7 @@ from hypothesis import strategies as st
 
 from wallbsp.app.cli import main
 from wallbsp.assets.wad import open_wad, wad_bytes
-from wallbsp.assets.wadwrite import Lump, WadImage, read_wad_image
+from wallbsp.assets.wadwrite import Lump, read_wad_image
 from wallbsp.level.io import load_level
 from wallbsp.nodes.blockmap import blockmap_words
 from wallbsp.nodes.builder import build_nodes
