@@ -79,6 +79,28 @@ def test_a_game_saved_from_the_menu_loads_back_exactly(walk, tmp_path):
     assert (walk.player.x, walk.player.y) == (again.player.x, again.player.y)
 
 
+def test_loadgame_starts_in_a_saved_game_and_refuses_an_empty_slot(walk, tmp_path, capsys):
+    """``walk --loadgame N`` (DOOM's -loadgame) loads slot N through GameFlow.load; an empty
+    or unreadable slot, or a command that is not a game, is one line and exit 2 before any
+    window opens."""
+    from wallbsp.app.cli import main
+    run(walk, 20, forward=1)
+    keys(walk, "F2", "DOWN", "DOWN", "RETURN", "c", "RETURN")       # slot 2 from the top
+    saved = (walk.player.x, walk.player.y, walk.world.play.leveltime)
+    run(walk, 30, turn=4, forward=1)
+    walk.overlay.load(walk, 2)
+    assert (walk.player.x, walk.player.y, walk.world.play.leveltime) == saved
+    folder = str(tmp_path / "saves")
+    slot_path(folder, 4).write_bytes(b"not a save")
+    for argv, says in ((["walk", "--loadgame", "3", "--saves", folder], "no save"),
+                       (["walk", "--loadgame", "4", "--saves", folder], "not a save"),
+                       (["walk", str(LEVEL), "--loadgame", "2", "--saves", folder], "bundled game"),
+                       (["walk", "--loadgame", "6"], "loadgame")):
+        assert main(argv) == 2
+        err = capsys.readouterr().err.strip().splitlines()
+        assert len(err) == 1 and says in err[0], (argv, err)
+
+
 def test_the_automaps_seen_walls_are_saved_with_the_game(walk, tmp_path):
     """DOOM keeps a seen wall as its line's ML_MAPPED flag, which a save keeps."""
     from wallbsp.app.gamescreen import compose

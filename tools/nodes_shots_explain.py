@@ -14,14 +14,25 @@ of one linedef's side, a sector's floor or ceiling, the sky) and marks the pixel
 nearer than the column's closing wall. Each differing pixel is then given the first class it
 fits:
 
-- ``sprite``: inside a thing's box (DOOM clips a sprite by the segs drawn before it);
-- ``animated``: an animated wall texture or flat (DOOM's animdefs), caught at another frame;
-- ``edge``: within two pixels of a boundary between two surfaces (a rounded vertex moves it);
-- ``split_wall``: a wall (or masked middle) of a linedef side the two WADs split into other
-  segs (each seg starts the texture at its own rounded vertex and offset);
-- ``flat``: a floor or ceiling (DOOM steps a span's texture position from its first column,
-  and where spans start depends on the visplanes the subsectors make);
-- ``unexplained``: a wall part whose segs are the same in both WADs.
+- ``sprite``: inside a thing's picture (R_DrawSprite clips a sprite by the segs drawn in
+  front of it; a torch's flame animates);
+- ``edge``: within two pixels of a boundary between two surfaces (a rounded vertex moves it,
+  and this cast is itself a pixel off here and there);
+- ``angle``: a wall (or masked middle) of a linedef side whose segs differ in their angle
+  alone: ours is the nearest 16-bit angle, a few of the shipped maps' segs floor it;
+- ``split_exact``: a wall of a linedef side the WADs cut into other segs, every cut at an
+  exact point of the line with its exact offset: nothing rounded, yet DOOM draws each seg
+  from its own first vertex (R_StoreWallRange's distance, offset and scale come from the
+  seg's ``v1`` through fixed-point tables), so texels land a column or row apart;
+- ``split_rounded``: the same where some seg end was rounded to DOOM's integer grid;
+- ``split_neighbour``: a wall whose segs are the same in both WADs, beside a split one within
+  two columns (where the neighbour's range ends, this wall's drawn range begins);
+- ``animated``: an animated wall texture or flat (DOOM's animdefs) caught at another frame;
+- ``lit``: a surface of a sector whose light changes by itself (blink, strobe, glow,
+  flicker);
+- ``flat``: a floor or ceiling (R_MapPlane steps a span's texture position from its first
+  column, and where spans start depends on the visplanes the subsectors make);
+- ``unexplained``: none of these.
 
 Also counted for every differing pixel: whether the rebuilt pixel's colour is one the shipped
 picture has within one pixel of it (``shifted``), what a texel moved by one looks like. Prints
@@ -47,10 +58,10 @@ from wallbsp.assets.animations import ANIMDEFS               # noqa: E402
 from wallbsp.doom import info                                 # noqa: E402
 
 WIDTH, ROWS, CENTERY, PROJECTION, EYE = 320, shots.VIEW_ROWS, 84.0, 160.0, 41
-CLASSES = ("sprite", "animated", "lit", "edge", "split_exact", "split_rounded",
-           "split_neighbour", "flat", "unexplained")
+CLASSES = ("sprite", "edge", "angle", "split_exact", "split_rounded", "split_neighbour",
+           "animated", "lit", "flat", "unexplained")
 COLOURS = {"sprite": (255, 0, 255), "animated": (0, 160, 255), "lit": (255, 255, 255),
-           "edge": (255, 255, 0), "split_exact": (255, 128, 0), "split_rounded": (255, 200, 120),
+           "edge": (255, 255, 0), "angle": (0, 255, 255), "split_exact": (255, 128, 0), "split_rounded": (255, 200, 120),
            "split_neighbour": (160, 90, 255), "flat": (0, 220, 0), "unexplained": (255, 0, 0)}
 LIGHT_SPECIALS = {1, 2, 3, 4, 8, 12, 13, 17}    # blink, strobe, glow, flicker: P_SpawnSpecials
 BESIDE = 2                      # columns: how near a neighbour's end starts this wall's range
@@ -346,7 +357,7 @@ def classify(differ, labels, sprites, animated, split, lit) -> np.ndarray:
     neighbour = wall & np.isin(labels.what, beside_split(labels, np.concatenate(split)))
     flat = (labels.kind == 2) | (labels.kind == 3) | (labels.kind == 4)
     out = np.full(differ.shape, -1, np.int8)
-    order = (sprites, moving, np.isin(labels.sector, lit), edge, on[0], on[1], neighbour, flat,
+    order = (sprites, edge, *on, neighbour, moving, np.isin(labels.sector, lit), flat,
              np.ones_like(differ))
     for number in reversed(range(len(order))):
         out[differ & order[number]] = number
@@ -383,13 +394,17 @@ def shifted(shipped: np.ndarray, rebuilt: np.ndarray) -> np.ndarray:
 
 
 def split_keys(shipped: Map, rebuilt: Map):
-    """The linedef*2+side keys whose segs differ between the two WADs: those with nothing
-    rounded in either WAD (split at exact points), and the others."""
+    """The linedef*2+side keys whose segs differ between the two WADs: those that differ in
+    their angle alone (the same ends and offsets), those with nothing rounded in either WAD
+    (split at exact points), and the others."""
     ours, theirs = shipped.seg_runs(), rebuilt.seg_runs()
     exact = shipped.exact_sides() & rebuilt.exact_sides()
     differ = [key for key in set(ours) | set(theirs) if ours.get(key) != theirs.get(key)]
+    ends = lambda runs: [run[:5] for run in runs or ()]                     # noqa: E731
+    angle = {key for key in differ if ends(ours.get(key)) == ends(theirs.get(key))}
     pick = lambda keys: np.array(sorted(2 * line + side for line, side in keys), np.int64)  # noqa: E731
-    return (pick(k for k in differ if k in exact), pick(k for k in differ if k not in exact))
+    return (pick(angle), pick(k for k in differ if k in exact and k not in angle),
+            pick(k for k in differ if k not in exact and k not in angle))
 
 
 def explain(folder: Path, minimum: int):

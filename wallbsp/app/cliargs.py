@@ -158,6 +158,9 @@ def build_parser(commands) -> argparse.ArgumentParser:
                    "default ~/.config/wallbsp/keys.ini when it exists)")
     p.add_argument("--saves", metavar="DIR", help="the folder of the menu's six save slots "
                    "(default ~/.local/share/wallbsp/saves)")
+    p.add_argument("--loadgame", type=_bounded(0, 5, _integer, "a whole number"), metavar="N",
+                   help="start in the game saved in slot N, 0-5 from the top of the Load "
+                        "Game menu (DOOM's -loadgame; the bundled game or a WAD's)")
     _finish(p, commands["walk"])
 
     p = sub.add_parser("play", help="replay a demo headless and print the final state")

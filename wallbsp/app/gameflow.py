@@ -230,8 +230,14 @@ class GameFlow:
         self._say(walk, f"game saved ({path.name})")
 
     def _load(self, walk, event) -> None:
+        self.load(walk, event.slot)
+
+    def load(self, walk, slot: int) -> None:
+        """The game saved in ``slot`` (0-5), played from there (the menu's Load Game, and
+        ``walk --loadgame``: DOOM's ``-loadgame``); a save that cannot be read is one line
+        on the terminal and the game in play goes on."""
         try:
-            world = load_world(self.saves, event.slot, walk.world, self.tree_of)
+            world = load_world(self.saves, slot, walk.world, self.tree_of)
         except SaveError as e:
             print(f"wallbsp: {e}", file=sys.stderr)
             self._say(walk, "not loaded: the save cannot be read (see the terminal)")

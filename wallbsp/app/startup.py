@@ -301,6 +301,8 @@ def _attract_and_play(args, keys, source, made) -> None:
         if tree_of is not None:
             walk.overlay.tree_of = tree_of
         Attract(made["sequence"], source.art, make_world, app.start_level).begin(walk)
+        if args.loadgame is not None:
+            walk.overlay.load(walk, args.loadgame)         # DOOM's -loadgame: past the title
 
     effects = not (args.nosound or args.nosfx)
     app.run_walkthrough(first_tree, size=args.size, max_fps=args.max_fps, skill=args.skill,

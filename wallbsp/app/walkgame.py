@@ -7,6 +7,7 @@
   on (``game.lmprecord``; headless with ``--frames N`` too); any other ``--record``: the
   walkthrough's JSON demo of the first level.
 - ``--playdemo DEMO`` with a WAD: a vanilla demo played in the window with the HUD.
+- ``--loadgame N``: the bundled game or a WAD's, started in the game saved in slot N.
 - ``--square-pixels``: no 4:3 stretch; ``--widescreen`` the view widened to the window; ``--nosound`` no audio device at all (Chocolate
   Doom's ``-nosound``), ``--nosfx`` / ``--nomusic`` one of the two.
 """
@@ -43,6 +44,8 @@ def walk_command(args, load_any, next_level_of) -> None:
     vanilla = is_lmp(args.record)
     if args.playdemo and not wad_game and ":" not in args.level:
         raise UsageError("walk: --playdemo needs a WAD (wallbsp walk WAD --playdemo DEMO)")
+    if args.loadgame is not None:
+        _check_loadgame(args, wad_game or bundled)
     try:
         keys = read_bindings(args.keys)
         if args.frames is None:
@@ -100,6 +103,23 @@ def walk_command(args, load_any, next_level_of) -> None:
     _save_recording(args, demo, summary_holder.get("walk"))
     if args.frames is not None:
         print(summary)
+
+
+def _check_loadgame(args, a_game: bool) -> None:
+    """``--loadgame N`` starts the bundled game or a WAD's (where the menus load saves), in
+    a window, from a slot that holds a save: else one line before any window opens."""
+    if not a_game or args.frames is not None or args.record or args.playdemo:
+        raise UsageError("walk: --loadgame starts the bundled game or a WAD's game in a "
+                         "window (wallbsp walk [WAD] --loadgame N)")
+    from wallbsp.app.saves import DAMAGED, read_slots, saves_folder, slot_path
+    folder = saves_folder(args.saves)
+    found = read_slots(folder)[args.loadgame]
+    if found is None:
+        raise UsageError(f"walk: --loadgame {args.loadgame}: "
+                         f"{slot_path(folder, args.loadgame)}: no save in that slot")
+    if found == DAMAGED:
+        raise UsageError(f"walk: --loadgame {args.loadgame}: "
+                         f"{slot_path(folder, args.loadgame)}: not a save wallbsp can read")
 
 
 EPISODE = ("game.json", "game2.json", "game3.json")      # the bundled episode's levels, in order
