@@ -155,6 +155,23 @@ def test_automap_readout_and_help_draw_without_error(walk):
     assert any("nodes visited" in line for line in hud.readout_lines(walk))
 
 
+def test_automap_lines_are_one_of_dooms_pixels_wide(walk):
+    """DOOM draws the map a pixel wide on its 200-row screen: in a 720-row window a red
+    wall is 4 rows thick, as Chocolate Doom shows it, not one."""
+    shown = walk.display
+    walk.display, walk.map_cheat = pygame.Surface((960, 720)), 1
+    try:
+        hud.draw_automap(walk)
+        red = np.all(pygame.surfarray.array3d(walk.display) == (255, 0, 0), axis=2)
+    finally:
+        walk.display = shown
+    runs = []
+    for column in red[::7]:
+        edges = np.flatnonzero(np.diff(np.concatenate([[0], column.astype(int), [0]])))
+        runs += (edges[1::2] - edges[::2]).tolist()
+    assert runs and np.median(runs) >= 4, runs[:20]
+
+
 def test_the_help_line_goes_away_by_itself_and_h_brings_it_back(walk):
     """It is drawn over the weapon, so an interactive walk shows it for HELP_SECONDS only."""
     walk.show_help, walk.help_until = True, 0.0           # its time is up

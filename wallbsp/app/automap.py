@@ -109,10 +109,10 @@ class SeenLines:
         self.count = count
 
 
-def automap_layer(tree, kinds, view, size, like, overlay=False, partitions=None):
-    """The automap's lines (``line_kinds``) on a ``size`` surface of ``like``'s format;
-    ``partitions`` (from ``partition_pieces``) under them if given.  In ``overlay`` mode
-    black is transparent, so the view shows through."""
+def automap_layer(tree, kinds, view, size, like, overlay=False, partitions=None, width=1):
+    """The automap's lines (``line_kinds``) on a ``size`` surface of ``like``'s format,
+    ``width`` pixels wide; ``partitions`` (from ``partition_pieces``) under them if given.
+    In ``overlay`` mode black is transparent, so the view shows through."""
     import pygame
     layer = pygame.Surface(size, 0, like)
     layer.fill(COLOURS["background"])
@@ -124,7 +124,7 @@ def automap_layer(tree, kinds, view, size, like, overlay=False, partitions=None)
     for wall, kind in enumerate(kinds.tolist()):
         if kind >= 0:
             p, q = tree.wall_ends(wall)
-            pygame.draw.line(layer, colours[kind], view(*p), view(*q), 1)
+            pygame.draw.line(layer, colours[kind], view(*p), view(*q), width)
     return layer
 
 
@@ -141,9 +141,10 @@ ARROW = (((-7 / 8, 0), (1, 0)), ((1, 0), (0.5, 0.25)), ((1, 0), (0.5, -0.25)),
          ((-5 / 8, 0), (-7 / 8, 0.25)), ((-5 / 8, 0), (-7 / 8, -0.25)))   # player_arrow
 
 
-def draw_things(surface, view, things) -> int:
+def draw_things(surface, view, things, width=1) -> int:
     """Every alive, drawn thing of ``things`` (``wallbsp.scene.things.Things``) as DOOM's
-    green thin triangle facing its angle; returns how many were drawn."""
+    green thin triangle facing its angle, lines ``width`` pixels wide; returns how many
+    were drawn."""
     import pygame
     shown = np.flatnonzero(things.alive & things.drawn)
     size = max(MIN_PIXELS, THING_SIZE * view.scale)
@@ -151,15 +152,16 @@ def draw_things(surface, view, things) -> int:
     py = view.oy + (view.y1 - things.y[shown]) * view.scale
     for x, y, angle in zip(px.tolist(), py.tolist(), things.angle[shown].tolist()):
         pygame.draw.polygon(surface, COLOURS["thing"], _shape(THIN_TRIANGLE, x, y, angle, size),
-                            1)
+                            width)
     return len(shown)
 
 
-def draw_arrow(surface, view, x, y, angle):
-    """The player as DOOM's white arrow at map point (x, y) facing ``angle``."""
+def draw_arrow(surface, view, x, y, angle, width=1):
+    """The player as DOOM's white arrow at map point (x, y) facing ``angle``, lines
+    ``width`` pixels wide."""
     import pygame
     size = max(ARROW_PIXELS, ARROW_SIZE * view.scale)
     px, py = view(x, y)
     for a, b in ARROW:
         p, q = _shape((a, b), px, py, angle, size)
-        pygame.draw.line(surface, COLOURS["player"], p, q, 1)
+        pygame.draw.line(surface, COLOURS["player"], p, q, width)

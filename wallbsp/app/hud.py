@@ -122,13 +122,20 @@ def draw_automap(walk):
     walk.display.blit(walk.map_cache[1], (0, 0))
     walk.display.set_clip((0, 0, *size))           # never over the status bar
     try:
+        width = map_line_width(walk)
         if walk.map_cheat >= 2:                     # IDDT twice: the things too
-            draw_things(walk.display, view, walk.world.things)
+            draw_things(walk.display, view, walk.world.things, width)
         player = walk.player
-        draw_arrow(walk.display, view, player.x, player.y, player.angle)
+        draw_arrow(walk.display, view, player.x, player.y, player.angle, width)
         draw_map_title(walk)
     finally:
         walk.display.set_clip(None)
+
+
+def map_line_width(walk) -> int:
+    """DOOM draws the automap's lines a pixel wide on its 200-row screen: as many of the
+    window's rows as one of those."""
+    return max(1, round(walk.display.get_size()[1] / SCREENHEIGHT))
 
 
 def draw_map_title(walk):
@@ -206,4 +213,5 @@ def _map_layer(walk, size, view):
     kinds = line_kinds(walk.tree.level, state.floor, state.ceiling, flags,
                        seen_lines(walk).walls, walk.map_cheat, has_allmap(walk))
     return automap_layer(walk.tree, kinds, view, size, walk.display, walk.map_overlay,
-                         walk.partitions if walk.show_partitions else None)
+                         walk.partitions if walk.show_partitions else None,
+                         map_line_width(walk))
