@@ -370,9 +370,10 @@ def main(argv=None) -> int:
         for xvfb, _ in displays:
             xvfb.terminate()
             xvfb.wait()
-        if worst is not None:
-            diff_picture(worst[1], worst[2], Path(args.out) / "nodes_chocolate.png", worst[3])
         print(json.dumps(results, indent=1))
+        if worst is not None:
+            Path(args.out).mkdir(parents=True, exist_ok=True)
+            diff_picture(worst[1], worst[2], Path(args.out) / "nodes_chocolate.png", worst[3])
         if not args.keep:
             shutil.rmtree(work, ignore_errors=True)
     return 0

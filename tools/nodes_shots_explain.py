@@ -168,15 +168,17 @@ class Labels:
         self.part = np.full((ROWS, WIDTH), "", object)
         self.masked = np.full((ROWS, WIDTH), -1, np.int64)
         self.sector = np.full((ROWS, WIDTH), -1, np.int64)
+        self.distance = np.full((ROWS, WIDTH), np.inf)       # a wall pixel's distance
         self.depth = np.full(WIDTH, np.inf)
 
-    def paint(self, x, top, bottom, kind, what, part, sector):
+    def paint(self, x, top, bottom, kind, what, part, sector, distance=np.inf):
         rows = pixel_rows(top, bottom)
         free = self.kind[rows, x] == 0
         self.kind[rows, x][free] = kind
         self.what[rows, x][free] = what
         self.part[rows, x][free] = part
         self.sector[rows, x][free] = sector
+        self.distance[rows, x][free] = distance
 
 
 def pixel_rows(top: float, bottom: float) -> slice:
@@ -226,17 +228,17 @@ def column(level, labels, x, eye, viewer, order, distance) -> None:
         labels.paint(x, max(top, row(nfloor)), bottom, 2, near, nfpic, near)
         if far_side == 0xFFFF:
             labels.paint(x, max(top, row(nceil)), min(bottom, row(nfloor)), 1, key, names[2],
-                         near)
+                         near, distance[line])
             labels.depth[x] = distance[line]
             return
         ffloor, fceil, _ffpic, fcpic = level.sector(level.side(far_side)[1])
         if fceil < nceil:
             kind = 4 if (fcpic == ncpic == "F_SKY1") else 1
             labels.paint(x, max(top, row(nceil)), min(bottom, row(fceil)), kind, key, names[0],
-                         near)
+                         near, distance[line])
         if ffloor > nfloor:
             labels.paint(x, max(top, row(ffloor)), min(bottom, row(nfloor)), 1, key, names[1],
-                         near)
+                         near, distance[line])
         top = max(top, row(nceil), row(fceil))
         bottom = min(bottom, row(nfloor), row(ffloor))
         if names[2] not in ("-", ""):
@@ -248,11 +250,11 @@ def column(level, labels, x, eye, viewer, order, distance) -> None:
 
 
 def sprite_mask(level: Map, view, labels: Labels, patches: dict) -> np.ndarray:
-    """The pictures of the things DOOM spawns here (skill 3, no monsters, single player),
-    each the box of its spawn states' patches placed as R_ProjectSprite places them (the
-    patch's offsets, one pixel round), where nearer than the column's closing wall. A sprite
-    differs where other segs clip it (R_DrawSprite clips it by the drawsegs in front) and
-    where it animates (a torch's flame caught at another frame)."""
+    """The pixels of the things DOOM spawns here (skill 3, no monsters, single player): the
+    opaque pixels of each of its spawn states' patches, placed and scaled as R_ProjectSprite
+    places them (the patch's offsets) and grown by a pixel, where nearer than the wall this
+    cast put at that pixel. A sprite differs where other segs clip it (R_DrawSprite clips it
+    by the drawsegs in front) and where it animates (a torch's flame at another frame)."""
     mask = np.zeros((ROWS, WIDTH), bool)
     theta = math.radians(view["angle"])
     eye = level.sector(view["sector"])[0] + EYE
@@ -273,41 +275,72 @@ def sprite_mask(level: Map, view, labels: Labels, patches: dict) -> np.ndarray:
         z = floor_under(level, tx, ty)
         if m.flags & info.MF_SPAWNCEILING:
             z = ceiling_over(level, tx, ty) - (m.height >> 16)
-        for width, height, left, top in spawn_patches(m.spawnstate, patches):
+        for (_width, _height, left, top), opaque in spawn_patches(m.spawnstate, patches):
             x1 = WIDTH / 2 + (float(rel @ across) - left) * scale
-            cols = np.arange(max(0, int(x1) - 1), min(WIDTH, int(x1 + width * scale) + 2))
-            cols = cols[labels.depth[cols] > depth - 16]
             y1 = CENTERY - (z + top - eye) * scale
-            rows = slice(max(0, int(y1) - 1), max(0, min(ROWS, int(y1 + height * scale) + 2)))
-            mask[rows, cols] = True
+            px = np.floor((np.arange(WIDTH) + 0.5 - x1) / scale).astype(np.int64)
+            py = np.floor((np.arange(ROWS) + 0.5 - y1) / scale).astype(np.int64)
+            inside = ((py >= 0) & (py < opaque.shape[0]))[:, None] & \
+                ((px >= 0) & (px < opaque.shape[1]))[None, :]
+            drawn = np.zeros((ROWS, WIDTH), bool)
+            drawn[inside] = opaque[np.clip(py, 0, opaque.shape[0] - 1)[:, None].repeat(WIDTH, 1)
+                                   [inside], np.clip(px, 0, opaque.shape[1] - 1)[None, :]
+                                   .repeat(ROWS, 0)[inside]]
+            mask |= grow(drawn) & (labels.distance > depth - 16)
     return mask
 
 
+def grow(mask: np.ndarray) -> np.ndarray:
+    """``mask`` and the pixels beside it."""
+    out = mask.copy()
+    out[1:] |= mask[:-1]
+    out[:-1] |= mask[1:]
+    out[:, 1:] |= out[:, :-1].copy()
+    out[:, :-1] |= out[:, 1:].copy()
+    return out
+
+
 def sprite_patches(data: bytes) -> dict:
-    """Sprite lump name → (width, height, left offset, top offset) of its patch."""
+    """Sprite lump name → ((width, height, left offset, top offset), opaque pixels) of its
+    patch."""
     entries = shots.directory(data)
     names = [e[2].rstrip(b"\0").decode("latin-1").upper() for e in entries]
     found = {}
     for (offset, size, _raw), name in zip(entries[names.index("S_START"):names.index("S_END")],
                                           names[names.index("S_START"):names.index("S_END")]):
         if size >= 8:
-            found[name] = struct.unpack_from("<hhhh", data, offset)
+            header = struct.unpack_from("<hhhh", data, offset)
+            found[name] = (header, patch_opaque(data, offset, header[0], header[1]))
     return found
 
 
+def patch_opaque(data: bytes, offset: int, width: int, height: int) -> np.ndarray:
+    """Which pixels of a DOOM patch its posts cover."""
+    opaque = np.zeros((max(height, 1), max(width, 1)), bool)
+    for column in range(width):
+        at = offset + struct.unpack_from("<i", data, offset + 8 + 4 * column)[0]
+        while data[at] != 0xFF:
+            top, length = data[at], data[at + 1]
+            opaque[top:top + length, column] = True
+            at += length + 4
+    return opaque
+
+
 def spawn_patches(state: int, patches: dict) -> list:
-    """The patches of the states a thing cycles through from ``state`` (rotation 0, or the
-    first rotation of each frame)."""
+    """The patches of the states a thing cycles through from ``state``: every rotation of
+    each frame (a lump's second frame mirrored, as DOOM draws it)."""
     seen, out = set(), []
     while state and state not in seen and len(seen) < 16:
         seen.add(state)
         record = info.STATES[state]
         sprite = info.SPRNAMES[record.sprite]
         letter = chr(ord("A") + (record.frame & 0x7FFF))
-        for name, patch in patches.items():
-            if name.startswith(sprite) and letter in (name[4:5], name[6:7]):
-                out.append(patch)
-                break
+        for name, (header, opaque) in patches.items():
+            if name.startswith(sprite) and name[4:5] == letter:
+                out.append((header, opaque))
+            elif name.startswith(sprite) and name[6:7] == letter:
+                width, height, left, top = header
+                out.append(((width, height, width - left, top), opaque[:, ::-1]))
         state = record.nextstate
     return out
 
@@ -440,7 +473,7 @@ def explain(folder: Path, minimum: int):
 def class_sheet(pictures, out: Path) -> None:
     import pygame
     pygame.font.init()
-    font = pygame.font.Font(None, 20)
+    font, small = pygame.font.Font(None, 20), pygame.font.Font(None, 17)
     columns, scale, top = 3, 1, 18
     cell = (WIDTH * scale + 6, ROWS * scale + top + 6)
     rows = (len(pictures) + columns - 1) // columns
@@ -455,9 +488,11 @@ def class_sheet(pictures, out: Path) -> None:
         sheet.blit(surf, (x, y + top))
         sheet.blit(font.render(title, True, (230, 230, 230)), (x + 2, y + 2))
     y = rows * cell[1] + 8
+    step = sheet.get_width() // len(CLASSES)
     for n, name in enumerate(CLASSES):
-        sheet.fill(COLOURS[name], (8 + 138 * n, y, 14, 14))
-        sheet.blit(font.render(name, True, (230, 230, 230)), (26 + 138 * n, y))
+        sheet.fill(COLOURS[name], (4 + step * n, y, 10, 14))
+        sheet.blit(small.render(name.replace("split_", "split "), True, (230, 230, 230)),
+                   (17 + step * n, y))
     pygame.image.save(sheet, str(out))
 
 
