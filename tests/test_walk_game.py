@@ -411,8 +411,7 @@ def test_with_the_automap_up_minus_and_equals_zoom_it_around_the_player(opened):
     centre = shown[width // 2 - 4:width // 2 + 5, height // 2 - 4:height // 2 + 5]
     assert (centre == COLOURS["player"]).all(axis=-1).any()        # the arrow is centred
     whole = hud.map_view(walk, (width, height))
-    assert whole.scale == pytest.approx(2.25 / 0.7 * hud.MapView.centred(
-        hud.level_bounds(walk.tree), (width, height)).scale)
+    assert whole.scale == pytest.approx(2.25 / 0.7 * hud.whole_map(walk, (width, height)).scale)
     for _ in range(3):
         key(pygame.K_MINUS)
     frames(walk, 1)
@@ -425,8 +424,8 @@ def test_the_automaps_things_stay_off_the_status_bar(opened):
     frames(walk, 1)
     size = hud.map_area(walk)
     above = size[1]
-    whole = hud.MapView.centred(hud.level_bounds(walk.tree), size)
-    walk.map_zoom = (above / 2 + 5) / (36 * whole.scale)     # the medikit 5 px into the bar
+    whole = hud.whole_map(walk, size)
+    walk.map_zoom = (above / 2 + 5) / (36 * whole.scale * whole.stretch)   # 5 px into the bar
     frames(walk, 1)
     assert round(hud.map_view(walk, size)(200, 64)[1]) == above + 5
     shown = pygame.surfarray.array3d(walk.display)

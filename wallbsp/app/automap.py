@@ -149,7 +149,7 @@ def draw_things(surface, view, things, width=1) -> int:
     shown = np.flatnonzero(things.alive & things.drawn)
     size = max(MIN_PIXELS, THING_SIZE * view.scale)
     px = view.ox + (things.x[shown] - view.x0) * view.scale
-    py = view.oy + (view.y1 - things.y[shown]) * view.scale
+    py = view.oy + (view.y1 - things.y[shown]) * view.scale * view.stretch
     for x, y, angle in zip(px.tolist(), py.tolist(), things.angle[shown].tolist()):
         pygame.draw.polygon(surface, COLOURS["thing"], _shape(THIN_TRIANGLE, x, y, angle, size),
                             width)

@@ -15,7 +15,8 @@ from wallbsp.app.automap import (MapView, SeenLines, automap_layer, draw_arrow,
 from wallbsp.screen.hud import view_size
 
 __all__ = ["HELP", "HELP_SECONDS", "MESSAGE_SECONDS", "draw_overlays", "readout_lines", "inventory_lines",
-           "texture_mode", "draw_automap", "say", "map_area", "map_view", "seen_lines"]
+           "texture_mode", "draw_automap", "say", "map_area", "map_view", "whole_map", "seen_lines",
+           "map_line_width"]
 
 HELP = ("WASD/arrows move   Left/Right or mouse (M frees it) turn   Shift run   Alt strafe   "
         "E/Space use   Ctrl/click fire   1-7 weapons   Esc menu",
@@ -116,7 +117,8 @@ def draw_automap(walk):
     state = walk.world.state
     seen = seen_lines(walk)
     key = (size, walk.map_overlay, walk.show_partitions, id(state), state.version,
-           view.scale, view.ox, view.oy, seen.count, walk.map_cheat, has_allmap(walk))
+           view.scale, view.stretch, view.ox, view.oy, seen.count, walk.map_cheat,
+           has_allmap(walk))
     if walk.map_cache[0] != key:
         walk.map_cache = (key, _map_layer(walk, size, view))
     walk.display.blit(walk.map_cache[1], (0, 0))
@@ -190,17 +192,25 @@ def seen_lines(walk) -> SeenLines:
     return walk.seen[1]
 
 
+def whole_map(walk, size) -> MapView:
+    """The whole level fitted into ``size`` as DOOM fits it (no margin), stretched down as
+    the picture is: DOOM draws its map on the 320 x 200 screen a player sees at 4:3."""
+    w, h = walk.size
+    stretch = w / h / walk.aspect if walk.aspect else 1.0
+    return MapView.centred(level_bounds(walk.tree), size, margin=0, stretch=stretch)
+
+
 def map_view(walk, size) -> MapView:
-    """The whole level fitted into ``size`` (``map_zoom`` 1), or ``map_zoom`` times closer
-    with the player at the centre (DOOM's follow mode)."""
-    whole = MapView.centred(level_bounds(walk.tree), size)
+    """``whole_map`` (``map_zoom`` 1), or ``map_zoom`` times closer with the player at the
+    centre (DOOM's follow mode)."""
+    whole = whole_map(walk, size)
     if walk.map_zoom <= 1.0:
         return whole
-    scale = whole.scale * walk.map_zoom
+    scale, stretch = whole.scale * walk.map_zoom, whole.stretch
     player = walk.player
     return MapView((whole.x0, 0.0, 0.0, whole.y1), scale,
                    (size[0] / 2 - (player.x - whole.x0) * scale,
-                    size[1] / 2 - (whole.y1 - player.y) * scale))
+                    size[1] / 2 - (whole.y1 - player.y) * scale * stretch), stretch)
 
 
 def _map_layer(walk, size, view):

@@ -31,22 +31,24 @@ LEGEND_HEIGHT = 50       # pixels above the map for the legend
 
 
 class MapView:
-    """Map units to pixels: ``view(x, y) -> (px, py)``; ``scale`` pixels per map unit.
+    """Map units to pixels: ``view(x, y) -> (px, py)``; ``scale`` pixels per map unit across,
+    ``stretch`` times as many down (1.2: DOOM's 320 x 200 screen seen at 4:3).
     ``bounds`` ``(x0, y0, x1, y1)``'s top-left corner ``(x0, y1)`` lands on ``origin``."""
 
-    def __init__(self, bounds, scale, origin):
+    def __init__(self, bounds, scale, origin, stretch=1.0):
         self.x0, self.y1 = bounds[0], bounds[3]
-        self.scale = scale
+        self.scale, self.stretch = scale, stretch
         self.ox, self.oy = origin
 
     @classmethod
-    def centred(cls, bounds, size, margin=24):
+    def centred(cls, bounds, size, margin=24, stretch=1.0):
         """The bounds fitted into a ``size`` window, centred, ``margin`` pixels clear."""
         x0, y0, x1, y1 = bounds
         width, height = x1 - x0, y1 - y0
         scale = min((size[0] - 2 * margin) / max(width, 1),
-                    (size[1] - 2 * margin) / max(height, 1))
-        return cls(bounds, scale, ((size[0] - width * scale) / 2, (size[1] - height * scale) / 2))
+                    (size[1] - 2 * margin) / max(height * stretch, 1))
+        return cls(bounds, scale, ((size[0] - width * scale) / 2,
+                                   (size[1] - height * scale * stretch) / 2), stretch)
 
     @classmethod
     def picture(cls, bounds, longest):
@@ -59,7 +61,8 @@ class MapView:
         return cls(bounds, scale, (PICTURE_MARGIN, PICTURE_MARGIN + LEGEND_HEIGHT)), size
 
     def __call__(self, x, y):
-        return (self.ox + (x - self.x0) * self.scale, self.oy + (self.y1 - y) * self.scale)
+        return (self.ox + (x - self.x0) * self.scale,
+                self.oy + (self.y1 - y) * self.scale * self.stretch)
 
 
 def level_bounds(tree, pad=0.0):
