@@ -124,10 +124,29 @@ def test_cooperative_players_share_a_kill_and_the_dead_come_back():
     assert infos["player_1"]["deaths"] == 1
 
 
+def test_render_weapon_draws_each_agents_own_weapon_over_its_view():
+    """ViZDoom's render_weapon: the bottom middle of each agent's rgb (and the render) is
+    its weapon; the rest of the view, and the view without it, unchanged."""
+    options = dict(players=2, size=(64, 48), max_tics=40, render_mode="rgb_array")
+    plain, armed = parallel_env(**options), parallel_env(render_weapon=True, **options)
+    plain.reset(seed=3)
+    armed.reset(seed=3)
+    for _ in range(20):                     # the pistol rises from below the view
+        a = plain.step({agent: 0 for agent in plain.agents})[0]
+        b = armed.step({agent: 0 for agent in armed.agents})[0]
+    for agent in a:
+        differ = (a[agent]["rgb"] != b[agent]["rgb"]).any(axis=2)
+        rows, cols = np.nonzero(differ)
+        assert len(rows) > 20 and rows.min() >= 24 and 12 <= cols.mean() <= 52
+    assert not np.array_equal(plain.render(), armed.render())
+    assert armed.render().shape == plain.render().shape == (48, 128, 3)
+
+
 def test_options_are_checked():
     for bad in ({"players": 1}, {"players": 5}, {"mode": "ctf"},
                 {"action_space": "continuous"}, {"observations": ("automap",)},
-                {"buttons": ("JUMP",)}, {"frag_limit": 0}, {"render_mode": "human"}):
+                {"buttons": ("JUMP",)}, {"frag_limit": 0}, {"render_mode": "human"},
+                {"render_weapon": "yes"}):
         with pytest.raises(ValueError):
             parallel_env(**bad)
 

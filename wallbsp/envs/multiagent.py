@@ -21,6 +21,8 @@ Agents ``player_0`` .. ``player_{N-1}`` are DOOM's players 1..N.  Options:
   (default ``("rgb",)``), ``variables`` for ``gamevars`` (default ``DEFAULT_VARIABLES``);
 - ``size``, ``frame_skip``, ``fov``, ``textures``, ``skill``, ``render_mode``
   (``"rgb_array"``: the agents' views side by side) as the single-agent environments';
+- ``render_weapon`` (default False): each agent's own weapon and its flash drawn over its
+  ``rgb`` (and the render), placed as ZDoom places them: ViZDoom's ``render_weapon``;
 - ``max_tics`` (default 2 minutes), ``frag_limit`` (deathmatch: the episode ends when a
   player reaches it; None: no limit), ``respawn`` (default True: a dead player's ``use``
   is pressed for it, so it comes back on the next tic, as ViZDoom's ``respawn_player()``;
@@ -115,7 +117,7 @@ class MultiAgentEnv(ParallelEnv):
                  max_tics: int = TICRATE * 120, frag_limit=None, respawn: bool = True,
                  frag_reward: float = 1.0, death_penalty: float = 1.0,
                  kill_reward: float = 1.0, exit_reward: float = 10.0,
-                 damage_reward: float = 0.0, render_mode=None):
+                 damage_reward: float = 0.0, render_mode=None, render_weapon: bool = False):
         checks.check_choice("mode", mode, tuple(MODES))
         players = checks.check_count("players", players, 2, 4)
         checks.check_choice("action_space", action_space, ACTION_KINDS)
@@ -139,6 +141,8 @@ class MultiAgentEnv(ParallelEnv):
              ("kill_reward", kill_reward), ("exit_reward", exit_reward),
              ("damage_reward", damage_reward)))
         self.render_mode = render_mode
+        self.render_weapon = checks.check_flag("render_weapon", render_weapon)
+        self._fuzz = [0] * players
         self.buttons = gamevars.check_buttons(buttons)
         self.variables = gamevars.check_variables(variables)
         self.action_kind = action_space
@@ -316,15 +320,30 @@ class MultiAgentEnv(ParallelEnv):
             if views or self.render_mode:
                 frame = render(world, world.camera(self.fov, player=k), self.width,
                                self.height, textures=self.textures)
-                self.frames.append(frame)
+                rgb = self._with_weapon(frame.rows("rgb").copy(), k) if self.render_weapon \
+                    else frame.rows("rgb")
+                self.frames.append(rgb)
                 if views:
                     one = view_observation(frame, views)
+                    if "rgb" in one and self.render_weapon:
+                        one["rgb"] = rgb.copy()
             if "pose" in self.keys:
                 one["pose"] = pose_of(world.players[k])
             if "gamevars" in self.keys:
                 one["gamevars"] = gamevars.variables_array(world, self.variables, player=k)
             obs[agent] = {key: one[key] for key in self.keys}
         return obs
+
+    def _with_weapon(self, rgb: np.ndarray, k: int) -> np.ndarray:
+        """Player ``k``'s weapon and flash over its view ``rgb`` (R_DrawPlayerSprites)."""
+        from wallbsp.screen.art import art_for, art_of
+        from wallbsp.screen.weapon import draw_psprites
+        play = self.world.play
+        iwad = None if getattr(play, "wad_path", None) else installed_iwad()
+        art = art_of((iwad,)) if iwad else art_for(play)      # the arena's weapons: Freedoom's
+        self._fuzz[k] = draw_psprites(rgb, play.players[k], art, self.width, self.height,
+                                      self._fuzz[k], play.tables, stretched=True)
+        return rgb
 
     def _infos(self) -> dict:
         out = {}
@@ -340,7 +359,7 @@ class MultiAgentEnv(ParallelEnv):
         first (None without a render mode)."""
         if self.render_mode is None or not self.frames:
             return None
-        return np.concatenate([f.rows("rgb") for f in self.frames], axis=1)
+        return np.concatenate(self.frames, axis=1)
 
     def close(self):
         self.frames = None
