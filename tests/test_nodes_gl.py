@@ -128,6 +128,46 @@ def test_check_passes_ours_and_glbsps_gl_nodes(built, tmp_path, capsys):
     assert main(["nodes", "--check", str(theirs)]) == 0
 
 
+def _as_version(lumps, version):
+    """Our v5 GL lumps rewritten in glBSP's v2 or v3 layout (v2: 16-bit seg, subsector and
+    node indices, bit 15 a GL vertex; v3: 32-bit segs and subsectors, bit 30, "gNd3" before
+    GL_SEGS and GL_SSECT while GL_VERT keeps "gNd2", as glBSP writes it)."""
+    segs = np.frombuffer(lumps["GL_SEGS"], np.dtype([("v1", "<u4"), ("v2", "<u4"),
+                         ("line", "<u2"), ("side", "<u2"), ("partner", "<u4")]))
+    subs = np.frombuffer(lumps["GL_SSECT"], "<u4").reshape(-1, 2)
+    nodes = np.frombuffer(lumps["GL_NODES"], np.dtype([("xy", "<i2", (12,)),
+                                                      ("child", "<u4", (2,))]))
+    flag, width = (0x8000, "<u2") if version == 2 else (1 << 30, "<u4")
+    out = np.zeros(len(segs), np.dtype([("v1", width), ("v2", width), ("line", "<u2"),
+                                        ("side", "<u2"), ("partner", width)]))
+    for k in ("v1", "v2"):
+        v = segs[k].astype(np.int64)
+        out[k] = np.where(v & 0x80000000, (v & 0x7FFFFFFF) | flag, v)
+    out["line"], out["side"] = segs["line"], segs["side"]
+    out["partner"] = np.where(segs["partner"] == 0xFFFFFFFF, 0xFFFF if version == 2
+                              else 0xFFFFFFFF, segs["partner"])
+    child = nodes["child"].astype(np.int64)
+    small = np.zeros(len(nodes), np.dtype([("xy", "<i2", (12,)), ("child", "<u2", (2,))]))
+    small["xy"] = nodes["xy"]
+    small["child"] = np.where(child & 0x80000000, (child & 0x7FFF) | 0x8000, child)
+    magic = b"gNd3" if version == 3 else b""
+    return dict(lumps, GL_VERT=b"gNd2" + lumps["GL_VERT"][4:], GL_SEGS=magic + out.tobytes(),
+                GL_SSECT=magic + subs.astype(width).tobytes(), GL_NODES=small.tobytes())
+
+
+@pytest.mark.parametrize("version", [2, 3])
+def test_glbsps_v2_and_v3_gl_nodes_read_as_the_same_nodes(built, version):
+    """``nodes --check`` reads anyone's GL nodes: glBSP's and zdbsp's default v2 and glBSP's
+    v3 give the tree, segs and vertexes the v5 lumps do."""
+    _, lumps = _map(built / "gl.wad")
+    v5 = read_nodes("gl.wad", lumps, gl=True)
+    other = read_nodes("gl.wad", _as_version(lumps, version), gl=True)
+    assert other.kind == f"GL v{version}"
+    assert np.array_equal(other.segs, v5.segs) and np.array_equal(other.vertexes, v5.vertexes)
+    assert np.array_equal(other.subsectors, v5.subsectors)
+    assert _tree(other) == _tree(v5)
+
+
 def test_a_long_map_name_gets_gl_level_and_a_rebuild_replaces_it(tmp_path, capsys):
     path, once, out = tmp_path / "long.wad", tmp_path / "once.wad", tmp_path / "out.wad"
     assert main(["export", str(SMALL), "-o", str(path), "--map", "MYLEVEL"]) == 0
@@ -202,7 +242,7 @@ def _swap_partner(b):
 
 BAD = [("gl", "GL_SEGS", _reopen_gl_chain, "GL_SSECT[0]: not closed: seg 0 ends at vertex"),
        ("gl", "GL_SEGS", _swap_partner, "does not run back along it"),
-       ("gl", "GL_VERT", lambda b: b"gNd2" + bytes(b[4:]), "GL_VERT: GL nodes v2; only v5"),
+       ("gl", "GL_VERT", lambda b: b"gNd4" + bytes(b[4:]), "GL_VERT: GL nodes v4; v2, v3"),
        ("xnod", "NODES", lambda b: bytes(b[:-5]), "NODES: ends at byte"),
        ("udmf", "ZNODES", lambda b: bytes(b[:40]), "ZNODES: ZGLN: its zlib data is damaged")]
 

@@ -103,7 +103,7 @@ def _name(nd, lump: str) -> str:
     """How a message names a table of ``nd`` (``GL_SEGS``, ``NODES (XNOD) segs``)."""
     if nd.kind == "vanilla":
         return lump
-    if nd.kind == "GL v5":
+    if nd.kind.startswith("GL v"):
         return {"SEGS": "GL_SEGS", "SSECTORS": "GL_SSECT", "NODES": "GL_NODES"}[lump]
     where = "ZNODES" if nd.gl else "NODES"
     return f"{where} ({nd.kind}) {dict(SEGS='segs', SSECTORS='subsectors').get(lump, 'nodes')}"

@@ -4,7 +4,8 @@
 - the normal nodes (``gl=False``): vanilla SEGS, SSECTORS, NODES, or ZDoom's extended
   nodes in NODES (``XNOD``, or ``ZNOD``: the same after 4 bytes, zlib-compressed), whose
   new vertexes follow the map's own;
-- the GL nodes (``gl=True``): glBSP's v5 GL_VERT (``gNd5``), GL_SEGS, GL_SSECT, GL_NODES,
+- the GL nodes (``gl=True``): glBSP's GL_VERT, GL_SEGS, GL_SSECT, GL_NODES in v2 (``gNd2``,
+  glBSP's and zdbsp's default), v3 or v5 (``gNd5``, what ``wallbsp nodes --gl`` writes),
   or, when the map has a ZNODES lump (a UDMF map), ZDoom's ``XGLN``/``ZGLN``, ``XGL2``/
   ``ZGL2`` (32-bit linedef numbers) or ``XGL3``/``ZGL3`` (16.16 partitions) there; the same
   in SSECTORS (where zdbsp ``-g -X`` puts them beside XNOD).
@@ -21,7 +22,6 @@ magic, is a ``NodesError`` (a ``ValueError``) naming the lump and the place.
 """
 from __future__ import annotations
 
-import struct
 import zlib
 from dataclasses import dataclass
 
@@ -188,29 +188,48 @@ def _next_v1(v1, subs, r):
     return v1[nxt % max(1, len(v1))] if len(v1) else v1
 
 
-def _gl_v5(where, lumps, own):
+# glBSP's GL node versions read: (GL vertex flag, the segs' and subsectors' index width, the
+# partner's "none", the nodes' child width and subsector flag). v2 is glBSP's and zdbsp's
+# default; v3 widens segs and subsectors (their lumps start "gNd3" too); v5 also the nodes.
+GL_VERSIONS = {b"gNd2": (0x8000, "<u2", 0xFFFF, "<u2", 0x8000),
+               b"gNd3": (1 << 30, "<u4", 0xFFFFFFFF, "<u2", 0x8000),
+               b"gNd5": (0x80000000, "<u4", 0xFFFFFFFF, "<u4", 0x80000000)}
+
+
+def _gl_nodes(where, lumps, own):
+    """glBSP's GL_VERT, GL_SEGS, GL_SSECT and GL_NODES, in any of ``GL_VERSIONS``."""
     raw = lumps.get("GL_VERT")
     if raw is None:
         raise NodesError(f"{where}: GL_VERT: missing")
-    if raw[:4] != b"gNd5":
+    magic = raw[:4]
+    if magic not in GL_VERSIONS:
         what = f"GL nodes v{raw[3:4].decode('latin-1')}" if raw[:3] == b"gNd" else \
-            f"magic {raw[:4]!r}"
-        raise NodesError(f"{where}: GL_VERT: {what}; only v5 (gNd5) is read")
+            f"magic {raw[:4]!r} (GL nodes v1)"
+        raise NodesError(f"{where}: GL_VERT: {what}; v2, v3 and v5 are read")
+    if magic == b"gNd2" and (lumps.get("GL_SEGS") or b"")[:4] == b"gNd3":
+        magic = b"gNd3"                 # glBSP's v3 keeps GL_VERT's "gNd2"
+    gl_flag, index, none, child, leaf = GL_VERSIONS[magic]
     new = _records(where, "GL_VERT", raw[4:], np.dtype(("<i4", (2,)))).astype(np.int64)
     vertexes = np.concatenate([own, new])
-    segs = _records(where, "GL_SEGS", lumps.get("GL_SEGS"), np.dtype(
-        [("v1", "<u4"), ("v2", "<u4"), ("line", "<u2"), ("side", "<u2"), ("partner", "<u4")]))
-    v = [np.where(segs[k] & 0x80000000, (segs[k] & 0x7FFFFFFF).astype(np.int64) + len(own),
-                  segs[k]) for k in ("v1", "v2")]
+    segs = _records(where, "GL_SEGS", _after_magic(lumps.get("GL_SEGS"), magic), np.dtype(
+        [("v1", index), ("v2", index), ("line", "<u2"), ("side", "<u2"), ("partner", index)]))
+    v = [segs[k].astype(np.int64) for k in ("v1", "v2")]
+    v = [np.where(x & gl_flag, (x & ~gl_flag) + len(own), x) for x in v]
     line, partner = segs["line"].astype(np.int64), segs["partner"].astype(np.int64)
     rows = np.stack([v[0], v[1], np.where(line == 0xFFFF, -1, line), segs["side"],
-                     np.where(partner == 0xFFFFFFFF, -1, partner)], axis=1)
-    subs = _records(where, "GL_SSECT", lumps.get("GL_SSECT"),
-                    np.dtype([("count", "<u4"), ("first", "<u4")]))
-    nodes = _records(where, "GL_NODES", lumps.get("GL_NODES"), _node_dtype(False, "<u4"))
-    return ReadNodes("GL v5", vertexes, rows.astype(np.int64).reshape(-1, 5), np.stack(
-        [subs["first"], subs["count"]], axis=1).astype(np.int64).reshape(-1, 2),
-        _nodes(nodes, False, 0x80000000), True)
+                     np.where(partner == none, -1, partner)], axis=1)
+    subs = _records(where, "GL_SSECT", _after_magic(lumps.get("GL_SSECT"), magic),
+                    np.dtype([("count", index), ("first", index)]))
+    nodes = _records(where, "GL_NODES", lumps.get("GL_NODES"), _node_dtype(False, child))
+    return ReadNodes(f"GL v{magic[3:].decode()}", vertexes,
+                     rows.astype(np.int64).reshape(-1, 5),
+                     np.stack([subs["first"], subs["count"]], axis=1).astype(np.int64)
+                     .reshape(-1, 2), _nodes(nodes, False, leaf), True)
+
+
+def _after_magic(raw, magic):
+    """v3's GL_SEGS and GL_SSECT begin with the version's magic too."""
+    return raw[4:] if raw is not None and magic == b"gNd3" and raw[:4] == magic else raw
 
 
 def has_gl(lumps: dict) -> bool:
@@ -234,7 +253,7 @@ def read_nodes(where: str, lumps: dict, vertexes=None, gl: bool = False) -> Read
         raw = lumps.get("SSECTORS", b"")
         if raw[:4] in GL_EXTENDED:                   # zdbsp -g -X / -z: GL nodes there
             return _extended(where, "SSECTORS", raw, own, len(own), True)
-        return _gl_v5(where, lumps, own)
+        return _gl_nodes(where, lumps, own)
     raw = lumps.get("NODES", b"")
     if raw[:4] in EXTENDED:
         return _extended(where, "NODES", raw, own, len(own), False)
