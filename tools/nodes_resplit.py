@@ -27,6 +27,7 @@ sys.path.insert(0, str(Path(__file__).resolve().parent.parent))
 
 import nodes_shots as shots                                   # noqa: E402
 from wallbsp.assets.wadwrite import Lump, read_wad_image      # noqa: E402
+from wallbsp.files import LevelError                          # noqa: E402
 
 
 def split_seg(source: Path, name: str, line: int, at, out: Path) -> dict:
@@ -34,13 +35,18 @@ def split_seg(source: Path, name: str, line: int, at, out: Path) -> dict:
     halves in its subsector, written to ``out``."""
     image = read_wad_image(source)
     names = image.names()
+    if name not in names:
+        raise ValueError(f"{source}: no map {name}")
     marker = names.index(name)
     where = {lump: marker + 1 + names[marker + 1:marker + 11].index(lump)
              for lump in ("VERTEXES", "SEGS", "SSECTORS")}
     read = lambda lump, width: np.frombuffer(                             # noqa: E731
         image.lumps[where[lump]].data, "<i2" if lump == "VERTEXES" else "<u2").reshape(-1, width)
     verts, segs, subs = read("VERTEXES", 2), read("SEGS", 6), read("SSECTORS", 2).copy()
-    k = int(np.flatnonzero(segs[:, 3] == line)[0])
+    found = np.flatnonzero(segs[:, 3] == line)
+    if not len(found):
+        raise ValueError(f"{source}: {name}: linedef {line} has no seg")
+    k = int(found[0])
     start = verts[segs[k, 0]].astype(float)
     first, second = segs[k].copy(), segs[k].copy()
     first[1] = second[0] = len(verts)
@@ -75,10 +81,20 @@ def main(argv=None) -> int:
         return 2
     work = Path(args.keep or tempfile.mkdtemp(prefix="nodes_resplit-"))
     work.mkdir(parents=True, exist_ok=True)
-    report = split_seg(Path(args.wad), args.map, args.line, at, work / "split.wad")
+    try:
+        report = split_seg(Path(args.wad), args.map, args.line, at, work / "split.wad")
+    except (LevelError, ValueError) as error:
+        print(f"nodes_resplit: {error}", file=sys.stderr)
+        if not args.keep:
+            shutil.rmtree(work, ignore_errors=True)
+        return 2
     wads = {"shipped": Path(shots.WAD), "rebuilt": Path(args.rebuilt or args.wad),
             "split": work / "split.wad"}
-    start = shots.viewpoints(Path(shots.WAD).read_bytes(), args.map, args.view + 1)[args.view]
+    starts = shots.viewpoints(Path(shots.WAD).read_bytes(), args.map, args.view + 1)
+    if args.view >= len(starts):
+        print(f"nodes_resplit: {args.map} has {len(starts)} viewpoints", file=sys.stderr)
+        return 2
+    start = starts[args.view]
     xvfb, display = shots.start_display(91)
     pictures = {}
     try:
