@@ -79,6 +79,15 @@ def main(argv=None) -> int:
     except (ValueError, AssertionError):
         print(f"nodes_resplit: {args.at!r}: expected X,Y", file=sys.stderr)
         return 2
+    try:
+        starts = shots.viewpoints(Path(shots.WAD).read_bytes(), args.map, args.view + 1)
+    except StopIteration:
+        starts = []
+    if args.view >= len(starts):
+        print(f"nodes_resplit: {args.map}: no viewpoint {args.view} in {shots.WAD}",
+              file=sys.stderr)
+        return 2
+    start = starts[args.view]
     work = Path(args.keep or tempfile.mkdtemp(prefix="nodes_resplit-"))
     work.mkdir(parents=True, exist_ok=True)
     try:
@@ -90,11 +99,6 @@ def main(argv=None) -> int:
         return 2
     wads = {"shipped": Path(shots.WAD), "rebuilt": Path(args.rebuilt or args.wad),
             "split": work / "split.wad"}
-    starts = shots.viewpoints(Path(shots.WAD).read_bytes(), args.map, args.view + 1)
-    if args.view >= len(starts):
-        print(f"nodes_resplit: {args.map} has {len(starts)} viewpoints", file=sys.stderr)
-        return 2
-    start = starts[args.view]
     xvfb, display = shots.start_display(91)
     pictures = {}
     try:
