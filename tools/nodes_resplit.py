@@ -47,7 +47,13 @@ def split_seg(source: Path, name: str, line: int, at, out: Path) -> dict:
     if not len(found):
         raise ValueError(f"{source}: {name}: linedef {line} has no seg")
     k = int(found[0])
-    start = verts[segs[k, 0]].astype(float)
+    start, end = verts[segs[k, 0]].astype(float), verts[segs[k, 1]].astype(float)
+    along, point = end - start, np.array(at, float) - start
+    t = float(point @ along) / max(float(along @ along), 1.0)
+    off = abs(float(along[0] * point[1] - along[1] * point[0])) / max(np.hypot(*along), 1.0)
+    if not 0 < t < 1 or off > 1.5:
+        raise ValueError(f"{source}: {name}: ({at[0]}, {at[1]}) is not inside seg {k} "
+                         f"of linedef {line}")
     first, second = segs[k].copy(), segs[k].copy()
     first[1] = second[0] = len(verts)
     second[5] = segs[k, 5] + int(round(float(np.hypot(*(np.array(at) - start)))))
