@@ -128,11 +128,12 @@ def automap_layer(tree, kinds, view, size, like, overlay=False, partitions=None,
     return layer
 
 
-def _shape(points, x, y, angle, size):
+def _shape(points, x, y, angle, size, stretch=1.0):
     """``points`` (unit shape, x forward) turned to ``angle`` degrees, ``size`` pixels a
-    unit, at pixel (x, y) (picture y down)."""
+    unit across and ``stretch`` times that down, at pixel (x, y) (picture y down)."""
     c, s = math.cos(math.radians(angle)), math.sin(math.radians(angle))
-    return [(x + size * (px * c - py * s), y - size * (px * s + py * c)) for px, py in points]
+    return [(x + size * (px * c - py * s), y - size * stretch * (px * s + py * c))
+            for px, py in points]
 
 
 THIN_TRIANGLE = ((-0.5, -0.7), (1.0, 0.0), (-0.5, 0.7))          # am_map.c thintriangle_guy
@@ -151,8 +152,8 @@ def draw_things(surface, view, things, width=1) -> int:
     px = view.ox + (things.x[shown] - view.x0) * view.scale
     py = view.oy + (view.y1 - things.y[shown]) * view.scale * view.stretch
     for x, y, angle in zip(px.tolist(), py.tolist(), things.angle[shown].tolist()):
-        pygame.draw.polygon(surface, COLOURS["thing"], _shape(THIN_TRIANGLE, x, y, angle, size),
-                            width)
+        pygame.draw.polygon(surface, COLOURS["thing"],
+                            _shape(THIN_TRIANGLE, x, y, angle, size, view.stretch), width)
     return len(shown)
 
 
@@ -163,5 +164,5 @@ def draw_arrow(surface, view, x, y, angle, width=1):
     size = max(ARROW_PIXELS, ARROW_SIZE * view.scale)
     px, py = view(x, y)
     for a, b in ARROW:
-        p, q = _shape((a, b), px, py, angle, size)
+        p, q = _shape((a, b), px, py, angle, size, view.stretch)
         pygame.draw.line(surface, COLOURS["player"], p, q, width)
