@@ -27,6 +27,8 @@ from wallbsp.nodes.mapdata import NODE, SEG, SUBSECTOR, map_data
 from wallbsp.nodes.reject import reject_lump
 from wallbsp.nodes.wadnodes import NodeOptions, rebuild_wad
 
+from mapref import ray_sector
+
 ROOT = Path(__file__).resolve().parent.parent
 DOOM = Path("/usr/share/games/doom")
 ORACLE = Path(__file__).resolve().parent / "oracle"
@@ -116,26 +118,6 @@ def _small_map():
     return level, map_data("small.json", "MAP01", level_map_lumps(level))
 
 
-def _ray_sector(m, x, y):
-    """The sector at (x, y) by a ray towards +x: the side of the nearest linedef it crosses
-    (None outside the map or too near a line to say)."""
-    v = m.vertexes
-    best, sector = None, None
-    for ld in m.linedefs:
-        (x1, y1), (x2, y2) = (int(v[ld["v1"]]["x"]), int(v[ld["v1"]]["y"])), \
-            (int(v[ld["v2"]]["x"]), int(v[ld["v2"]]["y"]))
-        if (y1 > y) == (y2 > y):
-            continue
-        t = Fraction(y - y1, y2 - y1)
-        cx = x1 + t * (x2 - x1)
-        if cx <= x:
-            continue
-        if best is None or cx < best:
-            side = ld["right"] if y2 < y1 else ld["left"]     # right of v1 -> v2 faces -x
-            best, sector = cx, None if side == 0xFFFF else int(m.sidedefs[side]["sector"])
-    return sector
-
-
 def _walk_nodes(lumps, x, y):
     nodes = np.frombuffer(lumps["NODES"], NODE)
     segs = np.frombuffer(lumps["SEGS"], SEG)
@@ -161,7 +143,7 @@ def test_nodes_are_sound_and_locate_points_as_a_ray_cast_does():
     checked = 0
     for x, y in rng.uniform(lo, hi, size=(300, 2)):
         x, y = Fraction(round(x * 4), 4), Fraction(round(y * 4), 4)
-        want = _ray_sector(m, x, y)
+        want = ray_sector(m, x, y)
         if want is None:
             continue
         seg = _walk_nodes(lumps, x, y)

@@ -5,7 +5,6 @@ nodes are one line and exit 2, and a map forced to XNOD loads as its vanilla bui
 from __future__ import annotations
 
 import shutil
-import struct
 import subprocess
 import zlib
 from fractions import Fraction
@@ -22,6 +21,8 @@ from wallbsp.level.io import load_level
 from wallbsp.level.wadmap import load_wad_level
 from wallbsp.nodes.mapdata import map_data
 from wallbsp.nodes.readnodes import NodesError, read_nodes
+
+from mapref import ray_sector
 
 ROOT = Path(__file__).resolve().parent.parent
 SMALL = ROOT / "levels" / "small.json"
@@ -42,22 +43,6 @@ def _map(path, name="MAP01"):
     image = read_wad_image(path)
     start, stop = image.map_span(image.names().index(name))
     return image, {lump.name: lump.data for lump in image.lumps[start + 1:stop]}
-
-
-def _ray_sector(m, x, y):
-    """The sector at (x, y) by a ray towards +x (None outside the map)."""
-    v = m.vertexes
-    best, sector = None, None
-    for ld in m.linedefs:
-        (x1, y1), (x2, y2) = (int(v[ld["v1"]]["x"]), int(v[ld["v1"]]["y"])), \
-            (int(v[ld["v2"]]["x"]), int(v[ld["v2"]]["y"]))
-        if (y1 > y) == (y2 > y):
-            continue
-        cx = x1 + Fraction(y - y1, y2 - y1) * (x2 - x1)
-        if cx > x and (best is None or cx < best):
-            side = ld["right"] if y2 < y1 else ld["left"]
-            best, sector = cx, None if side == 0xFFFF else int(m.sidedefs[side]["sector"])
-    return sector
 
 
 def _inside(poly, x, y):
@@ -104,7 +89,7 @@ def test_gl_subsectors_tile_the_map_as_a_ray_cast_finds_its_sectors(built):
         if _near(starts, ends, float(x), float(y)):
             continue
         hits = [i for i, p in enumerate(polys) if _inside(p, float(x), float(y))]
-        want = _ray_sector(m, x, y)
+        want = ray_sector(m, x, y)
         assert len(hits) <= 1, (x, y)               # no two subsectors overlap
         if want is not None:                        # no hole in the map, the right sector
             assert len(hits) == 1 and sectors[hits[0]] == want, (x, y)
