@@ -40,6 +40,7 @@ import os
 import statistics
 import time
 
+from .editmodel import edits_of
 from .freedoom import FREEDOOM, absent_wads
 from .report import machine, markdown_table, run_script, script_parser
 
@@ -77,23 +78,6 @@ def _motion(session, k, view_path):
                                          buttons=(0, 0, 0)))
 
 
-def _edits(editor) -> dict:
-    level = editor.level
-    xs = [v[0] for v in level.vertices]
-    big = max(range(len(level.sectors)), key=lambda s: sum(
-        1 for w in level.walls if s in (w.front, w.back)))
-    x0, y0 = next((x + 0.5, y + 0.5) for x in range(min(xs), max(xs), 64)
-                  for y in range(-4096, 4096, 64) if editor.pick(x + 0.5, y + 0.5, "sectors"))
-    v = level.walls[0].v1
-    return {
-        "draw_in_void": lambda: editor.draw_rectangle(max(xs) + 256, 0, max(xs) + 512, 256),
-        "draw_nested": lambda: editor.draw_rectangle(x0 - 4, y0 - 4, x0 + 4, y0 + 4),
-        "move_vertex": lambda: editor.move(editor.select("vertices", v), 1, 0),
-        "raise_floor": lambda: editor.set_sector([big], floor=level.sectors[big].floor + 8),
-        "delete_sector": lambda: editor.delete(editor.select("sectors", big)),
-    }
-
-
 def _until_fresh(session, edit) -> dict:
     """Wall and CPU seconds from ``edit()`` until the window's tree is that version's."""
     t, c = time.perf_counter(), time.process_time()
@@ -107,7 +91,7 @@ def _until_fresh(session, edit) -> dict:
 def _fresh(session) -> dict:
     from wallbsp.editor.treeview import FULL_AFTER
     editor, out = session.editor, {}
-    edits = _edits(editor)            # made once: finding the nested room's place picks a lot
+    edits = edits_of(editor)          # made once: finding the nested room's place picks a lot
     for name, edit in edits.items():
         out[name] = _until_fresh(session, edit)
         _until_fresh(session, editor.undo)
