@@ -142,7 +142,7 @@ class MultiAgentEnv(ParallelEnv):
              ("damage_reward", damage_reward)))
         self.render_mode = render_mode
         self.render_weapon = checks.check_flag("render_weapon", render_weapon)
-        self._fuzz = [0] * players
+        self._fuzz, self._art = [0] * players, None
         self.buttons = gamevars.check_buttons(buttons)
         self.variables = gamevars.check_variables(variables)
         self.action_kind = action_space
@@ -320,13 +320,14 @@ class MultiAgentEnv(ParallelEnv):
             if views or self.render_mode:
                 frame = render(world, world.camera(self.fov, player=k), self.width,
                                self.height, textures=self.textures)
-                rgb = self._with_weapon(frame.rows("rgb").copy(), k) if self.render_weapon \
-                    else frame.rows("rgb")
-                self.frames.append(rgb)
                 if views:
                     one = view_observation(frame, views)
-                    if "rgb" in one and self.render_weapon:
-                        one["rgb"] = rgb.copy()
+                rgb = one["rgb"] if "rgb" in one else frame.rows("rgb")
+                if self.render_weapon:          # into the observation's own array
+                    if "rgb" not in one:
+                        rgb = rgb.copy()
+                    self._with_weapon(rgb, k)
+                self.frames.append(rgb)
             if "pose" in self.keys:
                 one["pose"] = pose_of(world.players[k])
             if "gamevars" in self.keys:
@@ -336,14 +337,20 @@ class MultiAgentEnv(ParallelEnv):
 
     def _with_weapon(self, rgb: np.ndarray, k: int) -> np.ndarray:
         """Player ``k``'s weapon and flash over its view ``rgb`` (R_DrawPlayerSprites)."""
-        from wallbsp.screen.art import art_for, art_of
         from wallbsp.screen.weapon import draw_psprites
         play = self.world.play
-        iwad = None if getattr(play, "wad_path", None) else installed_iwad()
-        art = art_of((iwad,)) if iwad else art_for(play)      # the arena's weapons: Freedoom's
-        self._fuzz[k] = draw_psprites(rgb, play.players[k], art, self.width, self.height,
-                                      self._fuzz[k], play.tables, stretched=True)
+        if self._art is None or self._art[0] is not play:
+            self._art = (play, self._weapon_art(play))
+        self._fuzz[k] = draw_psprites(rgb, play.players[k], self._art[1], self.width,
+                                      self.height, self._fuzz[k], play.tables, stretched=True)
         return rgb
+
+    @staticmethod
+    def _weapon_art(play):
+        """The play's WAD's pictures, or Freedoom's for a level of ours (the arena)."""
+        from wallbsp.screen.art import art_for, art_of
+        iwad = None if getattr(play, "wad_path", None) else installed_iwad()
+        return art_of((iwad,)) if iwad else art_for(play)
 
     def _infos(self) -> dict:
         out = {}
