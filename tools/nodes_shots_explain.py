@@ -384,7 +384,7 @@ def classify(differ, labels, sprites, animated, split, lit) -> np.ndarray:
             shifted = np.roll(np.roll(surface, dy, 0), dx, 1)
             edge |= shifted != surface
     edge[:2], edge[-2:], edge[:, :2], edge[:, -2:] = False, False, False, False
-    moving = np.vectorize(lambda name: name in animated, otypes=[bool])(labels.part)
+    moving = np.isin(labels.part.astype(str), sorted(animated))
     wall = labels.kind == 1
     on = [(wall & np.isin(labels.what, keys)) | np.isin(labels.masked, keys) for keys in split]
     neighbour = wall & np.isin(labels.what, beside_split(labels, np.concatenate(split)))
